@@ -1,0 +1,153 @@
+//! Multi-view camera (DESIGN §2): N parallel cameras offset along eye-space +x whose sheared
+//! frusta share one window on the focal plane.
+
+mod framing;
+mod gpu;
+
+pub use framing::Bounds;
+pub use gpu::{CameraUniform, ViewUniform};
+
+use glam::{Mat4, Vec2, Vec3, Vec4};
+
+use crate::display::check_views;
+use crate::error::{Error, Result};
+
+/// The centre camera plus the multi-view configuration.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MultiViewCamera {
+    /// World → centre eye space (right-handed, looking down −z).
+    pub eye_from_world: Mat4,
+    /// Number of views N.
+    pub views: u32,
+    /// Separation e of adjacent views, eye-space units.
+    pub separation: f32,
+    /// Distance fd from the camera plane to the focal plane.
+    pub focal_distance: f32,
+    /// Vertical field of view of the centre view, radians.
+    pub fov_y: f32,
+    /// Width / height of the image.
+    pub aspect: f32,
+    /// Near clipping distance.
+    pub near: f32,
+    /// Far clipping distance.
+    pub far: f32,
+}
+
+impl MultiViewCamera {
+    /// Check every parameter; each failure names the parameter.
+    pub fn validate(&self) -> Result<()> {
+        check_views(self.views)?;
+        let positive = |name: &'static str, v: f32| {
+            if v.is_finite() && v > 0.0 {
+                Ok(())
+            } else {
+                Err(Error::invalid(name, format!("{v}: must be a positive finite number")))
+            }
+        };
+        positive("focal distance", self.focal_distance)?;
+        positive("aspect", self.aspect)?;
+        positive("near", self.near)?;
+        if !self.separation.is_finite() {
+            return Err(Error::invalid("separation", "must be finite"));
+        }
+        if !(self.fov_y > 0.0 && self.fov_y < std::f32::consts::PI) {
+            return Err(Error::invalid(
+                "fov",
+                format!("{} rad: must be in (0, π)", self.fov_y),
+            ));
+        }
+        if !(self.far.is_finite() && self.far > self.near) {
+            return Err(Error::invalid(
+                "far",
+                format!("{}: must be finite and beyond near = {}", self.far, self.near),
+            ));
+        }
+        if !self.eye_from_world.is_finite() {
+            return Err(Error::invalid("view matrix", "contains NaN or infinity"));
+        }
+        Ok(())
+    }
+
+    /// Camera offset `vd_i = (i − (N−1)/2)·e` of view `i` along eye +x.
+    pub fn view_offset(&self, i: u32) -> f32 {
+        (i as f32 - (self.views as f32 - 1.0) * 0.5) * self.separation
+    }
+
+    /// Largest |vd_i| over the views: `(N−1)/2·|e|`.
+    pub fn max_offset(&self) -> f32 {
+        (self.views as f32 - 1.0) * 0.5 * self.separation.abs()
+    }
+
+    /// Size (W, H) of the shared window on the focal plane, eye-space units.
+    pub fn focal_window(&self) -> Vec2 {
+        let h = 2.0 * self.focal_distance * (self.fov_y * 0.5).tan();
+        Vec2::new(h * self.aspect, h)
+    }
+
+    /// Off-axis projection (wgpu clip space, depth 0..1) of a camera at eye-space offset `vd`:
+    /// `Frustum(l, r, b, t, near, far) · Translate(−vd, 0, 0)`, `l, r = (∓W/2 − vd)·near/fd`.
+    pub fn projection_for_offset(&self, vd: f32) -> Mat4 {
+        let window = self.focal_window();
+        let s = self.near / self.focal_distance;
+        let (l, r) = ((-window.x * 0.5 - vd) * s, (window.x * 0.5 - vd) * s);
+        let (b, t) = (-window.y * 0.5 * s, window.y * 0.5 * s);
+        frustum(l, r, b, t, self.near, self.far) * Mat4::from_translation(Vec3::new(-vd, 0.0, 0.0))
+    }
+
+    /// Projection of view `i` (eye space → clip space).
+    pub fn projection(&self, i: u32) -> Mat4 {
+        self.projection_for_offset(self.view_offset(i))
+    }
+
+    /// Closed form of the projection of eye-space point `p` by a camera at offset `vd`, in
+    /// focal-plane coordinates: `x_f = p.x·fd/d + vd·(1 − fd/d)`, `y_f = p.y·fd/d`, `d = −p.z`.
+    pub fn project_offset(&self, vd: f32, p: Vec3) -> Vec2 {
+        let d = -p.z;
+        let k = self.focal_distance / d;
+        Vec2::new(p.x * k + vd * (1.0 - k), p.y * k)
+    }
+
+    /// Closed-form projection of eye-space `p` in view `i` (focal-plane coordinates).
+    pub fn project(&self, i: u32, p: Vec3) -> Vec2 {
+        self.project_offset(self.view_offset(i), p)
+    }
+
+    /// Focal-plane coordinates → continuous pixel coordinates of a `size` image
+    /// (pixel (x, y) covers [x, x+1) × [y, y+1); y top-down).
+    pub fn focal_to_pixel(&self, f: Vec2, size: [u32; 2]) -> Vec2 {
+        let w = self.focal_window();
+        Vec2::new(
+            (f.x / w.x + 0.5) * size[0] as f32,
+            (0.5 - f.y / w.y) * size[1] as f32,
+        )
+    }
+
+    /// The same camera with `views` views (separation unchanged).
+    pub fn with_views(mut self, views: u32) -> Self {
+        self.views = views;
+        self
+    }
+
+    /// GPU uniform for an image of `size` pixels.
+    pub fn uniform(&self, size: [u32; 2]) -> CameraUniform {
+        CameraUniform::new(self, size)
+    }
+
+    /// Per-view uniform (N-pass): projection and offset of a camera at `vd`.
+    pub fn view_uniform(&self, vd: f32) -> ViewUniform {
+        ViewUniform::new(self.projection_for_offset(vd), vd)
+    }
+}
+
+/// Right-handed off-axis frustum with wgpu's 0..1 depth range.
+fn frustum(l: f32, r: f32, b: f32, t: f32, n: f32, f: f32) -> Mat4 {
+    Mat4::from_cols(
+        Vec4::new(2.0 * n / (r - l), 0.0, 0.0, 0.0),
+        Vec4::new(0.0, 2.0 * n / (t - b), 0.0, 0.0),
+        Vec4::new((r + l) / (r - l), (t + b) / (t - b), f / (n - f), -1.0),
+        Vec4::new(0.0, 0.0, n * f / (n - f), 0.0),
+    )
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,141 @@
+//! Looking Glass calibration files (`visual.json`) and their mapping onto the slanted model.
+//!
+//! The Looking Glass lenticular shader (holoplay / WebXR polyfill) computes, per subpixel `i` of
+//! the fragment at normalised coordinates `u = (x+½)/W`, `v = (y_gl+½)/H` (bottom-up):
+//! `a = (u + i·subp + v·tilt)·pitch′ − center`, `subp = σ/(3W)`, `tilt = σ·H/(W·slope)`,
+//! `pitch′ = pitch·W/DPI·cos(atan(1/slope))`, σ = −1 if `flipImageX` else +1;
+//! the view is `⌊N·frac(a)⌋`, or `⌊N·(1 − frac(a))⌋` when `invView` is 1.
+//! Multiplying out with `k = 3x + i` and `y_gl = H − 1 − l` gives the slanted model exactly:
+//! `P = 3W/pitch′`, `s = −3σ/slope`, subpixel order reversed when σ = −1, and
+//! `φ = 1.5 + 3(H − ½)/slope − center·P` (σ = +1) or `φ = −½ − 3(H − ½)/slope − center·P` (σ = −1).
+//! `invView` becomes the view-order flip `N − 1 − v`, which differs from `⌊N(1 − f)⌋` only on
+//! exact view boundaries (a set of measure zero; the holoplay shader clamps those anyway).
+
+use std::path::{Path, PathBuf};
+
+use crate::error::{Error, Result};
+
+/// The calibration values the interleaving uses. Field names follow `visual.json`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Calibration {
+    /// Lens pitch in lenses per inch.
+    pub pitch: f64,
+    /// Lens slope (screen rows per lens column shift).
+    pub slope: f64,
+    /// Phase offset in lens periods.
+    pub center: f64,
+    /// Panel dots per inch.
+    pub dpi: f64,
+    /// Panel width in pixels.
+    pub screen_w: f64,
+    /// Panel height in pixels.
+    pub screen_h: f64,
+    /// Panel mirrored horizontally (reverses subpixel order and slant).
+    pub flip_image_x: bool,
+    /// Views run right to left.
+    pub inv_view: bool,
+}
+
+/// The slanted-model parameters a calibration maps to.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct SlantedEquivalent {
+    pub pitch: f64,
+    pub slant: f64,
+    pub phase: f64,
+    pub bgr: bool,
+    pub flip_views: bool,
+}
+
+impl Calibration {
+    /// Read a `visual.json`. Each field may be `{"value": x}` (as Looking Glass writes them) or a
+    /// plain number. Missing or non-numeric fields are errors naming the field.
+    pub fn load(path: &Path) -> Result<Self> {
+        let text = std::fs::read_to_string(path).map_err(|source| Error::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        Self::from_json(&text, path)
+    }
+
+    /// Parse calibration JSON; `path` only names the source in errors.
+    pub fn from_json(text: &str, path: &Path) -> Result<Self> {
+        let err = |reason: String| Error::Calibration {
+            path: PathBuf::from(path),
+            reason,
+        };
+        let json: serde_json::Value =
+            serde_json::from_str(text).map_err(|e| err(format!("not valid JSON: {e}")))?;
+        let field = |name: &str| -> Result<f64> {
+            let v = json
+                .get(name)
+                .ok_or_else(|| err(format!("missing field '{name}'")))?;
+            let v = v.get("value").unwrap_or(v);
+            v.as_f64()
+                .filter(|x| x.is_finite())
+                .ok_or_else(|| err(format!("field '{name}' is not a finite number: {v}")))
+        };
+        let calibration = Self {
+            pitch: field("pitch")?,
+            slope: field("slope")?,
+            center: field("center")?,
+            dpi: field("DPI")?,
+            screen_w: field("screenW")?,
+            screen_h: field("screenH")?,
+            flip_image_x: field("flipImageX")? != 0.0,
+            inv_view: field("invView")? != 0.0,
+        };
+        for (name, v) in [
+            ("pitch", calibration.pitch),
+            ("DPI", calibration.dpi),
+            ("screenW", calibration.screen_w),
+            ("screenH", calibration.screen_h),
+        ] {
+            if v <= 0.0 {
+                return Err(err(format!("field '{name}' must be positive, got {v}")));
+            }
+        }
+        if calibration.slope == 0.0 {
+            return Err(err("field 'slope' must not be 0".into()));
+        }
+        Ok(calibration)
+    }
+
+    /// The lens pitch across the screen as the holoplay shader uses it (lenses per screen width).
+    pub fn screen_pitch(&self) -> f64 {
+        self.pitch * self.screen_w / self.dpi * (1.0 / self.slope).atan().cos()
+    }
+
+    /// The view `⌊N·frac(a)⌋` exactly as the holoplay shader formula gives it, in f64, for panel
+    /// pixel (x, y top-down) and subpixel i. The reference the slanted mapping is tested against.
+    pub fn holoplay_view(&self, views: u32, x: u32, y: u32, i: u32) -> u32 {
+        let sigma = if self.flip_image_x { -1.0 } else { 1.0 };
+        let (w, h) = (self.screen_w, self.screen_h);
+        let u = (x as f64 + 0.5) / w;
+        let v = (h - 1.0 - y as f64 + 0.5) / h;
+        let subp = sigma / (3.0 * w);
+        let tilt = sigma * h / (w * self.slope);
+        let a = (u + i as f64 * subp + v * tilt) * self.screen_pitch() - self.center;
+        let mut f = a - a.floor();
+        if self.inv_view {
+            f = 1.0 - f;
+        }
+        ((f * views as f64).floor() as u32).min(views - 1)
+    }
+
+    pub(crate) fn slanted(&self) -> SlantedEquivalent {
+        let pitch = 3.0 * self.screen_w / self.screen_pitch();
+        let rows = 3.0 * (self.screen_h - 0.5) / self.slope;
+        let (slant, phase) = if self.flip_image_x {
+            (3.0 / self.slope, -0.5 - rows - self.center * pitch)
+        } else {
+            (-3.0 / self.slope, 1.5 + rows - self.center * pitch)
+        };
+        SlantedEquivalent {
+            pitch,
+            slant,
+            phase,
+            bgr: self.flip_image_x,
+            flip_views: self.inv_view,
+        }
+    }
+}

@@ -1,0 +1,167 @@
+//! The one definition of the mask maths, shared by Rust and WGSL.
+//!
+//! `view = ⌊N · frac((k + s·l + φ)/P)⌋` is evaluated as `t = k·A + l·B + C (mod 2³²)` with
+//! `A = frac(1/P)`, `B = frac(s/P)`, `C = frac(φ/P)` in 0.32 fixed point (u32 wrap-around is the
+//! `frac`), then `view = (t·N) >> 32`. Integer-only, so any `k` keeps full precision and
+//! `wgsl/shared/mask.wgsl` reproduces it bit for bit. A, B, C are rounded *up*: the fixed-point
+//! phase is never below the exact one, so a subpixel whose exact phase sits on a view boundary
+//! (every lenticular pixel, for instance) gets the exact view.
+
+use bytemuck::{Pod, Zeroable};
+
+/// The geometry a [`Mask`] is compiled from.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct MaskGeometry {
+    pub views: u32,
+    pub pitch: f64,
+    pub slant: f64,
+    pub phase: f64,
+    pub subpixel: bool,
+    pub origin: [u32; 2],
+    pub flip_views: bool,
+    pub bgr: bool,
+}
+
+/// A compiled display mask: `view(x, y, c)` for window pixel (x, y), channel c (0 = R).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Mask {
+    uniform: MaskUniform,
+}
+
+const FLAG_SUBPIXEL: u32 = 1;
+const FLAG_FLIP: u32 = 2;
+const FLAG_BGR: u32 = 4;
+
+/// GPU form of [`Mask`]. Keep in sync with `struct DisplayMask` in `wgsl/shared/mask.wgsl`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Pod, Zeroable)]
+pub struct MaskUniform {
+    step_column: u32,
+    step_row: u32,
+    phase: u32,
+    views: u32,
+    origin_x: u32,
+    origin_y: u32,
+    flags: u32,
+    _pad: u32,
+}
+const _: () = assert!(std::mem::size_of::<MaskUniform>() == 32);
+
+/// `frac(v)` in 0.32 fixed point, rounded up (see the module docs).
+fn fixed_frac_ceil(v: f64) -> u32 {
+    let f = v - v.floor();
+    let scaled = (f * 4_294_967_296.0).ceil();
+    if scaled >= 4_294_967_296.0 {
+        0
+    } else {
+        scaled as u32
+    }
+}
+
+impl Mask {
+    pub(crate) fn new(g: MaskGeometry) -> Self {
+        let flags = (g.subpixel as u32) * FLAG_SUBPIXEL
+            | (g.flip_views as u32) * FLAG_FLIP
+            | (g.bgr as u32) * FLAG_BGR;
+        Self {
+            uniform: MaskUniform {
+                step_column: fixed_frac_ceil(1.0 / g.pitch),
+                step_row: fixed_frac_ceil(g.slant / g.pitch),
+                phase: fixed_frac_ceil(g.phase / g.pitch),
+                views: g.views,
+                origin_x: g.origin[0],
+                origin_y: g.origin[1],
+                flags,
+                _pad: 0,
+            },
+        }
+    }
+
+    /// Number of views N.
+    pub fn views(&self) -> u32 {
+        self.uniform.views
+    }
+
+    /// Distinct views per pixel K (1 or 3).
+    pub fn views_per_pixel(&self) -> u32 {
+        if self.uniform.flags & FLAG_SUBPIXEL != 0 {
+            3
+        } else {
+            1
+        }
+    }
+
+    /// The GPU uniform.
+    pub fn uniform(&self) -> MaskUniform {
+        self.uniform
+    }
+
+    /// View of channel `c` (0 = R, 1 = G, 2 = B) of window pixel `(x, y)` (y top-down).
+    /// Mirrors `mask_view` in `wgsl/shared/mask.wgsl` operation for operation.
+    #[inline]
+    pub fn view(&self, x: u32, y: u32, c: u32) -> u32 {
+        let m = &self.uniform;
+        let slot = if m.flags & FLAG_BGR != 0 { 2 - c } else { c };
+        let px = x.wrapping_add(m.origin_x);
+        let column = if m.flags & FLAG_SUBPIXEL != 0 {
+            px.wrapping_mul(3).wrapping_add(slot)
+        } else {
+            px
+        };
+        let row = y.wrapping_add(m.origin_y);
+        let t = column
+            .wrapping_mul(m.step_column)
+            .wrapping_add(row.wrapping_mul(m.step_row))
+            .wrapping_add(m.phase);
+        let v = mul_high(t, m.views);
+        if m.flags & FLAG_FLIP != 0 {
+            m.views - 1 - v
+        } else {
+            v
+        }
+    }
+
+    /// The three channel views of pixel (x, y).
+    pub fn pixel_views(&self, x: u32, y: u32) -> [u32; 3] {
+        [self.view(x, y, 0), self.view(x, y, 1), self.view(x, y, 2)]
+    }
+}
+
+/// `(t · n) >> 32` with 16-bit halves, as WGSL has no 64-bit integers in its base.
+#[inline]
+fn mul_high(t: u32, n: u32) -> u32 {
+    let hi = (t >> 16) * n;
+    let lo = ((t & 0xffff) * n) >> 16;
+    (hi + lo) >> 16
+}
+
+/// The paper's Eq. 4–6 on integer indices (DESIGN §1), `y` top-down on the panel
+/// (origin already added). Used to prove that `hubner8` equals the slanted model.
+pub fn hubner8_paper_view(x: u32, y: u32, c: u32) -> u32 {
+    let x_offset = (3 * x) % 8;
+    let y_offset = (y + 1) % 12;
+    let v_r = ((1 + y_offset + y_offset / 3) / 2 + x_offset) % 8;
+    (v_r + c) % 8
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn mul_high_is_exact() {
+        for &t in &[0u32, 1, 0xffff, 0x1_0000, 0x8000_0000, u32::MAX, 123_456_789] {
+            for &n in &[1u32, 2, 3, 8, 45, 64, 256, 65535] {
+                assert_eq!(mul_high(t, n) as u64, (t as u64 * n as u64) >> 32);
+            }
+        }
+    }
+
+    #[test]
+    fn fixed_frac_rounds_up() {
+        assert_eq!(fixed_frac_ceil(0.5), 1 << 31);
+        assert_eq!(fixed_frac_ceil(1.25), 1 << 30);
+        assert_eq!(fixed_frac_ceil(-0.25), 3 << 30);
+        assert!(fixed_frac_ceil(1.0 / 3.0) as f64 >= 4_294_967_296.0 / 3.0);
+    }
+}

@@ -1,0 +1,192 @@
+//! Display models (DESIGN §1): which view each (sub)pixel of the panel shows.
+//!
+//! Every kind compiles to one [`Mask`]: a slanted-lens phase in 32-bit fixed point that Rust
+//! ([`Mask::view`]) and WGSL (`wgsl/shared/mask.wgsl`) evaluate with the same integer arithmetic,
+//! so CPU and GPU agree on every subpixel of any panel size.
+
+mod looking_glass;
+mod mask;
+mod spec;
+
+pub use looking_glass::Calibration;
+pub use mask::{hubner8_paper_view, Mask, MaskUniform};
+
+use crate::error::{Error, Result};
+
+/// Most views any display or renderer supports (texture-array layers, u8 view images).
+pub const MAX_VIEWS: u32 = 256;
+
+/// The optical layout of a panel.
+#[derive(Clone, Debug, PartialEq)]
+pub enum DisplayKind {
+    /// Pixel-level lenticular sheet: `view = (x + ox) mod N`, one view per pixel (K = 1).
+    Lenticular {
+        /// Number of views N.
+        views: u32,
+    },
+    /// The paper's 8-view wavelength-selective 8×12 mask (Eq. 4–6), K = 3.
+    Hubner8,
+    /// General slanted lenticular: `view = ⌊N·frac((k + s·l + φ)/P)⌋` on subpixel columns k.
+    Slanted {
+        /// Number of views N.
+        views: u32,
+        /// Lens pitch P in subpixels.
+        pitch: f64,
+        /// Slant s in subpixels per row (signed).
+        slant: f64,
+        /// Phase φ in subpixels.
+        phase: f64,
+    },
+    /// A Looking Glass calibration (`visual.json`), mapped onto the slanted model.
+    LookingGlass {
+        /// Number of views N (the quilt's view count; not in the calibration).
+        views: u32,
+        /// The calibration.
+        calibration: Calibration,
+    },
+}
+
+/// A display: its optics plus where the rendered window sits on the panel.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Display {
+    /// The optical layout.
+    pub kind: DisplayKind,
+    /// Window origin on the physical panel, in pixels (0,0 for full screen / offline).
+    pub origin: [u32; 2],
+    /// Reverse the view order (view 0 on the other side).
+    pub flip_views: bool,
+    /// Panel subpixels are ordered B, G, R left to right.
+    pub bgr: bool,
+}
+
+/// Default view count for Looking Glass displays when none is given.
+pub const LOOKING_GLASS_DEFAULT_VIEWS: u32 = 45;
+
+impl Display {
+    /// A display of `kind` at origin 0, no flip, RGB order.
+    pub fn new(kind: DisplayKind) -> Result<Self> {
+        let display = Self {
+            kind,
+            origin: [0, 0],
+            flip_views: false,
+            bgr: false,
+        };
+        display.validate()?;
+        Ok(display)
+    }
+
+    /// Parse a SPEC string: `hubner8` | `lenticular:N` | `slanted:N,PITCH,SLANT,PHASE` | `lkg:PATH.json`.
+    /// Numbers in `slanted` may be fractions (`2/3`).
+    pub fn parse(spec: &str) -> Result<Self> {
+        Self::new(spec::parse_kind(spec)?)
+    }
+
+    /// Number of views N.
+    pub fn views(&self) -> u32 {
+        match &self.kind {
+            DisplayKind::Lenticular { views }
+            | DisplayKind::Slanted { views, .. }
+            | DisplayKind::LookingGlass { views, .. } => *views,
+            DisplayKind::Hubner8 => 8,
+        }
+    }
+
+    /// Distinct views per pixel, K: 1 for pixel-level masks, 3 for subpixel masks.
+    pub fn views_per_pixel(&self) -> u32 {
+        if self.subpixel() {
+            3
+        } else {
+            1
+        }
+    }
+
+    fn subpixel(&self) -> bool {
+        !matches!(self.kind, DisplayKind::Lenticular { .. })
+    }
+
+    /// Set the view count where the display leaves it open (Looking Glass); elsewhere `n` must
+    /// equal the display's own N.
+    pub fn with_views(mut self, n: u32) -> Result<Self> {
+        check_views(n)?;
+        let own = self.views();
+        match &mut self.kind {
+            DisplayKind::LookingGlass { views, .. } => *views = n,
+            _ if own == n => {}
+            _ => {
+                return Err(Error::invalid(
+                    "views",
+                    format!("this display has {own} views; {n} were requested"),
+                ))
+            }
+        }
+        Ok(self)
+    }
+
+    /// Place the window at `origin` (pixels) on the panel.
+    pub fn with_origin(mut self, origin: [u32; 2]) -> Self {
+        self.origin = origin;
+        self
+    }
+
+    fn validate(&self) -> Result<()> {
+        check_views(self.views())?;
+        if let DisplayKind::Slanted {
+            pitch,
+            slant,
+            phase,
+            ..
+        } = self.kind
+        {
+            if !(pitch.is_finite() && pitch > 0.0) {
+                return Err(Error::invalid(
+                    "pitch",
+                    format!("{pitch}: must be a positive number of subpixels"),
+                ));
+            }
+            if !slant.is_finite() || !phase.is_finite() {
+                return Err(Error::invalid("slant/phase", "must be finite numbers"));
+            }
+        }
+        Ok(())
+    }
+
+    /// Compile to the mask evaluated on CPU and GPU.
+    pub fn mask(&self) -> Mask {
+        let (pitch, slant, phase, subpixel, extra_bgr, extra_flip) = match &self.kind {
+            DisplayKind::Lenticular { views } => (*views as f64, 0.0, 0.0, false, false, false),
+            // DESIGN §1: Eq. 4–6 are exactly slanted(N=8, P=8, s=2/3, φ=7/6); a test proves it.
+            DisplayKind::Hubner8 => (8.0, 2.0 / 3.0, 7.0 / 6.0, true, false, false),
+            DisplayKind::Slanted {
+                pitch,
+                slant,
+                phase,
+                ..
+            } => (*pitch, *slant, *phase, true, false, false),
+            DisplayKind::LookingGlass { calibration, .. } => {
+                let s = calibration.slanted();
+                (s.pitch, s.slant, s.phase, true, s.bgr, s.flip_views)
+            }
+        };
+        Mask::new(mask::MaskGeometry {
+            views: self.views(),
+            pitch,
+            slant,
+            phase,
+            subpixel,
+            origin: self.origin,
+            flip_views: self.flip_views ^ extra_flip,
+            bgr: self.bgr ^ extra_bgr,
+        })
+    }
+}
+
+/// Check a view count: 1 ..= [`MAX_VIEWS`].
+pub fn check_views(n: u32) -> Result<()> {
+    if n == 0 || n > MAX_VIEWS {
+        return Err(Error::invalid(
+            "views",
+            format!("{n}: the number of views must be between 1 and {MAX_VIEWS}"),
+        ));
+    }
+    Ok(())
+}

@@ -1,0 +1,131 @@
+//! Parsing of display SPEC strings (CLI contract).
+
+use super::{Calibration, DisplayKind, LOOKING_GLASS_DEFAULT_VIEWS};
+use crate::error::{Error, Result};
+
+fn spec_error(spec: &str, reason: impl Into<String>) -> Error {
+    Error::DisplaySpec {
+        spec: spec.to_string(),
+        reason: reason.into(),
+    }
+}
+
+/// A number, or a fraction `a/b` (so that `2/3` stays exact to f64 precision).
+fn parse_number(spec: &str, what: &str, text: &str) -> Result<f64> {
+    let text = text.trim();
+    let value = match text.split_once('/') {
+        Some((a, b)) => {
+            let a: f64 = a.trim().parse().map_err(|_| bad(spec, what, text))?;
+            let b: f64 = b.trim().parse().map_err(|_| bad(spec, what, text))?;
+            if b == 0.0 {
+                return Err(spec_error(spec, format!("{what} '{text}' divides by zero")));
+            }
+            a / b
+        }
+        None => text.parse().map_err(|_| bad(spec, what, text))?,
+    };
+    if !value.is_finite() {
+        return Err(spec_error(spec, format!("{what} '{text}' is not finite")));
+    }
+    Ok(value)
+}
+
+fn bad(spec: &str, what: &str, text: &str) -> Error {
+    spec_error(spec, format!("{what} '{text}' is not a number"))
+}
+
+fn parse_views(spec: &str, text: &str) -> Result<u32> {
+    text.trim()
+        .parse()
+        .map_err(|_| spec_error(spec, format!("view count '{text}' is not a whole number")))
+}
+
+pub(super) fn parse_kind(spec: &str) -> Result<DisplayKind> {
+    let (name, args) = spec.split_once(':').unwrap_or((spec, ""));
+    match name.trim().to_ascii_lowercase().as_str() {
+        "hubner8" if args.is_empty() => Ok(DisplayKind::Hubner8),
+        "hubner8" => Err(spec_error(spec, "hubner8 takes no parameters")),
+        "lenticular" => {
+            if args.is_empty() {
+                return Err(spec_error(spec, "lenticular needs a view count: lenticular:N"));
+            }
+            Ok(DisplayKind::Lenticular {
+                views: parse_views(spec, args)?,
+            })
+        }
+        "slanted" => {
+            let parts: Vec<&str> = args.split(',').collect();
+            if parts.len() != 4 {
+                return Err(spec_error(
+                    spec,
+                    format!(
+                        "slanted needs 4 comma-separated values N,PITCH,SLANT,PHASE, got {}",
+                        parts.len()
+                    ),
+                ));
+            }
+            Ok(DisplayKind::Slanted {
+                views: parse_views(spec, parts[0])?,
+                pitch: parse_number(spec, "pitch", parts[1])?,
+                slant: parse_number(spec, "slant", parts[2])?,
+                phase: parse_number(spec, "phase", parts[3])?,
+            })
+        }
+        "lkg" => {
+            if args.is_empty() {
+                return Err(spec_error(spec, "lkg needs a calibration file: lkg:PATH.json"));
+            }
+            Ok(DisplayKind::LookingGlass {
+                views: LOOKING_GLASS_DEFAULT_VIEWS,
+                calibration: Calibration::load(args.as_ref())?,
+            })
+        }
+        other => Err(spec_error(spec, format!("unknown display kind '{other}'"))),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parses_all_kinds() {
+        assert_eq!(parse_kind("hubner8").unwrap(), DisplayKind::Hubner8);
+        assert_eq!(
+            parse_kind("lenticular:5").unwrap(),
+            DisplayKind::Lenticular { views: 5 }
+        );
+        match parse_kind("slanted:8,8,2/3,7/6").unwrap() {
+            DisplayKind::Slanted {
+                views,
+                pitch,
+                slant,
+                phase,
+            } => {
+                assert_eq!((views, pitch), (8, 8.0));
+                assert!((slant - 2.0 / 3.0).abs() < 1e-15 && (phase - 7.0 / 6.0).abs() < 1e-15);
+            }
+            k => panic!("{k:?}"),
+        }
+    }
+
+    #[test]
+    fn rejects_bad_specs() {
+        for spec in [
+            "",
+            "foo",
+            "hubner8:3",
+            "lenticular",
+            "lenticular:x",
+            "lenticular:-2",
+            "slanted:8,8,1",
+            "slanted:8,8,1/0,0",
+            "slanted:8,abc,1,0",
+            "slanted:8,8,inf,0",
+            "lkg",
+        ] {
+            let err = parse_kind(spec).unwrap_err();
+            assert!(matches!(err, Error::DisplaySpec { .. }), "{spec}: {err}");
+        }
+    }
+}

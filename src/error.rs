@@ -1,0 +1,113 @@
+//! The library's error type: one variant per failure a user can act on.
+
+use std::path::PathBuf;
+
+/// Everything the library can fail with. User input never panics; it lands here.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// No wgpu adapter matched the requested backends / name.
+    #[error("no GPU adapter found (backends: {backends}{name}); on a machine without a GPU install Mesa's lavapipe: apt-get install mesa-vulkan-drivers libvulkan1")]
+    NoAdapter {
+        /// The backends that were searched.
+        backends: String,
+        /// The adapter-name filter, formatted for the message.
+        name: String,
+    },
+    /// The adapter lacks a feature a requested mode needs.
+    #[error("adapter '{adapter}' lacks feature {feature} needed for {purpose}")]
+    MissingFeature {
+        /// Adapter name.
+        adapter: String,
+        /// The missing wgpu feature.
+        feature: String,
+        /// What needed it.
+        purpose: String,
+    },
+    /// A size or count is above what the adapter allows.
+    #[error("{what} = {value} exceeds the adapter limit {limit}")]
+    LimitExceeded {
+        /// Which quantity.
+        what: String,
+        /// The requested value.
+        value: u64,
+        /// The adapter's limit.
+        limit: u64,
+    },
+    /// Device creation failed.
+    #[error("could not create a device on '{adapter}': {source}")]
+    RequestDevice {
+        /// Adapter name.
+        adapter: String,
+        /// wgpu's reason.
+        source: wgpu::RequestDeviceError,
+    },
+    /// A parameter is outside its valid range (zero views, 0×0 image, NaN separation…).
+    #[error("invalid {name}: {reason}")]
+    InvalidParameter {
+        /// The parameter's name as the user knows it.
+        name: &'static str,
+        /// What is wrong with it.
+        reason: String,
+    },
+    /// A display specification string could not be understood.
+    #[error("unknown display spec '{spec}': {reason} (expected hubner8 | lenticular:N | slanted:N,PITCH,SLANT,PHASE | lkg:PATH.json)")]
+    DisplaySpec {
+        /// The spec as given.
+        spec: String,
+        /// What is wrong with it.
+        reason: String,
+    },
+    /// A Looking Glass calibration file is unreadable or incomplete.
+    #[error("calibration file {path}: {reason}")]
+    Calibration {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong with it.
+        reason: String,
+    },
+    /// A mesh file is malformed.
+    #[error("mesh {path}: {reason}")]
+    Mesh {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong with it.
+        reason: String,
+    },
+    /// An image could not be read or written.
+    #[error("image {path}: {reason}")]
+    Image {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong with it.
+        reason: String,
+    },
+    /// I/O on a named file.
+    #[error("{path}: {source}")]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The OS error.
+        source: std::io::Error,
+    },
+    /// The GPU reported a validation or out-of-memory error for an operation.
+    #[error("GPU error during {operation}: {message}")]
+    Gpu {
+        /// What was being done.
+        operation: String,
+        /// wgpu's message.
+        message: String,
+    },
+}
+
+/// Result alias for the library.
+pub type Result<T, E = Error> = std::result::Result<T, E>;
+
+impl Error {
+    pub(crate) fn invalid(name: &'static str, reason: impl Into<String>) -> Self {
+        Error::InvalidParameter {
+            name,
+            reason: reason.into(),
+        }
+    }
+}

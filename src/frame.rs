@@ -1,0 +1,194 @@
+//! What one frame needs besides the scene: camera, display, lighting, image size, background.
+//! Every renderer takes a [`Frame`] and binds its [`FrameUniform`] at group 0, binding 0.
+
+use bytemuck::{Pod, Zeroable};
+use glam::Vec3;
+
+use crate::camera::{CameraUniform, MultiViewCamera};
+use crate::display::{Display, MaskUniform};
+use crate::error::{Error, Result};
+
+/// Eye-space directional Blinn-Phong light.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Light {
+    /// Direction towards the light, eye space (normalised on use).
+    pub direction: Vec3,
+    /// Ambient intensity.
+    pub ambient: f32,
+    /// Diffuse intensity.
+    pub diffuse: f32,
+    /// Specular intensity.
+    pub specular: f32,
+    /// Specular exponent.
+    pub shininess: f32,
+}
+
+impl Default for Light {
+    fn default() -> Self {
+        Self {
+            direction: Vec3::new(-0.4, 0.5, 1.0),
+            ambient: 0.15,
+            diffuse: 0.75,
+            specular: 0.3,
+            shininess: 32.0,
+        }
+    }
+}
+
+/// GPU form of [`Light`]. Keep in sync with `struct Light` in `wgsl/shared/shading.wgsl`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct LightUniform {
+    direction: [f32; 4],
+    ambient: [f32; 4],
+    diffuse: [f32; 4],
+    specular: [f32; 4],
+}
+const _: () = assert!(std::mem::size_of::<LightUniform>() == 64);
+
+impl From<&Light> for LightUniform {
+    fn from(l: &Light) -> Self {
+        let d = l.direction.try_normalize().unwrap_or(Vec3::Z);
+        Self {
+            direction: d.extend(0.0).to_array(),
+            ambient: [l.ambient; 4],
+            diffuse: [l.diffuse; 4],
+            specular: [l.specular, l.specular, l.specular, l.shininess],
+        }
+    }
+}
+
+/// Per-frame constants. Keep in sync with `struct Frame` in `wgsl/shared/frame.wgsl`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct FrameUniform {
+    camera: CameraUniform,
+    mask: MaskUniform,
+    light: LightUniform,
+    background: [f32; 4],
+}
+const _: () = assert!(std::mem::size_of::<FrameUniform>() == 288);
+
+impl FrameUniform {
+    /// Replace the display mask (tools that need only the mask start from a zeroed uniform).
+    pub fn set_mask(&mut self, mask: MaskUniform) {
+        self.mask = mask;
+    }
+}
+
+/// Camera + display + output settings of one rendered spatial image.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Frame {
+    /// The multi-view camera (its `views` must equal the display's).
+    pub camera: MultiViewCamera,
+    /// The display whose mask interleaves the views.
+    pub display: Display,
+    /// Lighting.
+    pub light: Light,
+    /// Image size in pixels.
+    pub size: [u32; 2],
+    /// Background colour (linear RGBA).
+    pub background: [f32; 4],
+}
+
+impl Frame {
+    /// A frame with the default light and a black background.
+    pub fn new(camera: MultiViewCamera, display: Display, size: [u32; 2]) -> Result<Self> {
+        let frame = Self {
+            camera,
+            display,
+            light: Light::default(),
+            size,
+            background: [0.0, 0.0, 0.0, 1.0],
+        };
+        frame.validate()?;
+        Ok(frame)
+    }
+
+    /// Check the camera, the size and that camera and display agree on N.
+    pub fn validate(&self) -> Result<()> {
+        self.camera.validate()?;
+        if self.size[0] == 0 || self.size[1] == 0 {
+            return Err(Error::invalid(
+                "size",
+                format!("{}x{}: width and height must be at least 1", self.size[0], self.size[1]),
+            ));
+        }
+        if self.camera.views != self.display.views() {
+            return Err(Error::invalid(
+                "views",
+                format!(
+                    "camera has {} views but the display has {}",
+                    self.camera.views,
+                    self.display.views()
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The uniform bound at group 0.
+    pub fn uniform(&self) -> FrameUniform {
+        FrameUniform {
+            camera: self.camera.uniform(self.size),
+            mask: self.display.mask().uniform(),
+            light: (&self.light).into(),
+            background: self.background,
+        }
+    }
+}
+
+/// The group-0 layout every pipeline shares: the frame uniform at binding 0.
+pub fn frame_bind_group_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
+    device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some("frame"),
+        entries: &[wgpu::BindGroupLayoutEntry {
+            binding: 0,
+            visibility: wgpu::ShaderStages::VERTEX_FRAGMENT | wgpu::ShaderStages::COMPUTE,
+            ty: wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Uniform,
+                has_dynamic_offset: false,
+                min_binding_size: wgpu::BufferSize::new(std::mem::size_of::<FrameUniform>() as u64),
+            },
+            count: None,
+        }],
+    })
+}
+
+/// A uniform buffer holding a [`FrameUniform`] and its group-0 bind group.
+pub struct FrameBinding {
+    buffer: wgpu::Buffer,
+    /// Bind group for group 0.
+    pub bind_group: wgpu::BindGroup,
+}
+
+impl FrameBinding {
+    /// Allocate for `layout` (from [`frame_bind_group_layout`]).
+    pub fn new(device: &wgpu::Device, layout: &wgpu::BindGroupLayout) -> Self {
+        let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("frame uniform"),
+            size: std::mem::size_of::<FrameUniform>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("frame"),
+            layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: buffer.as_entire_binding(),
+            }],
+        });
+        Self { buffer, bind_group }
+    }
+
+    /// Upload `frame`'s constants.
+    pub fn write(&self, queue: &wgpu::Queue, frame: &Frame) {
+        self.write_uniform(queue, &frame.uniform());
+    }
+
+    /// Upload a prepared uniform.
+    pub fn write_uniform(&self, queue: &wgpu::Queue, uniform: &FrameUniform) {
+        queue.write_buffer(&self.buffer, 0, bytemuck::bytes_of(uniform));
+    }
+}

@@ -1,0 +1,163 @@
+//! Headless GPU context: adapter selection (any backend, overridable by environment), one device.
+
+use crate::error::{Error, Result};
+
+/// How to choose the adapter. Both fields default to the environment:
+/// `WGPU_BACKEND` (e.g. `vulkan`, `gl`) and `WGPU_ADAPTER_NAME` (case-insensitive substring).
+#[derive(Clone, Debug, Default)]
+pub struct GpuOptions {
+    /// Backends to search; `None` = `WGPU_BACKEND` or all.
+    pub backends: Option<wgpu::Backends>,
+    /// Adapter name substring; `None` = `WGPU_ADAPTER_NAME` or the first adapter.
+    pub adapter_name: Option<String>,
+}
+
+/// Optional features the renderers use when the adapter has them; never required up front.
+/// Renderers that need one check [`GpuContext::require`] and fail with a typed error.
+const OPTIONAL_FEATURES: wgpu::Features = wgpu::Features::TIMESTAMP_QUERY
+    .union(wgpu::Features::TIMESTAMP_QUERY_INSIDE_ENCODERS)
+    .union(wgpu::Features::DUAL_SOURCE_BLENDING)
+    .union(wgpu::Features::SHADER_INT64)
+    .union(wgpu::Features::SHADER_INT64_ATOMIC_MIN_MAX)
+    .union(wgpu::Features::SHADER_INT64_ATOMIC_ALL_OPS)
+    .union(wgpu::Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES)
+    .union(wgpu::Features::FLOAT32_FILTERABLE);
+
+/// An adapter, its device and queue. Owns them; renderers borrow the device.
+///
+/// Keep one per adapter per process: on GL, a second device from the same adapter silently
+/// breaks the first (see PLATFORM.md).
+pub struct GpuContext {
+    /// The chosen adapter.
+    pub adapter: wgpu::Adapter,
+    /// The device created on it.
+    pub device: wgpu::Device,
+    /// Its queue.
+    pub queue: wgpu::Queue,
+    info: wgpu::AdapterInfo,
+}
+
+impl GpuContext {
+    /// Pick an adapter per `options` (and the environment) and create a device with all of its
+    /// limits and the optional features it offers.
+    pub fn new(options: &GpuOptions) -> Result<Self> {
+        pollster::block_on(Self::new_async(options))
+    }
+
+    async fn new_async(options: &GpuOptions) -> Result<Self> {
+        let backends = options
+            .backends
+            .unwrap_or_else(|| wgpu::Backends::all().with_env());
+        let name = options
+            .adapter_name
+            .clone()
+            .or_else(|| std::env::var("WGPU_ADAPTER_NAME").ok())
+            .filter(|n| !n.is_empty());
+        let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
+        desc.backends = backends;
+        let instance = wgpu::Instance::new(desc);
+        let mut adapters = instance.enumerate_adapters(backends).await;
+        // Prefer real GPUs, then integrated, then CPU (lavapipe/llvmpipe): stable across runs.
+        adapters.sort_by_key(|a| device_rank(a.get_info().device_type));
+        let adapter = adapters
+            .into_iter()
+            .find(|a| match &name {
+                Some(n) => a.get_info().name.to_lowercase().contains(&n.to_lowercase()),
+                None => true,
+            })
+            .ok_or_else(|| Error::NoAdapter {
+                backends: format!("{backends:?}"),
+                name: name
+                    .as_ref()
+                    .map(|n| format!(", name contains '{n}'"))
+                    .unwrap_or_default(),
+            })?;
+        let info = adapter.get_info();
+        log::info!(
+            "adapter: {} ({:?}, {:?}, driver {} {})",
+            info.name,
+            info.backend,
+            info.device_type,
+            info.driver,
+            info.driver_info
+        );
+        let features = adapter.features() & OPTIONAL_FEATURES;
+        let (device, queue) = adapter
+            .request_device(&wgpu::DeviceDescriptor {
+                label: Some("autostereo device"),
+                required_features: features,
+                required_limits: adapter.limits(),
+                ..Default::default()
+            })
+            .await
+            .map_err(|source| Error::RequestDevice {
+                adapter: info.name.clone(),
+                source,
+            })?;
+        Ok(Self {
+            adapter,
+            device,
+            queue,
+            info,
+        })
+    }
+
+    /// Adapter name and backend, e.g. `llvmpipe (LLVM 15.0.6, 256 bits) (Vulkan)`.
+    pub fn adapter_label(&self) -> String {
+        format!("{} ({:?})", self.info.name, self.info.backend)
+    }
+
+    /// The adapter's info.
+    pub fn info(&self) -> &wgpu::AdapterInfo {
+        &self.info
+    }
+
+    /// Fail with [`Error::MissingFeature`] unless the device has `feature`.
+    pub fn require(&self, feature: wgpu::Features, purpose: &str) -> Result<()> {
+        if self.device.features().contains(feature) {
+            Ok(())
+        } else {
+            Err(Error::MissingFeature {
+                adapter: self.info.name.clone(),
+                feature: format!("{feature:?}"),
+                purpose: purpose.to_string(),
+            })
+        }
+    }
+
+    /// Check a 2D render size against the device limits.
+    pub fn check_size_2d(&self, width: u32, height: u32) -> Result<()> {
+        check_size_2d(&self.device, width, height)
+    }
+}
+
+/// Check a 2D render size: non-zero and within `max_texture_dimension_2d`.
+pub fn check_size_2d(device: &wgpu::Device, width: u32, height: u32) -> Result<()> {
+    if width == 0 || height == 0 {
+        return Err(Error::invalid(
+            "size",
+            format!("{width}x{height}: width and height must be at least 1"),
+        ));
+    }
+    let limit = device.limits().max_texture_dimension_2d;
+    for (what, value) in [("image width", width), ("image height", height)] {
+        if value > limit {
+            return Err(Error::LimitExceeded {
+                what: what.into(),
+                value: value.into(),
+                limit: limit.into(),
+            });
+        }
+    }
+    Ok(())
+}
+
+fn device_rank(t: wgpu::DeviceType) -> u8 {
+    match t {
+        wgpu::DeviceType::DiscreteGpu => 0,
+        wgpu::DeviceType::IntegratedGpu => 1,
+        wgpu::DeviceType::VirtualGpu => 2,
+        wgpu::DeviceType::Cpu => 3,
+        wgpu::DeviceType::Other => 4,
+    }
+}

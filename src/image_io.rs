@@ -1,0 +1,130 @@
+//! CPU images: RGB8 buffers, PNG I/O, and the comparison metrics used against the N-pass oracle.
+
+use std::path::Path;
+
+use crate::error::{Error, Result};
+
+/// A tightly packed RGB8 image, rows top-down.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct RgbImage {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// `width · height · 3` bytes.
+    pub data: Vec<u8>,
+}
+
+impl RgbImage {
+    /// A black image.
+    pub fn new(width: u32, height: u32) -> Self {
+        Self {
+            width,
+            height,
+            data: vec![0; width as usize * height as usize * 3],
+        }
+    }
+
+    /// Drop the alpha channel of tightly packed RGBA8 rows.
+    pub fn from_rgba(size: [u32; 2], rgba: &[u8]) -> Self {
+        Self {
+            width: size[0],
+            height: size[1],
+            data: rgba
+                .chunks_exact(4)
+                .flat_map(|p| [p[0], p[1], p[2]])
+                .collect(),
+        }
+    }
+
+    /// Channel `c` of pixel (x, y).
+    #[inline]
+    pub fn get(&self, x: u32, y: u32, c: u32) -> u8 {
+        self.data[self.index(x, y, c)]
+    }
+
+    /// Set channel `c` of pixel (x, y).
+    #[inline]
+    pub fn set(&mut self, x: u32, y: u32, c: u32, v: u8) {
+        let i = self.index(x, y, c);
+        self.data[i] = v;
+    }
+
+    #[inline]
+    fn index(&self, x: u32, y: u32, c: u32) -> usize {
+        (y as usize * self.width as usize + x as usize) * 3 + c as usize
+    }
+
+    /// Write a PNG (RGB8).
+    pub fn save_png(&self, path: &Path) -> Result<()> {
+        image::save_buffer(
+            path,
+            &self.data,
+            self.width,
+            self.height,
+            image::ExtendedColorType::Rgb8,
+        )
+        .map_err(|e| Error::Image {
+            path: path.to_path_buf(),
+            reason: e.to_string(),
+        })
+    }
+
+    /// Read any PNG as RGB8.
+    pub fn load_png(path: &Path) -> Result<Self> {
+        let img = image::open(path).map_err(|e| Error::Image {
+            path: path.to_path_buf(),
+            reason: e.to_string(),
+        })?;
+        let rgb = img.to_rgb8();
+        Ok(Self {
+            width: rgb.width(),
+            height: rgb.height(),
+            data: rgb.into_raw(),
+        })
+    }
+}
+
+/// How far an image is from a reference, over all subpixels (0–255 scale).
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct ImageDiff {
+    /// Peak signal-to-noise ratio in dB (infinite when identical).
+    pub psnr_db: f64,
+    /// Largest absolute subpixel difference.
+    pub max_abs_err: u8,
+    /// Share of subpixels off by more than 2/255.
+    pub frac_off_2: f64,
+}
+
+/// Compare `image` with `reference` (same size required).
+pub fn compare(image: &RgbImage, reference: &RgbImage) -> Result<ImageDiff> {
+    if (image.width, image.height) != (reference.width, reference.height) {
+        return Err(Error::invalid(
+            "image size",
+            format!(
+                "{}x{} vs reference {}x{}",
+                image.width, image.height, reference.width, reference.height
+            ),
+        ));
+    }
+    let mut squared = 0u64;
+    let mut max = 0u8;
+    let mut off = 0usize;
+    for (&a, &b) in image.data.iter().zip(&reference.data) {
+        let d = a.abs_diff(b);
+        squared += d as u64 * d as u64;
+        max = max.max(d);
+        off += (d > 2) as usize;
+    }
+    let n = image.data.len().max(1) as f64;
+    let mse = squared as f64 / n;
+    Ok(ImageDiff {
+        psnr_db: if mse == 0.0 {
+            f64::INFINITY
+        } else {
+            10.0 * (255.0f64 * 255.0 / mse).log10()
+        },
+        max_abs_err: max,
+        frac_off_2: off as f64 / n,
+    })
+}

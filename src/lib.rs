@@ -1,0 +1,30 @@
+//! # autostereo
+//!
+//! Rendering for multi-view autostereoscopic displays (lenticular sheets, slanted lenses,
+//! wavelength-selective filters), after Hübner, Zhang & Pajarola, *Single-pass multi-view
+//! rendering*. Data flows one way:
+//!
+//! scene data ([`mesh`]) → GPU resources ([`mesh::MeshBuffers`]) → passes ([`render`]) →
+//! spatial image ([`target::SpatialTarget`]) → CPU ([`image_io`], [`views`]).
+//!
+//! Geometry and conventions: [`display`] (masks, DESIGN §1), [`camera`] (DESIGN §2),
+//! [`frame`] (everything a renderer needs besides the scene). The library borrows the device;
+//! [`gpu::GpuContext`] is a convenience for headless tools and tests.
+
+#![warn(missing_docs)]
+
+pub mod camera;
+pub mod display;
+pub mod error;
+pub mod frame;
+pub mod gpu;
+pub mod image_io;
+pub mod mesh;
+pub mod readback;
+pub mod render;
+pub mod shader;
+pub mod target;
+pub mod timing;
+pub mod views;
+
+pub use error::{Error, Result};

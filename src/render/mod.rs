@@ -1,0 +1,16 @@
+//! Passes that turn scene data into images.
+//!
+//! - [`mask_image`]: the display mask as a view-index image (GPU side of the mask oracle).
+//! - [`composite`]: N per-view layers → spatial image (shared by every N-pass baseline).
+//! - [`mesh_npass`]: the N-pass and single-view mesh baselines.
+
+pub mod composite;
+pub mod mask_image;
+pub mod mesh_npass;
+mod pipeline;
+mod view_layers;
+
+pub use composite::Compositor;
+pub use mask_image::MaskImageRenderer;
+pub use mesh_npass::{MeshBaseline, MeshBaselineMethod};
+pub use view_layers::ViewLayers;

@@ -1,0 +1,99 @@
+//! N per-view images in one 2D texture array: the N-pass baselines' render targets.
+
+use crate::error::{Error, Result};
+use crate::gpu::check_size_2d;
+use crate::target::SPATIAL_FORMAT;
+
+/// One RGBA8 layer per view, plus a shared depth buffer.
+pub struct ViewLayers {
+    /// The array texture (layer i = view i).
+    pub texture: wgpu::Texture,
+    /// All layers, for sampling in the compositor.
+    pub array_view: wgpu::TextureView,
+    /// One render-attachment view per layer.
+    pub layer_views: Vec<wgpu::TextureView>,
+    /// Depth buffer reused by every view pass.
+    pub depth_view: wgpu::TextureView,
+}
+
+/// Depth format of every mesh pass.
+pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
+
+impl ViewLayers {
+    /// Allocate `views` layers of `size`, after checking the limits.
+    pub fn new(device: &wgpu::Device, size: [u32; 2], views: u32) -> Result<Self> {
+        check_size_2d(device, size[0], size[1])?;
+        let limit = device.limits().max_texture_array_layers;
+        if views > limit {
+            return Err(Error::LimitExceeded {
+                what: "views (texture array layers)".into(),
+                value: views.into(),
+                limit: limit.into(),
+            });
+        }
+        let extent = |layers| wgpu::Extent3d {
+            width: size[0],
+            height: size[1],
+            depth_or_array_layers: layers,
+        };
+        let scope = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
+        let texture = device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("view layers"),
+            size: extent(views),
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: SPATIAL_FORMAT,
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT
+                | wgpu::TextureUsages::TEXTURE_BINDING
+                | wgpu::TextureUsages::COPY_SRC,
+            view_formats: &[],
+        });
+        let depth = device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("view depth"),
+            size: extent(1),
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: DEPTH_FORMAT,
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+            view_formats: &[],
+        });
+        if let Some(e) = pollster::block_on(scope.pop()) {
+            return Err(Error::Gpu {
+                operation: format!("allocating {views} view layers of {}x{}", size[0], size[1]),
+                message: e.to_string(),
+            });
+        }
+        let array_view = texture.create_view(&wgpu::TextureViewDescriptor {
+            label: Some("view layers"),
+            dimension: Some(wgpu::TextureViewDimension::D2Array),
+            ..Default::default()
+        });
+        let layer_views = (0..views)
+            .map(|i| {
+                texture.create_view(&wgpu::TextureViewDescriptor {
+                    label: Some("view layer"),
+                    dimension: Some(wgpu::TextureViewDimension::D2),
+                    base_array_layer: i,
+                    array_layer_count: Some(1),
+                    ..Default::default()
+                })
+            })
+            .collect();
+        Ok(Self {
+            texture,
+            array_view,
+            layer_views,
+            depth_view: depth.create_view(&Default::default()),
+        })
+    }
+
+    /// (size, views) these layers were made for.
+    pub fn key(&self) -> ([u32; 2], u32) {
+        (
+            [self.texture.width(), self.texture.height()],
+            self.texture.depth_or_array_layers(),
+        )
+    }
+}

@@ -1,0 +1,142 @@
+//! WGSL sources and their tiny composition step.
+//!
+//! A stage file pulls shared code with `#import shared/NAME.wgsl` lines; each shared file is
+//! inserted once, depth first, and `enable` directives are hoisted to the top (WGSL wants them
+//! first). Nothing else is rewritten, so error line numbers map back by eye.
+
+use std::collections::HashSet;
+
+use crate::error::{Error, Result};
+
+/// Shared WGSL, by import path.
+const SHARED: &[(&str, &str)] = &[
+    ("shared/camera.wgsl", include_str!("../wgsl/shared/camera.wgsl")),
+    ("shared/mask.wgsl", include_str!("../wgsl/shared/mask.wgsl")),
+    ("shared/shading.wgsl", include_str!("../wgsl/shared/shading.wgsl")),
+    ("shared/frame.wgsl", include_str!("../wgsl/shared/frame.wgsl")),
+];
+
+/// One WGSL file per pipeline stage, by file name.
+pub const STAGES: &[(&str, &str)] = &[
+    ("mask_image.wgsl", include_str!("../wgsl/mask_image.wgsl")),
+    ("mesh_view.wgsl", include_str!("../wgsl/mesh_view.wgsl")),
+    ("composite.wgsl", include_str!("../wgsl/composite.wgsl")),
+];
+
+fn lookup(table: &[(&str, &'static str)], name: &str) -> Option<&'static str> {
+    table.iter().find(|(n, _)| *n == name).map(|(_, s)| *s)
+}
+
+/// The stage `name` (e.g. `"composite.wgsl"`) with its imports resolved.
+pub fn compose(name: &str) -> Result<String> {
+    let source = lookup(STAGES, name).ok_or_else(|| shader_error(name, "no such stage"))?;
+    let mut enables = Vec::new();
+    let mut body = String::new();
+    let mut seen = HashSet::new();
+    expand(name, source, &mut seen, &mut enables, &mut body)?;
+    let mut out = enables.join("\n");
+    out.push('\n');
+    out.push_str(&body);
+    Ok(out)
+}
+
+fn expand(
+    name: &str,
+    source: &str,
+    seen: &mut HashSet<String>,
+    enables: &mut Vec<String>,
+    out: &mut String,
+) -> Result<()> {
+    for line in source.lines() {
+        let trimmed = line.trim();
+        if let Some(path) = trimmed.strip_prefix("#import ") {
+            let path = path.trim();
+            if seen.insert(path.to_string()) {
+                let shared = lookup(SHARED, path)
+                    .ok_or_else(|| shader_error(name, &format!("unknown import '{path}'")))?;
+                expand(path, shared, seen, enables, out)?;
+            }
+        } else if trimmed.starts_with("enable ") {
+            if !enables.iter().any(|e| e == trimmed) {
+                enables.push(trimmed.to_string());
+            }
+        } else {
+            out.push_str(line);
+            out.push('\n');
+        }
+    }
+    Ok(())
+}
+
+fn shader_error(name: &str, message: &str) -> Error {
+    Error::Gpu {
+        operation: format!("composing shader {name}"),
+        message: message.to_string(),
+    }
+}
+
+/// Create the shader module for stage `name`.
+pub fn module(device: &wgpu::Device, name: &str) -> Result<wgpu::ShaderModule> {
+    let source = compose(name)?;
+    Ok(device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some(name),
+        source: wgpu::ShaderSource::Wgsl(source.into()),
+    }))
+}
+
+/// Parse and validate a composed stage with naga (no GPU needed).
+pub fn validate(name: &str) -> Result<naga::Module> {
+    let source = compose(name)?;
+    let module = naga::front::wgsl::parse_str(&source)
+        .map_err(|e| shader_error(name, &e.emit_to_string(&source)))?;
+    naga::valid::Validator::new(
+        naga::valid::ValidationFlags::all(),
+        naga::valid::Capabilities::all(),
+    )
+    .validate(&module)
+    .map_err(|e| shader_error(name, &format!("{e:?}")))?;
+    Ok(module)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_stage_validates_with_naga() {
+        for (name, _) in STAGES {
+            if let Err(e) = validate(name) {
+                panic!("{e}");
+            }
+        }
+    }
+
+    #[test]
+    fn imports_are_inserted_once_and_enables_hoisted() {
+        let text = compose("composite.wgsl").unwrap();
+        assert_eq!(text.matches("struct DisplayMask").count(), 1);
+        assert!(!text.contains("#import"));
+    }
+
+    /// Struct sizes seen by naga equal the Rust `#[repr(C)]` sizes.
+    #[test]
+    fn gpu_struct_layouts_match_rust() {
+        let module = validate("mesh_view.wgsl").unwrap();
+        let mut layouter = naga::proc::Layouter::default();
+        layouter.update(module.to_ctx()).unwrap();
+        let size_of = |name: &str| {
+            let (handle, _) = module
+                .types
+                .iter()
+                .find(|(_, t)| t.name.as_deref() == Some(name))
+                .unwrap_or_else(|| panic!("type {name}"));
+            layouter[handle].size as usize
+        };
+        use std::mem::size_of as rs;
+        assert_eq!(size_of("Camera"), rs::<crate::camera::CameraUniform>());
+        assert_eq!(size_of("View"), rs::<crate::camera::ViewUniform>());
+        assert_eq!(size_of("DisplayMask"), rs::<crate::display::MaskUniform>());
+        assert_eq!(size_of("Light"), rs::<crate::frame::LightUniform>());
+        assert_eq!(size_of("Frame"), rs::<crate::frame::FrameUniform>());
+    }
+}

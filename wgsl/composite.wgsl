@@ -1,0 +1,21 @@
+// N-pass compositing: I(x, y, c) = I_view(x,y,c)(x, y, c) from the per-view layers.
+#import shared/frame.wgsl
+
+@group(1) @binding(0) var views: texture_2d_array<f32>;
+
+@vertex
+fn vs_main(@builtin(vertex_index) vertex: u32) -> @builtin(position) vec4<f32> {
+    return fullscreen_position(vertex);
+}
+
+@fragment
+fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
+    let px = vec2<u32>(position.xy);
+    let v = mask_views(frame.mask, px);
+    return vec4<f32>(
+        textureLoad(views, px, v.x, 0).r,
+        textureLoad(views, px, v.y, 0).g,
+        textureLoad(views, px, v.z, 0).b,
+        1.0,
+    );
+}
