@@ -105,9 +105,9 @@ impl Calibration {
         self.pitch * self.screen_w / self.dpi * (1.0 / self.slope).atan().cos()
     }
 
-    /// The view `⌊N·frac(a)⌋` exactly as the holoplay shader formula gives it, in f64, for panel
-    /// pixel (x, y top-down) and subpixel i. The reference the slanted mapping is tested against.
-    pub fn holoplay_view(&self, views: u32, x: u32, y: u32, i: u32) -> u32 {
+    /// The holoplay shader's lens phase `frac(a)` in f64 (before `invView`), for panel pixel
+    /// (x, y top-down) and subpixel i. The reference the slanted mapping is tested against.
+    pub fn holoplay_phase(&self, x: u32, y: u32, i: u32) -> f64 {
         let sigma = if self.flip_image_x { -1.0 } else { 1.0 };
         let (w, h) = (self.screen_w, self.screen_h);
         let u = (x as f64 + 0.5) / w;
@@ -115,7 +115,12 @@ impl Calibration {
         let subp = sigma / (3.0 * w);
         let tilt = sigma * h / (w * self.slope);
         let a = (u + i as f64 * subp + v * tilt) * self.screen_pitch() - self.center;
-        let mut f = a - a.floor();
+        a - a.floor()
+    }
+
+    /// The view the holoplay shader picks: `⌊N·frac(a)⌋`, or `⌊N·(1 − frac(a))⌋` with `invView`.
+    pub fn holoplay_view(&self, views: u32, x: u32, y: u32, i: u32) -> u32 {
+        let mut f = self.holoplay_phase(x, y, i);
         if self.inv_view {
             f = 1.0 - f;
         }

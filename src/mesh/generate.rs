@@ -7,6 +7,20 @@ use glam::Vec3;
 use super::Mesh;
 
 impl Mesh {
+    /// The built-in test scene: an orange torus facing +z with a blue sphere through its hole,
+    /// reaching in front of and behind the ring, so that parallax has both signs.
+    pub fn torus_scene() -> Self {
+        let mut scene = Mesh::torus(1.0, 0.35, 64, 24, [0.95, 0.55, 0.15, 1.0]);
+        scene.append(&Mesh::sphere(
+            Vec3::new(0.0, 0.0, 0.3),
+            0.5,
+            24,
+            32,
+            [0.2, 0.45, 0.95, 1.0],
+        ));
+        scene
+    }
+
     /// A torus around the z axis (facing a camera on +z): `major` ring radius, `minor` tube
     /// radius, `rings × sides` quads, one colour.
     pub fn torus(major: f32, minor: f32, rings: u32, sides: u32, color: [f32; 4]) -> Self {

@@ -1,0 +1,74 @@
+//! Flags shared by several subcommands, and their parsers.
+
+use anyhow::{bail, Context, Result};
+use autostereo::display::Display;
+
+/// `WxH` → [w, h], both ≥ 1.
+pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
+    let (w, h) = s
+        .split_once(['x', 'X'])
+        .ok_or_else(|| format!("'{s}' is not WIDTHxHEIGHT"))?;
+    let parse = |v: &str| v.trim().parse::<u32>().map_err(|_| format!("'{s}' is not WIDTHxHEIGHT"));
+    let size = [parse(w)?, parse(h)?];
+    if size[0] == 0 || size[1] == 0 {
+        return Err(format!("size {s}: width and height must be at least 1"));
+    }
+    Ok(size)
+}
+
+/// `A,B` → [a, b].
+pub fn parse_pair(s: &str) -> Result<[u32; 2], String> {
+    let (a, b) = s.split_once(',').ok_or_else(|| format!("'{s}' is not A,B"))?;
+    let parse = |v: &str| v.trim().parse::<u32>().map_err(|_| format!("'{s}' is not two whole numbers A,B"));
+    Ok([parse(a)?, parse(b)?])
+}
+
+/// Display selection flags.
+#[derive(clap::Args, Clone, Debug)]
+pub struct DisplayArgs {
+    /// Display: hubner8 | lenticular:N | slanted:N,PITCH,SLANT,PHASE | lkg:PATH.json
+    #[arg(long, default_value = "hubner8")]
+    pub display: String,
+    /// Number of views (Looking Glass: the quilt's view count; others: must match the display).
+    #[arg(long)]
+    pub views: Option<u32>,
+    /// Window origin on the panel in pixels, X,Y.
+    #[arg(long, value_parser = parse_pair, default_value = "0,0")]
+    pub origin: [u32; 2],
+    /// Reverse the view order.
+    #[arg(long)]
+    pub flip_views: bool,
+    /// The panel's subpixels are ordered BGR.
+    #[arg(long)]
+    pub bgr: bool,
+}
+
+impl DisplayArgs {
+    /// Build the display these flags describe.
+    pub fn display(&self) -> Result<Display> {
+        let mut display = Display::parse(&self.display)?;
+        if let Some(n) = self.views {
+            display = display.with_views(n)?;
+        }
+        display.origin = self.origin;
+        display.flip_views ^= self.flip_views;
+        display.bgr ^= self.bgr;
+        Ok(display)
+    }
+}
+
+/// Create the GPU context (adapter from WGPU_BACKEND / WGPU_ADAPTER_NAME) and log it.
+pub fn gpu() -> Result<autostereo::gpu::GpuContext> {
+    let ctx = autostereo::gpu::GpuContext::new(&Default::default()).context("setting up the GPU")?;
+    Ok(ctx)
+}
+
+/// Fail unless `path`'s parent directory exists (so errors come before minutes of rendering).
+pub fn check_output(path: &std::path::Path) -> Result<()> {
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        if !dir.is_dir() {
+            bail!("output directory {} does not exist", dir.display());
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,46 @@
+//! `autostereo`: command-line front end of the library.
+
+mod args;
+mod mask_cmd;
+mod mesh_cmd;
+mod views_cmd;
+
+use clap::{Parser, Subcommand};
+
+#[derive(Parser)]
+#[command(name = "autostereo", version, about = "Multi-view rendering for autostereoscopic displays")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Write a display mask as a view-index image (each channel = view of that subpixel).
+    Mask(mask_cmd::MaskArgs),
+    /// Render a triangle mesh (OBJ; a generated torus scene when no file is given).
+    Mesh(mesh_cmd::MeshArgs),
+    /// Extract what one view zone sees from a spatial image, or a red/cyan anaglyph.
+    Views(views_cmd::ViewsArgs),
+}
+
+fn main() -> std::process::ExitCode {
+    env_logger::Builder::from_env(
+        env_logger::Env::default().default_filter_or("warn,autostereo=info"),
+    )
+    .format_timestamp(None)
+    .init();
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Mask(a) => mask_cmd::run(a),
+        Command::Mesh(a) => mesh_cmd::run(a),
+        Command::Views(a) => views_cmd::run(a),
+    };
+    match result {
+        Ok(()) => std::process::ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            std::process::ExitCode::FAILURE
+        }
+    }
+}

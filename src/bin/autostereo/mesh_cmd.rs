@@ -1,0 +1,165 @@
+//! `autostereo mesh`: render a triangle mesh for a multi-view display.
+
+use std::path::PathBuf;
+
+use anyhow::{bail, Context, Result};
+use autostereo::camera::MultiViewCamera;
+use autostereo::frame::Frame;
+use autostereo::mesh::{Mesh, MeshBuffers};
+use autostereo::render::{MeshBaseline, MeshBaselineMethod};
+use autostereo::target::SpatialTarget;
+use autostereo::timing::{median, FrameTimer};
+
+use crate::args::{check_output, gpu, parse_size, DisplayArgs};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Method {
+    /// One pass, per-subpixel ray-triangle tests (not built yet: issue 3).
+    SinglePass,
+    /// One render per view + mask compositing (the oracle).
+    NPass,
+    /// The centre view only.
+    SingleView,
+}
+
+#[derive(clap::Args)]
+pub struct MeshArgs {
+    /// OBJ file; a generated torus scene when omitted.
+    obj: Option<PathBuf>,
+    #[command(flatten)]
+    display: DisplayArgs,
+    #[command(flatten)]
+    camera: CameraArgs,
+    /// Image size WxH in pixels.
+    #[arg(long, value_parser = parse_size, default_value = "512x512")]
+    size: [u32; 2],
+    /// Rendering method.
+    #[arg(long, value_enum, default_value = "n-pass")]
+    method: Method,
+    /// Timed frames (after two warm-up frames); the median is reported.
+    #[arg(long, default_value_t = 1)]
+    frames: u32,
+    /// Output PNG of the spatial image.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Print one JSON object with the run's parameters and timing on stdout.
+    #[arg(long)]
+    json: bool,
+}
+
+/// Camera flags shared by the renderers.
+#[derive(clap::Args, Clone, Debug)]
+pub struct CameraArgs {
+    /// Separation of adjacent views, scene units (default: 5 % of the bounding radius).
+    #[arg(long)]
+    separation: Option<f32>,
+    /// Focal distance (default: camera to the bounding-box centre).
+    #[arg(long, conflicts_with = "focal_scale")]
+    focal: Option<f32>,
+    /// Focal distance as a multiple of the default.
+    #[arg(long)]
+    focal_scale: Option<f32>,
+    /// Vertical field of view, degrees.
+    #[arg(long, default_value_t = 30.0)]
+    fov: f32,
+}
+
+impl CameraArgs {
+    /// Frame `bounds` with these settings.
+    pub fn camera(
+        &self,
+        bounds: autostereo::camera::Bounds,
+        views: u32,
+        size: [u32; 2],
+    ) -> Result<MultiViewCamera> {
+        let aspect = size[0] as f32 / size[1] as f32;
+        let mut camera =
+            MultiViewCamera::framing(bounds, views, self.separation, self.fov.to_radians(), aspect)?;
+        if let Some(fd) = self.focal {
+            camera.focal_distance = fd;
+        }
+        if let Some(s) = self.focal_scale {
+            camera.focal_distance *= s;
+        }
+        camera.validate()?;
+        Ok(camera)
+    }
+}
+
+pub fn run(args: MeshArgs) -> Result<()> {
+    if let Some(out) = &args.out {
+        check_output(out)?;
+    }
+    if args.frames == 0 {
+        bail!("--frames must be at least 1");
+    }
+    let display = args.display.display()?;
+    let mesh = match &args.obj {
+        Some(path) => Mesh::load_obj(path)?,
+        None => Mesh::torus_scene(),
+    };
+    let bounds = mesh.bounds().context("the mesh has no vertices")?;
+    let camera = args.camera.camera(bounds, display.views(), args.size)?;
+    let frame = Frame::new(camera, display, args.size)?;
+    let method = match args.method {
+        Method::NPass => MeshBaselineMethod::NPass,
+        Method::SingleView => MeshBaselineMethod::SingleView,
+        Method::SinglePass => bail!(
+            "--method single-pass for meshes is not implemented yet (issue 3); use n-pass or single-view"
+        ),
+    };
+    let ctx = gpu()?;
+    let (device, queue) = (&ctx.device, &ctx.queue);
+    let buffers = MeshBuffers::new(device, &mesh)?;
+    let target = SpatialTarget::new(device, args.size)?;
+    let mut renderer = MeshBaseline::new(device)?;
+    let timer = FrameTimer::new(device, queue);
+    let mut times = Vec::new();
+    for i in 0..args.frames + 2 {
+        let ms = timer.time_frame(device, queue, |encoder| {
+            renderer.encode(device, queue, encoder, &buffers, &frame, method, &target)
+        })?;
+        if i >= 2 {
+            times.push(ms);
+        }
+    }
+    let ms = median(&times);
+    if let Some(out) = &args.out {
+        target.read(device, queue)?.save_png(out)?;
+    }
+    let method_name = match args.method {
+        Method::NPass => "n-pass",
+        Method::SingleView => "single-view",
+        Method::SinglePass => "single-pass",
+    };
+    if args.json {
+        let json = serde_json::json!({
+            "method": method_name,
+            "views": frame.camera.views,
+            "views_per_pixel": frame.display.views_per_pixel(),
+            "display": args.display.display,
+            "size": args.size,
+            "adapter": ctx.adapter_label(),
+            "ms": ms,
+            "frames": args.frames,
+            "timing": timer.source(),
+            "triangles": mesh.triangle_count(),
+            "focal_distance": frame.camera.focal_distance,
+            "separation": frame.camera.separation,
+        });
+        println!("{json}");
+    } else {
+        eprintln!(
+            "{method_name}: {} triangles, {} views, {}x{}, {:.2} ms/frame (median of {}, {:?}) on {}",
+            mesh.triangle_count(),
+            frame.camera.views,
+            args.size[0],
+            args.size[1],
+            ms,
+            args.frames,
+            timer.source(),
+            ctx.adapter_label()
+        );
+    }
+    Ok(())
+}

@@ -1,0 +1,44 @@
+//! Shared test helpers: one GPU context per test process (PLATFORM.md: one device per adapter).
+//! No adapter is a test failure, never a skip: CI installs lavapipe.
+#![allow(dead_code)]
+
+use std::path::PathBuf;
+use std::sync::{Mutex, MutexGuard, OnceLock};
+
+use autostereo::gpu::{GpuContext, GpuOptions};
+use autostereo::image_io::RgbImage;
+
+/// The process-wide GPU context, locked so that tests in one binary take turns on it.
+pub fn gpu() -> MutexGuard<'static, GpuContext> {
+    static CONTEXT: OnceLock<Mutex<GpuContext>> = OnceLock::new();
+    CONTEXT
+        .get_or_init(|| {
+            let ctx = GpuContext::new(&GpuOptions::default())
+                .expect("a GPU adapter is required (CI installs lavapipe)");
+            eprintln!("adapter: {}", ctx.adapter_label());
+            Mutex::new(ctx)
+        })
+        .lock()
+        .unwrap_or_else(|poisoned| poisoned.into_inner())
+}
+
+/// Where tests write diagnostic images (git-ignored).
+pub fn out_dir() -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/test-output");
+    std::fs::create_dir_all(&dir).expect("create target/test-output");
+    dir
+}
+
+/// Save `image` and an amplified |a − b| diff image under `name` for inspection on failure.
+pub fn save_diff(name: &str, a: &RgbImage, b: &RgbImage) -> PathBuf {
+    let dir = out_dir();
+    let mut diff = RgbImage::new(a.width, a.height);
+    for (d, (x, y)) in diff.data.iter_mut().zip(a.data.iter().zip(&b.data)) {
+        *d = x.abs_diff(*y).saturating_mul(8);
+    }
+    a.save_png(&dir.join(format!("{name}.png"))).unwrap();
+    b.save_png(&dir.join(format!("{name}.reference.png"))).unwrap();
+    let path = dir.join(format!("{name}.diff.png"));
+    diff.save_png(&path).unwrap();
+    path
+}
