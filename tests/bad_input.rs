@@ -1,0 +1,125 @@
+//! Bad input is a clear error, never a panic: library calls and the CLI.
+
+use std::path::PathBuf;
+use std::process::Command;
+
+use autostereo::camera::Bounds;
+use autostereo::camera::MultiViewCamera;
+use autostereo::display::{Calibration, Display};
+use autostereo::frame::Frame;
+use autostereo::mesh::Mesh;
+use autostereo::Error;
+
+fn temp_file(name: &str, contents: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/test-input");
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, contents).unwrap();
+    path
+}
+
+#[test]
+fn malformed_obj_files_are_mesh_errors() {
+    for (name, text, expect) in [
+        ("bad_number.obj", "v 1 2 x\nv 0 0 0\nv 1 0 0\nf 1 2 3\n", "malformed"),
+        ("bad_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", ""),
+        ("no_faces.obj", "v 0 0 0\nv 1 0 0\n", "no triangles"),
+        ("empty.obj", "", "no triangles"),
+        ("nan.obj", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "non-finite"),
+    ] {
+        let path = temp_file(name, text);
+        match Mesh::load_obj(&path) {
+            Err(Error::Mesh { reason, .. }) => {
+                assert!(reason.contains(expect), "{name}: {reason}")
+            }
+            other => panic!("{name}: expected a mesh error, got {other:?}"),
+        }
+    }
+    assert!(matches!(
+        Mesh::load_obj("does/not/exist.obj".as_ref()),
+        Err(Error::Mesh { .. })
+    ));
+}
+
+#[test]
+fn unknown_display_spec_and_bad_view_counts_are_errors() {
+    assert!(matches!(Display::parse("hologram:3"), Err(Error::DisplaySpec { .. })));
+    assert!(matches!(Display::parse("lenticular:0"), Err(Error::InvalidParameter { name: "views", .. })));
+    assert!(matches!(Display::parse("slanted:0,8,1,0"), Err(Error::InvalidParameter { name: "views", .. })));
+    assert!(matches!(Display::parse("slanted:8,0,1,0"), Err(Error::InvalidParameter { name: "pitch", .. })));
+    assert!(matches!(Display::parse("lenticular:257"), Err(Error::InvalidParameter { .. })));
+    assert!(Display::parse("hubner8").unwrap().with_views(9).is_err());
+}
+
+#[test]
+fn zero_size_and_zero_views_are_errors() {
+    let bounds = Bounds {
+        min: glam::Vec3::splat(-1.0),
+        max: glam::Vec3::splat(1.0),
+    };
+    let camera = MultiViewCamera::framing(bounds, 8, None, 0.5, 1.0).unwrap();
+    let display = Display::parse("hubner8").unwrap();
+    assert!(matches!(
+        Frame::new(camera.clone(), display.clone(), [0, 0]),
+        Err(Error::InvalidParameter { name: "size", .. })
+    ));
+    assert!(MultiViewCamera::framing(bounds, 0, None, 0.5, 1.0).is_err());
+    assert!(Frame::new(camera.with_views(4), display, [64, 64]).is_err(), "camera/display N mismatch");
+}
+
+#[test]
+fn calibration_with_missing_or_bad_fields_is_an_error() {
+    let full = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/data/lkg_sample_visual.json")).unwrap();
+    let json: serde_json::Value = serde_json::from_str(&full).unwrap();
+    for field in ["pitch", "slope", "center", "DPI", "screenW", "screenH", "flipImageX", "invView"] {
+        let mut partial = json.clone();
+        partial.as_object_mut().unwrap().remove(field);
+        let err = Calibration::from_json(&partial.to_string(), "visual.json".as_ref()).unwrap_err();
+        assert!(err.to_string().contains(&format!("missing field '{field}'")), "{err}");
+    }
+    for bad in ["{", "[]", r#"{"pitch": "x"}"#] {
+        assert!(matches!(
+            Calibration::from_json(bad, "visual.json".as_ref()),
+            Err(Error::Calibration { .. })
+        ));
+    }
+    let mut zero = json.clone();
+    zero["slope"]["value"] = 0.0.into();
+    assert!(Calibration::from_json(&zero.to_string(), "v.json".as_ref()).is_err());
+}
+
+/// Run the CLI; return (success, stderr).
+fn cli(args: &[&str]) -> (bool, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_autostereo"))
+        .args(args)
+        .env("RUST_LOG", "off")
+        .output()
+        .unwrap();
+    (out.status.success(), String::from_utf8_lossy(&out.stderr).into_owned())
+}
+
+#[test]
+fn cli_reports_bad_input_without_panicking() {
+    let bad_obj = temp_file("cli_bad.obj", "v 1 2 x\nf 1 2 3\n");
+    let calibration = temp_file("cli_calibration.json", r#"{"pitch": {"value": 50}}"#);
+    let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/test-input/cli_out.png");
+    let out = out.to_str().unwrap();
+    let lkg = format!("lkg:{}", calibration.display());
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (vec!["mesh", bad_obj.to_str().unwrap(), "--out", out], "malformed OBJ"),
+        (vec!["mesh", "--display", "hologram", "--out", out], "unknown display"),
+        (vec!["mesh", "--display", "lenticular:0", "--out", out], "views"),
+        (vec!["mesh", "--size", "0x0", "--out", out], "at least 1"),
+        (vec!["mask", "--display", &lkg, "--size", "8x8", "--out", out], "missing field"),
+        (vec!["mask", "--display", "hubner8", "--size", "8x8", "--views", "0", "--out", out], "views"),
+        (vec!["mesh", "--method", "single-pass"], "not implemented"),
+        (vec!["views", "nonexistent.png", "--view", "0", "--out", out], "nonexistent.png"),
+        (vec!["mesh", "--out", "/no/such/dir/x.png"], "does not exist"),
+    ];
+    for (args, expect) in cases {
+        let (ok, stderr) = cli(&args);
+        assert!(!ok, "{args:?} should fail");
+        assert!(!stderr.contains("panicked"), "{args:?} panicked: {stderr}");
+        assert!(stderr.contains(expect), "{args:?}: stderr lacks '{expect}': {stderr}");
+    }
+}
