@@ -111,7 +111,10 @@ impl Frame {
         if self.size[0] == 0 || self.size[1] == 0 {
             return Err(Error::invalid(
                 "size",
-                format!("{}x{}: width and height must be at least 1", self.size[0], self.size[1]),
+                format!(
+                    "{}x{}: width and height must be at least 1",
+                    self.size[0], self.size[1]
+                ),
             ));
         }
         if self.camera.views != self.display.views() {

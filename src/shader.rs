@@ -10,10 +10,19 @@ use crate::error::{Error, Result};
 
 /// Shared WGSL, by import path.
 const SHARED: &[(&str, &str)] = &[
-    ("shared/camera.wgsl", include_str!("../wgsl/shared/camera.wgsl")),
+    (
+        "shared/camera.wgsl",
+        include_str!("../wgsl/shared/camera.wgsl"),
+    ),
     ("shared/mask.wgsl", include_str!("../wgsl/shared/mask.wgsl")),
-    ("shared/shading.wgsl", include_str!("../wgsl/shared/shading.wgsl")),
-    ("shared/frame.wgsl", include_str!("../wgsl/shared/frame.wgsl")),
+    (
+        "shared/shading.wgsl",
+        include_str!("../wgsl/shared/shading.wgsl"),
+    ),
+    (
+        "shared/frame.wgsl",
+        include_str!("../wgsl/shared/frame.wgsl"),
+    ),
 ];
 
 /// One WGSL file per pipeline stage, by file name.

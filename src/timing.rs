@@ -23,7 +23,8 @@ pub enum TimingSource {
 impl FrameTimer {
     /// Use timestamps if the device has `TIMESTAMP_QUERY_INSIDE_ENCODERS`.
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue) -> Self {
-        let needed = wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::TIMESTAMP_QUERY_INSIDE_ENCODERS;
+        let needed =
+            wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::TIMESTAMP_QUERY_INSIDE_ENCODERS;
         let queries = device.features().contains(needed).then(|| {
             let set = device.create_query_set(&wgpu::QuerySetDescriptor {
                 label: Some("frame timestamps"),
@@ -98,7 +99,9 @@ impl FrameTimer {
             .map_err(|e| gpu_err(e.to_string()))?
             .map_err(|e| gpu_err(e.to_string()))?;
         let ticks: [u64; 2] = {
-            let view = read.get_mapped_range(..).map_err(|e| gpu_err(e.to_string()))?;
+            let view = read
+                .get_mapped_range(..)
+                .map_err(|e| gpu_err(e.to_string()))?;
             bytemuck::pod_read_unaligned(&view[..16])
         };
         read.unmap();

@@ -21,11 +21,19 @@ fn temp_file(name: &str, contents: &str) -> PathBuf {
 #[test]
 fn malformed_obj_files_are_mesh_errors() {
     for (name, text, expect) in [
-        ("bad_number.obj", "v 1 2 x\nv 0 0 0\nv 1 0 0\nf 1 2 3\n", "malformed"),
+        (
+            "bad_number.obj",
+            "v 1 2 x\nv 0 0 0\nv 1 0 0\nf 1 2 3\n",
+            "malformed",
+        ),
         ("bad_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", ""),
         ("no_faces.obj", "v 0 0 0\nv 1 0 0\n", "no triangles"),
         ("empty.obj", "", "no triangles"),
-        ("nan.obj", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "non-finite"),
+        (
+            "nan.obj",
+            "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+            "non-finite",
+        ),
     ] {
         let path = temp_file(name, text);
         match Mesh::load_obj(&path) {
@@ -43,11 +51,26 @@ fn malformed_obj_files_are_mesh_errors() {
 
 #[test]
 fn unknown_display_spec_and_bad_view_counts_are_errors() {
-    assert!(matches!(Display::parse("hologram:3"), Err(Error::DisplaySpec { .. })));
-    assert!(matches!(Display::parse("lenticular:0"), Err(Error::InvalidParameter { name: "views", .. })));
-    assert!(matches!(Display::parse("slanted:0,8,1,0"), Err(Error::InvalidParameter { name: "views", .. })));
-    assert!(matches!(Display::parse("slanted:8,0,1,0"), Err(Error::InvalidParameter { name: "pitch", .. })));
-    assert!(matches!(Display::parse("lenticular:257"), Err(Error::InvalidParameter { .. })));
+    assert!(matches!(
+        Display::parse("hologram:3"),
+        Err(Error::DisplaySpec { .. })
+    ));
+    assert!(matches!(
+        Display::parse("lenticular:0"),
+        Err(Error::InvalidParameter { name: "views", .. })
+    ));
+    assert!(matches!(
+        Display::parse("slanted:0,8,1,0"),
+        Err(Error::InvalidParameter { name: "views", .. })
+    ));
+    assert!(matches!(
+        Display::parse("slanted:8,0,1,0"),
+        Err(Error::InvalidParameter { name: "pitch", .. })
+    ));
+    assert!(matches!(
+        Display::parse("lenticular:257"),
+        Err(Error::InvalidParameter { .. })
+    ));
     assert!(Display::parse("hubner8").unwrap().with_views(9).is_err());
 }
 
@@ -64,18 +87,38 @@ fn zero_size_and_zero_views_are_errors() {
         Err(Error::InvalidParameter { name: "size", .. })
     ));
     assert!(MultiViewCamera::framing(bounds, 0, None, 0.5, 1.0).is_err());
-    assert!(Frame::new(camera.with_views(4), display, [64, 64]).is_err(), "camera/display N mismatch");
+    assert!(
+        Frame::new(camera.with_views(4), display, [64, 64]).is_err(),
+        "camera/display N mismatch"
+    );
 }
 
 #[test]
 fn calibration_with_missing_or_bad_fields_is_an_error() {
-    let full = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/data/lkg_sample_visual.json")).unwrap();
+    let full = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/data/lkg_sample_visual.json"
+    ))
+    .unwrap();
     let json: serde_json::Value = serde_json::from_str(&full).unwrap();
-    for field in ["pitch", "slope", "center", "DPI", "screenW", "screenH", "flipImageX", "invView"] {
+    for field in [
+        "pitch",
+        "slope",
+        "center",
+        "DPI",
+        "screenW",
+        "screenH",
+        "flipImageX",
+        "invView",
+    ] {
         let mut partial = json.clone();
         partial.as_object_mut().unwrap().remove(field);
         let err = Calibration::from_json(&partial.to_string(), "visual.json".as_ref()).unwrap_err();
-        assert!(err.to_string().contains(&format!("missing field '{field}'")), "{err}");
+        assert!(
+            err.to_string()
+                .contains(&format!("missing field '{field}'")),
+            "{err}"
+        );
     }
     for bad in ["{", "[]", r#"{"pitch": "x"}"#] {
         assert!(matches!(
@@ -95,7 +138,10 @@ fn cli(args: &[&str]) -> (bool, String) {
         .env("RUST_LOG", "off")
         .output()
         .unwrap();
-    (out.status.success(), String::from_utf8_lossy(&out.stderr).into_owned())
+    (
+        out.status.success(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
 }
 
 #[test]
@@ -106,20 +152,54 @@ fn cli_reports_bad_input_without_panicking() {
     let out = out.to_str().unwrap();
     let lkg = format!("lkg:{}", calibration.display());
     let cases: Vec<(Vec<&str>, &str)> = vec![
-        (vec!["mesh", bad_obj.to_str().unwrap(), "--out", out], "malformed OBJ"),
-        (vec!["mesh", "--display", "hologram", "--out", out], "unknown display"),
-        (vec!["mesh", "--display", "lenticular:0", "--out", out], "views"),
+        (
+            vec!["mesh", bad_obj.to_str().unwrap(), "--out", out],
+            "malformed OBJ",
+        ),
+        (
+            vec!["mesh", "--display", "hologram", "--out", out],
+            "unknown display",
+        ),
+        (
+            vec!["mesh", "--display", "lenticular:0", "--out", out],
+            "views",
+        ),
         (vec!["mesh", "--size", "0x0", "--out", out], "at least 1"),
-        (vec!["mask", "--display", &lkg, "--size", "8x8", "--out", out], "missing field"),
-        (vec!["mask", "--display", "hubner8", "--size", "8x8", "--views", "0", "--out", out], "views"),
+        (
+            vec!["mask", "--display", &lkg, "--size", "8x8", "--out", out],
+            "missing field",
+        ),
+        (
+            vec![
+                "mask",
+                "--display",
+                "hubner8",
+                "--size",
+                "8x8",
+                "--views",
+                "0",
+                "--out",
+                out,
+            ],
+            "views",
+        ),
         (vec!["mesh", "--method", "single-pass"], "not implemented"),
-        (vec!["views", "nonexistent.png", "--view", "0", "--out", out], "nonexistent.png"),
-        (vec!["mesh", "--out", "/no/such/dir/x.png"], "does not exist"),
+        (
+            vec!["views", "nonexistent.png", "--view", "0", "--out", out],
+            "nonexistent.png",
+        ),
+        (
+            vec!["mesh", "--out", "/no/such/dir/x.png"],
+            "does not exist",
+        ),
     ];
     for (args, expect) in cases {
         let (ok, stderr) = cli(&args);
         assert!(!ok, "{args:?} should fail");
         assert!(!stderr.contains("panicked"), "{args:?} panicked: {stderr}");
-        assert!(stderr.contains(expect), "{args:?}: stderr lacks '{expect}': {stderr}");
+        assert!(
+            stderr.contains(expect),
+            "{args:?}: stderr lacks '{expect}': {stderr}"
+        );
     }
 }

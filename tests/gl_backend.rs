@@ -17,7 +17,14 @@ fn render_npass(ctx: &GpuContext, frame: &Frame, mesh: &Mesh) -> RgbImage {
     let target = SpatialTarget::new(&ctx.device, frame.size).unwrap();
     let mut renderer = MeshBaseline::new(&ctx.device).unwrap();
     renderer
-        .render(&ctx.device, &ctx.queue, &buffers, frame, MeshBaselineMethod::NPass, &target)
+        .render(
+            &ctx.device,
+            &ctx.queue,
+            &buffers,
+            frame,
+            MeshBaselineMethod::NPass,
+            &target,
+        )
         .unwrap();
     target.read(&ctx.device, &ctx.queue).unwrap()
 }
@@ -31,7 +38,9 @@ fn gl_backend_renders_masks_and_meshes() {
     .expect("the GL backend (llvmpipe) must be available");
     assert_eq!(gl.info().backend, wgpu::Backend::Gl);
 
-    let display = Display::new(DisplayKind::Hubner8).unwrap().with_origin([3, 9]);
+    let display = Display::new(DisplayKind::Hubner8)
+        .unwrap()
+        .with_origin([3, 9]);
     let size = [640, 360];
     let image = MaskImageRenderer::new(&gl.device)
         .unwrap()
@@ -41,7 +50,11 @@ fn gl_backend_renders_masks_and_meshes() {
     for y in 0..size[1] {
         for x in 0..size[0] {
             for c in 0..3 {
-                assert_eq!(image.get(x, y, c) as u32, mask.view(x, y, c), "GL mask ({x},{y},{c})");
+                assert_eq!(
+                    image.get(x, y, c) as u32,
+                    mask.view(x, y, c),
+                    "GL mask ({x},{y},{c})"
+                );
             }
         }
     }
@@ -52,8 +65,14 @@ fn gl_backend_renders_masks_and_meshes() {
     let on_gl = render_npass(&gl, &frame, &mesh);
     let reference = render_npass(&common::gpu(), &frame, &mesh);
     let diff = compare(&on_gl, &reference).unwrap();
-    assert!(on_gl.data.iter().filter(|&&v| v > 0).count() > 1000, "GL image is empty");
+    assert!(
+        on_gl.data.iter().filter(|&&v| v > 0).count() > 1000,
+        "GL image is empty"
+    );
     if diff.psnr_db < 40.0 {
-        panic!("GL vs default adapter {diff:?}: {}", common::save_diff("gl", &on_gl, &reference).display());
+        panic!(
+            "GL vs default adapter {diff:?}: {}",
+            common::save_diff("gl", &on_gl, &reference).display()
+        );
     }
 }

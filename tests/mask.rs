@@ -27,14 +27,25 @@ fn hubner8_equals_paper_equations_and_slanted_8_8_two_thirds_seven_sixths() {
     let slanted = slanted(8, 8.0, 2.0 / 3.0, 7.0 / 6.0).mask();
     // A 1920×1200 panel covers the 8×12 period many times over; add a window origin too.
     for origin in [[0, 0], [5, 7]] {
-        let h = Display::new(DisplayKind::Hubner8).unwrap().with_origin(origin).mask();
+        let h = Display::new(DisplayKind::Hubner8)
+            .unwrap()
+            .with_origin(origin)
+            .mask();
         let s = slanted_with_origin(origin);
         for y in 0..1200 {
             for x in 0..1920 {
                 for c in 0..3 {
                     let paper = hubner8_paper_view(x + origin[0], y + origin[1], c);
-                    assert_eq!(h.view(x, y, c), paper, "hubner8 ({x},{y},{c}) origin {origin:?}");
-                    assert_eq!(s.view(x, y, c), paper, "slanted ({x},{y},{c}) origin {origin:?}");
+                    assert_eq!(
+                        h.view(x, y, c),
+                        paper,
+                        "hubner8 ({x},{y},{c}) origin {origin:?}"
+                    );
+                    assert_eq!(
+                        s.view(x, y, c),
+                        paper,
+                        "slanted ({x},{y},{c}) origin {origin:?}"
+                    );
                 }
             }
         }
@@ -43,7 +54,9 @@ fn hubner8_equals_paper_equations_and_slanted_8_8_two_thirds_seven_sixths() {
 }
 
 fn slanted_with_origin(origin: [u32; 2]) -> Mask {
-    slanted(8, 8.0, 2.0 / 3.0, 7.0 / 6.0).with_origin(origin).mask()
+    slanted(8, 8.0, 2.0 / 3.0, 7.0 / 6.0)
+        .with_origin(origin)
+        .mask()
 }
 
 #[test]
@@ -157,7 +170,12 @@ fn wgsl_mask_equals_rust_mask_on_an_8k_panel() {
                     if image.get(x, y, c) as u32 != mask.view(x, y, c) {
                         mismatches += 1;
                         if mismatches <= 5 {
-                            eprintln!("{:?} ({x},{y},{c}): GPU {} CPU {}", display.kind, image.get(x, y, c), mask.view(x, y, c));
+                            eprintln!(
+                                "{:?} ({x},{y},{c}): GPU {} CPU {}",
+                                display.kind,
+                                image.get(x, y, c),
+                                mask.view(x, y, c)
+                            );
                         }
                     }
                 }

@@ -108,7 +108,11 @@ fn views_shift_as_the_camera_formula_predicts() {
             let x1 = cam.focal_to_pixel(cam.project(i, right), SIZE).x as f64;
             let predicted = ((x0 - 0.5).ceil() + (x1 - 0.5).ceil()) / 2.0;
             let on_centre = |x: f64| ((x - 0.5) - (x - 0.5).round()).abs() < 1e-3;
-            let tolerance = if on_centre(x0) || on_centre(x1) { 0.5 } else { 1e-3 };
+            let tolerance = if on_centre(x0) || on_centre(x1) {
+                0.5
+            } else {
+                1e-3
+            };
             assert!(
                 (measured - predicted).abs() <= tolerance,
                 "marker at d={depth}, view {i}: measured x {measured:.3}, predicted {predicted:.3}"
@@ -119,7 +123,10 @@ fn views_shift_as_the_camera_formula_predicts() {
         // focal plane, with it behind. Edge quantisation bounds the error by 1 px / (N − 1).
         let step = (shifts[views as usize - 1] - shifts[0]) / (views - 1) as f64;
         let expected = cam.separation as f64 * (1.0 - FD as f64 / depth) * px_per_unit;
-        assert!((step - expected).abs() < 1.0 / (views - 1) as f64, "d={depth}: step {step:.3} px vs {expected:.3}");
+        assert!(
+            (step - expected).abs() < 1.0 / (views - 1) as f64,
+            "d={depth}: step {step:.3} px vs {expected:.3}"
+        );
         assert!(expected.abs() > 1.0, "the test must use a visible parallax");
     }
 }
@@ -133,7 +140,12 @@ fn composite_equals_cpu_mask_applied_to_the_view_layers() {
     let ctx = common::gpu();
     let layers = renderer.view_layers().unwrap();
     let images: Vec<RgbImage> = (0..views)
-        .map(|i| RgbImage::from_rgba(SIZE, &read_texture_rgba8(&ctx.device, &ctx.queue, &layers.texture, i).unwrap()))
+        .map(|i| {
+            RgbImage::from_rgba(
+                SIZE,
+                &read_texture_rgba8(&ctx.device, &ctx.queue, &layers.texture, i).unwrap(),
+            )
+        })
         .collect();
     let mask = frame.display.mask();
     let mut expected = RgbImage::new(SIZE[0], SIZE[1]);
@@ -145,7 +157,10 @@ fn composite_equals_cpu_mask_applied_to_the_view_layers() {
         }
     }
     if spatial != expected {
-        panic!("composite differs from the CPU mask: {}", common::save_diff("composite", &spatial, &expected).display());
+        panic!(
+            "composite differs from the CPU mask: {}",
+            common::save_diff("composite", &spatial, &expected).display()
+        );
     }
     // The layers differ from each other (otherwise this test proves nothing).
     assert_ne!(images[0], images[7]);
@@ -159,7 +174,10 @@ fn zero_separation_or_one_view_equals_single_view() {
         let npass = render(&frame, MeshBaselineMethod::NPass, &mut renderer);
         let single = render(&frame, MeshBaselineMethod::SingleView, &mut renderer);
         if npass != single {
-            panic!("N={views} e={separation}: {}", common::save_diff("degenerate", &npass, &single).display());
+            panic!(
+                "N={views} e={separation}: {}",
+                common::save_diff("degenerate", &npass, &single).display()
+            );
         }
     }
 }

@@ -52,8 +52,7 @@ impl MultiViewCamera {
         fov_y: f32,
         aspect: f32,
     ) -> Result<Self> {
-        if !(fov_y > 0.0 && fov_y < std::f32::consts::PI) || !(aspect.is_finite() && aspect > 0.0)
-        {
+        if !(fov_y > 0.0 && fov_y < std::f32::consts::PI && aspect.is_finite() && aspect > 0.0) {
             return Err(Error::invalid(
                 "field of view",
                 format!("fov {fov_y} rad, aspect {aspect}"),

@@ -41,7 +41,10 @@ impl MultiViewCamera {
             if v.is_finite() && v > 0.0 {
                 Ok(())
             } else {
-                Err(Error::invalid(name, format!("{v}: must be a positive finite number")))
+                Err(Error::invalid(
+                    name,
+                    format!("{v}: must be a positive finite number"),
+                ))
             }
         };
         positive("focal distance", self.focal_distance)?;
@@ -59,7 +62,10 @@ impl MultiViewCamera {
         if !(self.far.is_finite() && self.far > self.near) {
             return Err(Error::invalid(
                 "far",
-                format!("{}: must be finite and beyond near = {}", self.far, self.near),
+                format!(
+                    "{}: must be finite and beyond near = {}",
+                    self.far, self.near
+                ),
             ));
         }
         if !self.eye_from_world.is_finite() {

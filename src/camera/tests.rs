@@ -30,7 +30,10 @@ fn focal_plane_point_projects_to_same_pixel_in_all_views() {
         for i in 0..c.views {
             for q in [c.project(i, p), matrix_projection(&c, i, p)] {
                 let px = c.focal_to_pixel(q, [512, 384]);
-                assert!((px - centre).abs().max_element() < 1e-3, "view {i}: {px} vs {centre}");
+                assert!(
+                    (px - centre).abs().max_element() < 1e-3,
+                    "view {i}: {px} vs {centre}"
+                );
             }
         }
     }
@@ -61,7 +64,10 @@ fn matrix_form_equals_closed_form() {
         ] {
             let closed = c.project(i, p);
             let matrix = matrix_projection(&c, i, p);
-            assert!((closed - matrix).abs().max_element() < 1e-4 * fd, "view {i} {p}: {closed} vs {matrix}");
+            assert!(
+                (closed - matrix).abs().max_element() < 1e-4 * fd,
+                "view {i} {p}: {closed} vs {matrix}"
+            );
         }
     }
 }

@@ -60,9 +60,9 @@ fn fixed_frac_ceil(v: f64) -> u32 {
 
 impl Mask {
     pub(crate) fn new(g: MaskGeometry) -> Self {
-        let flags = (g.subpixel as u32) * FLAG_SUBPIXEL
-            | (g.flip_views as u32) * FLAG_FLIP
-            | (g.bgr as u32) * FLAG_BGR;
+        let flag = |on: bool, bit: u32| if on { bit } else { 0 };
+        let flags =
+            flag(g.subpixel, FLAG_SUBPIXEL) | flag(g.flip_views, FLAG_FLIP) | flag(g.bgr, FLAG_BGR);
         Self {
             uniform: MaskUniform {
                 step_column: fixed_frac_ceil(1.0 / g.pitch),
@@ -150,7 +150,15 @@ mod tests {
 
     #[test]
     fn mul_high_is_exact() {
-        for &t in &[0u32, 1, 0xffff, 0x1_0000, 0x8000_0000, u32::MAX, 123_456_789] {
+        for &t in &[
+            0u32,
+            1,
+            0xffff,
+            0x1_0000,
+            0x8000_0000,
+            u32::MAX,
+            123_456_789,
+        ] {
             for &n in &[1u32, 2, 3, 8, 45, 64, 256, 65535] {
                 assert_eq!(mul_high(t, n) as u64, (t as u64 * n as u64) >> 32);
             }

@@ -47,7 +47,10 @@ pub(super) fn parse_kind(spec: &str) -> Result<DisplayKind> {
         "hubner8" => Err(spec_error(spec, "hubner8 takes no parameters")),
         "lenticular" => {
             if args.is_empty() {
-                return Err(spec_error(spec, "lenticular needs a view count: lenticular:N"));
+                return Err(spec_error(
+                    spec,
+                    "lenticular needs a view count: lenticular:N",
+                ));
             }
             Ok(DisplayKind::Lenticular {
                 views: parse_views(spec, args)?,
@@ -73,7 +76,10 @@ pub(super) fn parse_kind(spec: &str) -> Result<DisplayKind> {
         }
         "lkg" => {
             if args.is_empty() {
-                return Err(spec_error(spec, "lkg needs a calibration file: lkg:PATH.json"));
+                return Err(spec_error(
+                    spec,
+                    "lkg needs a calibration file: lkg:PATH.json",
+                ));
             }
             Ok(DisplayKind::LookingGlass {
                 views: LOOKING_GLASS_DEFAULT_VIEWS,

@@ -70,7 +70,11 @@ impl Mesh {
             let theta = i as f32 / stacks as f32 * std::f32::consts::PI;
             for j in 0..=slices {
                 let phi = j as f32 / slices as f32 * TAU;
-                let n = Vec3::new(theta.sin() * phi.cos(), theta.cos(), theta.sin() * phi.sin());
+                let n = Vec3::new(
+                    theta.sin() * phi.cos(),
+                    theta.cos(),
+                    theta.sin() * phi.sin(),
+                );
                 mesh.positions.push(center + n * radius);
                 mesh.normals.push(n);
                 mesh.colors.push(color);
@@ -80,7 +84,8 @@ impl Mesh {
         for i in 0..stacks {
             for j in 0..slices {
                 let (p, q) = (i * row + j, (i + 1) * row + j);
-                mesh.indices.extend_from_slice(&[p, q, q + 1, p, q + 1, p + 1]);
+                mesh.indices
+                    .extend_from_slice(&[p, q, q + 1, p, q + 1, p + 1]);
             }
         }
         mesh

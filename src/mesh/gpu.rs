@@ -37,10 +37,15 @@ impl MeshBuffers {
     pub fn new(device: &wgpu::Device, mesh: &Mesh) -> Result<Self> {
         mesh.validate()?;
         let limits = device.limits();
-        let limit = limits.max_buffer_size.min(limits.max_storage_buffer_binding_size as u64);
+        let limit = limits
+            .max_buffer_size
+            .min(limits.max_storage_buffer_binding_size);
         let vertex_bytes = mesh.positions.len() as u64 * std::mem::size_of::<GpuVertex>() as u64;
         let index_bytes = mesh.indices.len() as u64 * 4;
-        for (what, bytes) in [("vertex buffer bytes", vertex_bytes), ("index buffer bytes", index_bytes)] {
+        for (what, bytes) in [
+            ("vertex buffer bytes", vertex_bytes),
+            ("index buffer bytes", index_bytes),
+        ] {
             if bytes > limit {
                 return Err(Error::LimitExceeded {
                     what: what.into(),

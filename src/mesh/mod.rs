@@ -55,7 +55,7 @@ impl Mesh {
                 self.colors.len()
             )));
         }
-        if self.indices.is_empty() || self.indices.len() % 3 != 0 {
+        if self.indices.is_empty() || !self.indices.len().is_multiple_of(3) {
             return Err(fail(format!(
                 "{} indices: need a non-empty multiple of 3",
                 self.indices.len()

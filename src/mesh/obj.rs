@@ -24,7 +24,10 @@ pub(super) fn load(path: &Path) -> Result<Mesh> {
     let (models, materials) =
         tobj::load_obj(path, &options).map_err(|e| fail(format!("malformed OBJ: {e}")))?;
     let materials = materials.unwrap_or_else(|e| {
-        log::warn!("{}: materials not loaded ({e}); using the default colour", path.display());
+        log::warn!(
+            "{}: materials not loaded ({e}); using the default colour",
+            path.display()
+        );
         Vec::new()
     });
     let mut mesh = Mesh::default();
@@ -38,21 +41,32 @@ pub(super) fn load(path: &Path) -> Result<Mesh> {
             .and_then(|id| materials.get(id))
             .and_then(|mat| mat.diffuse)
             .map(|[r, g, b]| [r, g, b, 1.0]);
-        mesh.positions
-            .extend(m.positions.chunks_exact(3).map(|p| Vec3::new(p[0], p[1], p[2])));
+        mesh.positions.extend(
+            m.positions
+                .chunks_exact(3)
+                .map(|p| Vec3::new(p[0], p[1], p[2])),
+        );
         if m.normals.len() == m.positions.len() {
-            mesh.normals
-                .extend(m.normals.chunks_exact(3).map(|p| Vec3::new(p[0], p[1], p[2])));
+            mesh.normals.extend(
+                m.normals
+                    .chunks_exact(3)
+                    .map(|p| Vec3::new(p[0], p[1], p[2])),
+            );
         } else {
             has_normals = false;
             mesh.normals.extend(std::iter::repeat_n(Vec3::Z, n));
         }
         if m.vertex_color.len() == m.positions.len() {
-            mesh.colors
-                .extend(m.vertex_color.chunks_exact(3).map(|c| [c[0], c[1], c[2], 1.0]));
+            mesh.colors.extend(
+                m.vertex_color
+                    .chunks_exact(3)
+                    .map(|c| [c[0], c[1], c[2], 1.0]),
+            );
         } else {
-            mesh.colors
-                .extend(std::iter::repeat_n(material_color.unwrap_or(DEFAULT_COLOR), n));
+            mesh.colors.extend(std::iter::repeat_n(
+                material_color.unwrap_or(DEFAULT_COLOR),
+                n,
+            ));
         }
         if let Some(&bad) = m.indices.iter().find(|&&i| i as usize >= n) {
             return Err(fail(format!("face index {} beyond {n} vertices", bad + 1)));

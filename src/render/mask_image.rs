@@ -38,7 +38,10 @@ impl MaskImageRenderer {
     ) -> Result<RgbImage> {
         check_size_2d(device, size[0], size[1])?;
         if display.views() > 256 {
-            return Err(Error::invalid("views", "view-index images hold at most 256 views"));
+            return Err(Error::invalid(
+                "views",
+                "view-index images hold at most 256 views",
+            ));
         }
         let mut uniform: FrameUniform = bytemuck::Zeroable::zeroed();
         uniform.set_mask(display.mask().uniform());

@@ -44,7 +44,9 @@ impl MeshBaseline {
                 ty: wgpu::BindingType::Buffer {
                     ty: wgpu::BufferBindingType::Uniform,
                     has_dynamic_offset: true,
-                    min_binding_size: wgpu::BufferSize::new(std::mem::size_of::<ViewUniform>() as u64),
+                    min_binding_size: wgpu::BufferSize::new(
+                        std::mem::size_of::<ViewUniform>() as u64
+                    ),
                 },
                 count: None,
             }],
@@ -101,7 +103,7 @@ impl MeshBaseline {
         self.layers.as_ref()
     }
 
-    /// Upload the frame and view constants and record the passes of `method` into `encoder`.
+    /// Record the N-pass baseline into `encoder`: N view passes into the layers, then compositing.
     pub fn encode(
         &mut self,
         device: &wgpu::Device,
@@ -109,35 +111,42 @@ impl MeshBaseline {
         encoder: &mut wgpu::CommandEncoder,
         mesh: &MeshBuffers,
         frame: &Frame,
-        method: MeshBaselineMethod,
         target: &SpatialTarget,
     ) -> Result<()> {
         frame.validate()?;
         self.frame.write(queue, frame);
         let camera = &frame.camera;
-        let offsets: Vec<f32> = match method {
-            MeshBaselineMethod::NPass => (0..camera.views).map(|i| camera.view_offset(i)).collect(),
-            MeshBaselineMethod::SingleView => vec![0.0],
-        };
+        let offsets: Vec<f32> = (0..camera.views).map(|i| camera.view_offset(i)).collect();
         self.write_views(device, queue, &offsets, |vd| camera.view_uniform(vd));
-        match method {
-            MeshBaselineMethod::NPass => {
-                if self.layers.as_ref().map(|l| l.key()) != Some((frame.size, camera.views)) {
-                    self.layers = None; // free before allocating the replacement
-                    self.layers = Some(ViewLayers::new(device, frame.size, camera.views)?);
-                }
-                let layers = self.layers.as_ref().expect("allocated above");
-                for (i, layer) in layers.layer_views.iter().enumerate() {
-                    self.draw(encoder, mesh, frame, i as u32, layer, &layers.depth_view);
-                }
-                self.compositor
-                    .encode(device, encoder, &self.frame, &layers.array_view, target);
-            }
-            MeshBaselineMethod::SingleView => {
-                let depth = self.single_view_depth(device, frame.size);
-                self.draw(encoder, mesh, frame, 0, &target.view, &depth);
-            }
+        if self.layers.as_ref().map(|l| l.key()) != Some((frame.size, camera.views)) {
+            self.layers = None; // free before allocating the replacement
+            self.layers = Some(ViewLayers::new(device, frame.size, camera.views)?);
         }
+        let layers = self.layers.as_ref().expect("allocated above");
+        for (i, layer) in layers.layer_views.iter().enumerate() {
+            self.draw(encoder, mesh, frame, i as u32, layer, &layers.depth_view);
+        }
+        self.compositor
+            .encode(device, encoder, &self.frame, &layers.array_view, target);
+        Ok(())
+    }
+
+    /// Record the single-view render (centre camera) straight into `target`.
+    pub fn encode_single_view(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        encoder: &mut wgpu::CommandEncoder,
+        mesh: &MeshBuffers,
+        frame: &Frame,
+        target: &SpatialTarget,
+    ) -> Result<()> {
+        frame.validate()?;
+        self.frame.write(queue, frame);
+        let camera = &frame.camera;
+        self.write_views(device, queue, &[0.0], |vd| camera.view_uniform(vd));
+        let depth = self.single_view_depth(device, frame.size);
+        self.draw(encoder, mesh, frame, 0, &target.view, &depth);
         Ok(())
     }
 
@@ -154,7 +163,14 @@ impl MeshBaseline {
         let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
             label: Some("mesh baseline"),
         });
-        self.encode(device, queue, &mut encoder, mesh, frame, method, target)?;
+        match method {
+            MeshBaselineMethod::NPass => {
+                self.encode(device, queue, &mut encoder, mesh, frame, target)?
+            }
+            MeshBaselineMethod::SingleView => {
+                self.encode_single_view(device, queue, &mut encoder, mesh, frame, target)?
+            }
+        }
         queue.submit([encoder.finish()]);
         crate::readback::wait_idle(device)
     }
@@ -182,7 +198,11 @@ impl MeshBaseline {
             let view = texture.create_view(&Default::default());
             self.single_view_depth = Some((texture, view));
         }
-        self.single_view_depth.as_ref().expect("set above").1.clone()
+        self.single_view_depth
+            .as_ref()
+            .expect("set above")
+            .1
+            .clone()
     }
 
     fn write_views(
@@ -193,7 +213,11 @@ impl MeshBaseline {
         uniform: impl Fn(f32) -> ViewUniform,
     ) {
         let count = offsets.len() as u32;
-        if self.view_uniforms.as_ref().is_none_or(|(_, _, c)| *c < count) {
+        if self
+            .view_uniforms
+            .as_ref()
+            .is_none_or(|(_, _, c)| *c < count)
+        {
             let buffer = device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some("view uniforms"),
                 size: self.view_stride * count as u64,

@@ -37,7 +37,10 @@ pub(crate) fn fullscreen_pipeline(
 }
 
 /// A colour attachment cleared to `clear`.
-pub(crate) fn cleared(view: &wgpu::TextureView, clear: [f32; 4]) -> wgpu::RenderPassColorAttachment<'_> {
+pub(crate) fn cleared(
+    view: &wgpu::TextureView,
+    clear: [f32; 4],
+) -> wgpu::RenderPassColorAttachment<'_> {
     wgpu::RenderPassColorAttachment {
         view,
         depth_slice: None,

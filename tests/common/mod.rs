@@ -37,7 +37,8 @@ pub fn save_diff(name: &str, a: &RgbImage, b: &RgbImage) -> PathBuf {
         *d = x.abs_diff(*y).saturating_mul(8);
     }
     a.save_png(&dir.join(format!("{name}.png"))).unwrap();
-    b.save_png(&dir.join(format!("{name}.reference.png"))).unwrap();
+    b.save_png(&dir.join(format!("{name}.reference.png")))
+        .unwrap();
     let path = dir.join(format!("{name}.diff.png"));
     diff.save_png(&path).unwrap();
     path

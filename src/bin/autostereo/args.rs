@@ -8,7 +8,11 @@ pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
     let (w, h) = s
         .split_once(['x', 'X'])
         .ok_or_else(|| format!("'{s}' is not WIDTHxHEIGHT"))?;
-    let parse = |v: &str| v.trim().parse::<u32>().map_err(|_| format!("'{s}' is not WIDTHxHEIGHT"));
+    let parse = |v: &str| {
+        v.trim()
+            .parse::<u32>()
+            .map_err(|_| format!("'{s}' is not WIDTHxHEIGHT"))
+    };
     let size = [parse(w)?, parse(h)?];
     if size[0] == 0 || size[1] == 0 {
         return Err(format!("size {s}: width and height must be at least 1"));
@@ -18,8 +22,14 @@ pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
 
 /// `A,B` → [a, b].
 pub fn parse_pair(s: &str) -> Result<[u32; 2], String> {
-    let (a, b) = s.split_once(',').ok_or_else(|| format!("'{s}' is not A,B"))?;
-    let parse = |v: &str| v.trim().parse::<u32>().map_err(|_| format!("'{s}' is not two whole numbers A,B"));
+    let (a, b) = s
+        .split_once(',')
+        .ok_or_else(|| format!("'{s}' is not A,B"))?;
+    let parse = |v: &str| {
+        v.trim()
+            .parse::<u32>()
+            .map_err(|_| format!("'{s}' is not two whole numbers A,B"))
+    };
     Ok([parse(a)?, parse(b)?])
 }
 
@@ -59,7 +69,8 @@ impl DisplayArgs {
 
 /// Create the GPU context (adapter from WGPU_BACKEND / WGPU_ADAPTER_NAME) and log it.
 pub fn gpu() -> Result<autostereo::gpu::GpuContext> {
-    let ctx = autostereo::gpu::GpuContext::new(&Default::default()).context("setting up the GPU")?;
+    let ctx =
+        autostereo::gpu::GpuContext::new(&Default::default()).context("setting up the GPU")?;
     Ok(ctx)
 }
 

@@ -8,7 +8,11 @@ mod views_cmd;
 use clap::{Parser, Subcommand};
 
 #[derive(Parser)]
-#[command(name = "autostereo", version, about = "Multi-view rendering for autostereoscopic displays")]
+#[command(
+    name = "autostereo",
+    version,
+    about = "Multi-view rendering for autostereoscopic displays"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,

@@ -73,8 +73,13 @@ impl CameraArgs {
         size: [u32; 2],
     ) -> Result<MultiViewCamera> {
         let aspect = size[0] as f32 / size[1] as f32;
-        let mut camera =
-            MultiViewCamera::framing(bounds, views, self.separation, self.fov.to_radians(), aspect)?;
+        let mut camera = MultiViewCamera::framing(
+            bounds,
+            views,
+            self.separation,
+            self.fov.to_radians(),
+            aspect,
+        )?;
         if let Some(fd) = self.focal {
             camera.focal_distance = fd;
         }
@@ -116,8 +121,13 @@ pub fn run(args: MeshArgs) -> Result<()> {
     let timer = FrameTimer::new(device, queue);
     let mut times = Vec::new();
     for i in 0..args.frames + 2 {
-        let ms = timer.time_frame(device, queue, |encoder| {
-            renderer.encode(device, queue, encoder, &buffers, &frame, method, &target)
+        let ms = timer.time_frame(device, queue, |encoder| match method {
+            MeshBaselineMethod::NPass => {
+                renderer.encode(device, queue, encoder, &buffers, &frame, &target)
+            }
+            MeshBaselineMethod::SingleView => {
+                renderer.encode_single_view(device, queue, encoder, &buffers, &frame, &target)
+            }
         })?;
         if i >= 2 {
             times.push(ms);

@@ -33,7 +33,10 @@ pub fn run(args: ViewsArgs) -> Result<()> {
     let spatial = RgbImage::load_png(&args.spatial)?;
     let check = |v: u32| -> Result<()> {
         if v >= n {
-            bail!("view {v} does not exist: the display has views 0..{}", n - 1);
+            bail!(
+                "view {v} does not exist: the display has views 0..{}",
+                n - 1
+            );
         }
         Ok(())
     };
