@@ -161,3 +161,22 @@ fn device_rank(t: wgpu::DeviceType) -> u8 {
         wgpu::DeviceType::Other => 4,
     }
 }
+
+/// Run `create` inside a validation + out-of-memory error scope, so that a failure becomes
+/// [`Error::Gpu`] naming `operation` instead of wgpu's default panic.
+pub fn checked<T>(device: &wgpu::Device, operation: &str, create: impl FnOnce() -> T) -> Result<T> {
+    let oom = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
+    let validation = device.push_error_scope(wgpu::ErrorFilter::Validation);
+    let value = create();
+    let errors = [
+        pollster::block_on(validation.pop()),
+        pollster::block_on(oom.pop()),
+    ];
+    match errors.into_iter().flatten().next() {
+        None => Ok(value),
+        Some(e) => Err(Error::Gpu {
+            operation: operation.to_string(),
+            message: format!("{e:?}"),
+        }),
+    }
+}

@@ -23,6 +23,11 @@ const SHARED: &[(&str, &str)] = &[
         "shared/frame.wgsl",
         include_str!("../wgsl/shared/frame.wgsl"),
     ),
+    ("shared/multiview.wgsl", include_str!("../wgsl/shared/multiview.wgsl")),
+    ("shared/ray.wgsl", include_str!("../wgsl/shared/ray.wgsl")),
+    ("shared/mesh_data.wgsl", include_str!("../wgsl/shared/mesh_data.wgsl")),
+    ("shared/cover_data.wgsl", include_str!("../wgsl/shared/cover_data.wgsl")),
+    ("shared/cover.wgsl", include_str!("../wgsl/shared/cover.wgsl")),
 ];
 
 /// One WGSL file per pipeline stage, by file name.
@@ -30,6 +35,19 @@ pub const STAGES: &[(&str, &str)] = &[
     ("mask_image.wgsl", include_str!("../wgsl/mask_image.wgsl")),
     ("mesh_view.wgsl", include_str!("../wgsl/mesh_view.wgsl")),
     ("composite.wgsl", include_str!("../wgsl/composite.wgsl")),
+    ("mesh_cover.wgsl", include_str!("../wgsl/mesh_cover.wgsl")),
+    (
+        "mesh_single_pass_fast.wgsl",
+        include_str!("../wgsl/mesh_single_pass_fast.wgsl"),
+    ),
+    (
+        "mesh_single_pass_depth.wgsl",
+        include_str!("../wgsl/mesh_single_pass_depth.wgsl"),
+    ),
+    (
+        "mesh_single_pass_resolve.wgsl",
+        include_str!("../wgsl/mesh_single_pass_resolve.wgsl"),
+    ),
 ];
 
 fn lookup(table: &[(&str, &'static str)], name: &str) -> Option<&'static str> {

@@ -3,14 +3,18 @@
 //! - [`mask_image`]: the display mask as a view-index image (GPU side of the mask oracle).
 //! - [`composite`]: N per-view layers → spatial image (shared by every N-pass baseline).
 //! - [`mesh_npass`]: the N-pass and single-view mesh baselines.
+//! - [`mesh_single_pass`]: single-pass meshes (covering quads + ray-triangle tests).
 
 pub mod composite;
 pub mod mask_image;
 pub mod mesh_npass;
+pub mod mesh_single_pass;
 mod pipeline;
+mod specialize;
 mod view_layers;
 
 pub use composite::Compositor;
 pub use mask_image::MaskImageRenderer;
 pub use mesh_npass::{MeshBaseline, MeshBaselineMethod};
+pub use mesh_single_pass::{CoverBounds, MeshSinglePass, MeshSinglePassOptions, Visibility};
 pub use view_layers::ViewLayers;

@@ -8,6 +8,22 @@ pub(crate) fn fullscreen_pipeline(
     layouts: &[Option<&wgpu::BindGroupLayout>],
     format: wgpu::TextureFormat,
 ) -> wgpu::RenderPipeline {
+    fullscreen_pipeline_with(device, label, module, layouts, format, &[])
+}
+
+/// [`fullscreen_pipeline`] with override constants.
+pub(crate) fn fullscreen_pipeline_with(
+    device: &wgpu::Device,
+    label: &str,
+    module: &wgpu::ShaderModule,
+    layouts: &[Option<&wgpu::BindGroupLayout>],
+    format: wgpu::TextureFormat,
+    constants: &[(&str, f64)],
+) -> wgpu::RenderPipeline {
+    let options = wgpu::PipelineCompilationOptions {
+        constants,
+        zero_initialize_workgroup_memory: true,
+    };
     let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
         label: Some(label),
         bind_group_layouts: layouts,
@@ -19,7 +35,7 @@ pub(crate) fn fullscreen_pipeline(
         vertex: wgpu::VertexState {
             module,
             entry_point: Some("vs_main"),
-            compilation_options: Default::default(),
+            compilation_options: options.clone(),
             buffers: &[],
         },
         primitive: wgpu::PrimitiveState::default(),
@@ -28,7 +44,7 @@ pub(crate) fn fullscreen_pipeline(
         fragment: Some(wgpu::FragmentState {
             module,
             entry_point: Some("fs_main"),
-            compilation_options: Default::default(),
+            compilation_options: options,
             targets: &[Some(format.into())],
         }),
         multiview_mask: None,

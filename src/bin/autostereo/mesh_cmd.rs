@@ -6,7 +6,10 @@ use anyhow::{bail, Context, Result};
 use autostereo::camera::MultiViewCamera;
 use autostereo::frame::Frame;
 use autostereo::mesh::{Mesh, MeshBuffers};
-use autostereo::render::{MeshBaseline, MeshBaselineMethod};
+use autostereo::image_io::compare;
+use autostereo::render::{
+    CoverBounds, MeshBaseline, MeshBaselineMethod, MeshSinglePass, MeshSinglePassOptions, Visibility,
+};
 use autostereo::target::SpatialTarget;
 use autostereo::timing::{median, FrameTimer};
 
@@ -14,12 +17,24 @@ use crate::args::{check_output, gpu, parse_size, DisplayArgs};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum Method {
-    /// One pass, per-subpixel ray-triangle tests (not built yet: issue 3).
+    /// One pass: covering quads, per-subpixel ray-triangle tests.
     SinglePass,
     /// One render per view + mask compositing (the oracle).
     NPass,
     /// The centre view only.
     SingleView,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum VisibilityArg {
+    Exact,
+    Fast,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum BoundsArg {
+    Exact,
+    Paper,
 }
 
 #[derive(clap::Args)]
@@ -34,8 +49,17 @@ pub struct MeshArgs {
     #[arg(long, value_parser = parse_size, default_value = "512x512")]
     size: [u32; 2],
     /// Rendering method.
-    #[arg(long, value_enum, default_value = "n-pass")]
+    #[arg(long, value_enum, default_value = "single-pass")]
     method: Method,
+    /// Single-pass visibility: exact (per-subpixel depth) or fast (the paper's one depth per pixel).
+    #[arg(long, value_enum, default_value = "exact")]
+    visibility: VisibilityArg,
+    /// Single-pass covering-quad bounds: exact (DESIGN §3) or the paper's printed formula.
+    #[arg(long, value_enum, default_value = "exact")]
+    bounds: BoundsArg,
+    /// Also render N-pass and report psnr_db, max_abs_err, frac_off_2 against it.
+    #[arg(long)]
+    compare: bool,
     /// Timed frames (after two warm-up frames); the median is reported.
     #[arg(long, default_value_t = 1)]
     frames: u32,
@@ -106,37 +130,33 @@ pub fn run(args: MeshArgs) -> Result<()> {
     let bounds = mesh.bounds().context("the mesh has no vertices")?;
     let camera = args.camera.camera(bounds, display.views(), args.size)?;
     let frame = Frame::new(camera, display, args.size)?;
-    let method = match args.method {
-        Method::NPass => MeshBaselineMethod::NPass,
-        Method::SingleView => MeshBaselineMethod::SingleView,
-        Method::SinglePass => bail!(
-            "--method single-pass for meshes is not implemented yet (issue 3); use n-pass or single-view"
-        ),
-    };
     let ctx = gpu()?;
     let (device, queue) = (&ctx.device, &ctx.queue);
     let buffers = MeshBuffers::new(device, &mesh)?;
     let target = SpatialTarget::new(device, args.size)?;
-    let mut renderer = MeshBaseline::new(device)?;
+    let mut renderer = Renderer::new(device, &args)?;
     let timer = FrameTimer::new(device, queue);
     let mut times = Vec::new();
     for i in 0..args.frames + 2 {
-        let ms = timer.time_frame(device, queue, |encoder| match method {
-            MeshBaselineMethod::NPass => {
-                renderer.encode(device, queue, encoder, &buffers, &frame, &target)
-            }
-            MeshBaselineMethod::SingleView => {
-                renderer.encode_single_view(device, queue, encoder, &buffers, &frame, &target)
-            }
+        let ms = timer.time_frame(device, queue, |encoder| {
+            renderer.encode(device, queue, encoder, &buffers, &frame, &target)
         })?;
         if i >= 2 {
             times.push(ms);
         }
     }
     let ms = median(&times);
+    let image = target.read(device, queue)?;
     if let Some(out) = &args.out {
-        target.read(device, queue)?.save_png(out)?;
+        image.save_png(out)?;
     }
+    let diff = if args.compare {
+        let reference = SpatialTarget::new(device, args.size)?;
+        MeshBaseline::new(device)?.render(device, queue, &buffers, &frame, MeshBaselineMethod::NPass, &reference)?;
+        Some(compare(&image, &reference.read(device, queue)?)?)
+    } else {
+        None
+    };
     let method_name = match args.method {
         Method::NPass => "n-pass",
         Method::SingleView => "single-view",
@@ -157,6 +177,16 @@ pub fn run(args: MeshArgs) -> Result<()> {
             "focal_distance": frame.camera.focal_distance,
             "separation": frame.camera.separation,
         });
+        let mut json = json;
+        if args.method == Method::SinglePass {
+            json["visibility"] = format!("{:?}", args.visibility).to_lowercase().into();
+            json["bounds"] = format!("{:?}", args.bounds).to_lowercase().into();
+        }
+        if let Some(d) = diff {
+            json["psnr_db"] = serde_json::to_value(d.psnr_db).unwrap_or(serde_json::Value::Null);
+            json["max_abs_err"] = d.max_abs_err.into();
+            json["frac_off_2"] = d.frac_off_2.into();
+        }
         println!("{json}");
     } else {
         eprintln!(
@@ -170,6 +200,62 @@ pub fn run(args: MeshArgs) -> Result<()> {
             timer.source(),
             ctx.adapter_label()
         );
+        if let Some(d) = diff {
+            eprintln!(
+                "vs n-pass: PSNR {:.2} dB, max abs error {}, {:.4} % of subpixels off by > 2/255",
+                d.psnr_db,
+                d.max_abs_err,
+                100.0 * d.frac_off_2
+            );
+        }
     }
     Ok(())
+}
+
+/// The renderer a `--method` selects.
+enum Renderer {
+    Baseline(MeshBaseline, MeshBaselineMethod),
+    SinglePass(MeshSinglePass),
+}
+
+impl Renderer {
+    fn new(device: &wgpu::Device, args: &MeshArgs) -> Result<Self> {
+        Ok(match args.method {
+            Method::NPass => Self::Baseline(MeshBaseline::new(device)?, MeshBaselineMethod::NPass),
+            Method::SingleView => {
+                Self::Baseline(MeshBaseline::new(device)?, MeshBaselineMethod::SingleView)
+            }
+            Method::SinglePass => Self::SinglePass(MeshSinglePass::new(
+                device,
+                MeshSinglePassOptions {
+                    visibility: match args.visibility {
+                        VisibilityArg::Exact => Visibility::Exact,
+                        VisibilityArg::Fast => Visibility::Fast,
+                    },
+                    bounds: match args.bounds {
+                        BoundsArg::Exact => CoverBounds::Exact,
+                        BoundsArg::Paper => CoverBounds::Paper,
+                    },
+                },
+            )?),
+        })
+    }
+
+    fn encode(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        encoder: &mut wgpu::CommandEncoder,
+        mesh: &MeshBuffers,
+        frame: &Frame,
+        target: &SpatialTarget,
+    ) -> autostereo::Result<()> {
+        match self {
+            Self::Baseline(r, MeshBaselineMethod::NPass) => r.encode(device, queue, encoder, mesh, frame, target),
+            Self::Baseline(r, MeshBaselineMethod::SingleView) => {
+                r.encode_single_view(device, queue, encoder, mesh, frame, target)
+            }
+            Self::SinglePass(r) => r.encode(device, queue, encoder, mesh, frame, target),
+        }
+    }
 }

@@ -1,0 +1,32 @@
+// Vertex stage of the single-pass mesh geometry passes: the covering rectangle of triangle
+// vertex / 6 (from mesh_cover.wgsl) drawn as two triangles.
+#import shared/frame.wgsl
+#import shared/multiview.wgsl
+#import shared/ray.wgsl
+#import shared/cover_data.wgsl
+
+struct CoverOut {
+    @builtin(position) position: vec4<f32>,
+    @location(0) @interpolate(flat) tri: u32,
+}
+
+@vertex
+fn vs_cover(@builtin(vertex_index) vertex: u32) -> CoverOut {
+    let tri = vertex / 6u;
+    let rect = cover_rects[tri];
+    // Corners of two triangles: 0 1 2 / 2 1 3 with bit 0 = x, bit 1 = y. An empty rectangle
+    // (lo > hi: the triangle is behind the near plane) collapses to a point the rasteriser drops.
+    let corner = array<u32, 6>(0u, 1u, 2u, 2u, 1u, 3u)[vertex % 6u];
+    var x = select(rect.x, rect.z, (corner & 1u) != 0u);
+    var y = select(rect.y, rect.w, (corner & 2u) != 0u);
+    if (rect.x > rect.z) {
+        x = -2.0;
+        y = -2.0;
+    }
+    return CoverOut(vec4<f32>(x, y, 0.5, 1.0), tri);
+}
+
+// The eye-space triangle of a covering fragment.
+fn fragment_triangle(tri: u32) -> EyeTriangle {
+    return eye_triangles[tri];
+}
