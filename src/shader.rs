@@ -41,12 +41,20 @@ pub const STAGES: &[(&str, &str)] = &[
         include_str!("../wgsl/mesh_single_pass_fast.wgsl"),
     ),
     (
-        "mesh_single_pass_depth.wgsl",
-        include_str!("../wgsl/mesh_single_pass_depth.wgsl"),
+        "mesh_single_pass_atomic.wgsl",
+        include_str!("../wgsl/mesh_single_pass_atomic.wgsl"),
     ),
     (
-        "mesh_single_pass_resolve.wgsl",
-        include_str!("../wgsl/mesh_single_pass_resolve.wgsl"),
+        "mesh_single_pass_subpixel.wgsl",
+        include_str!("../wgsl/mesh_single_pass_subpixel.wgsl"),
+    ),
+    (
+        "mesh_single_pass_subpixel_resolve.wgsl",
+        include_str!("../wgsl/mesh_single_pass_subpixel_resolve.wgsl"),
+    ),
+    (
+        "mesh_single_pass_atomic_resolve.wgsl",
+        include_str!("../wgsl/mesh_single_pass_atomic_resolve.wgsl"),
     ),
 ];
 

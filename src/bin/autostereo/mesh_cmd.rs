@@ -27,7 +27,11 @@ pub enum Method {
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum VisibilityArg {
+    /// Per-subpixel depth by subpixel-resolution rasterisation (any adapter).
     Exact,
+    /// Per-subpixel depth with 64-bit atomics.
+    Atomic,
+    /// The paper's one depth per pixel (approximate).
     Fast,
 }
 
@@ -51,7 +55,7 @@ pub struct MeshArgs {
     /// Rendering method.
     #[arg(long, value_enum, default_value = "single-pass")]
     method: Method,
-    /// Single-pass visibility: exact (per-subpixel depth) or fast (the paper's one depth per pixel).
+    /// Single-pass visibility: exact | atomic (both per-subpixel depth) | fast (the paper's).
     #[arg(long, value_enum, default_value = "exact")]
     visibility: VisibilityArg,
     /// Single-pass covering-quad bounds: exact (DESIGN §3) or the paper's printed formula.
@@ -230,6 +234,7 @@ impl Renderer {
                 MeshSinglePassOptions {
                     visibility: match args.visibility {
                         VisibilityArg::Exact => Visibility::Exact,
+                        VisibilityArg::Atomic => Visibility::ExactAtomic,
                         VisibilityArg::Fast => Visibility::Fast,
                     },
                     bounds: match args.bounds {

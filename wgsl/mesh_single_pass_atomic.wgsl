@@ -2,7 +2,7 @@
 // (depth, triangle) pair with one 64-bit atomic. The key is depth bits (high word; positive
 // floats order like their bits) and triangle id (low word), stored inverted so that the cleared
 // buffer (0) means "empty" and atomicMax picks the nearest. Shading happens once per subpixel
-// in mesh_single_pass_resolve.wgsl.
+// in mesh_single_pass_atomic_resolve.wgsl.
 #import shared/cover.wgsl
 
 @group(2) @binding(0) var<storage, read_write> nearest_keys: array<atomic<u64>>;

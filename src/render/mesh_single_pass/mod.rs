@@ -1,0 +1,254 @@
+//! Single-pass triangle meshes (paper §3.2, §3.3.3, §3.5.3): one covering rectangle per
+//! triangle, per-subpixel ray-triangle tests, the spatial image written directly.
+//!
+//! Every frame: a compute pass (`mesh_cover.wgsl`) transforms each triangle once and computes
+//! its covering rectangle (DESIGN §3, near-plane clipped); one geometry pass draws the
+//! rectangles; the exact modes add a full-screen resolve that shades each subpixel once.
+//!
+//! Visibility ([`Visibility`]):
+//! - `Exact`: rectangles rasterised at subpixel resolution (K·W × H); each fragment is one
+//!   subpixel's ray; the hardware depth test keeps the nearest triangle id. Matches N-pass;
+//!   needs no optional feature.
+//! - `ExactAtomic`: per-pixel fragments test the K rays and keep the nearest (depth, triangle)
+//!   per subpixel with 64-bit atomics. Also matches N-pass; needs `SHADER_INT64_ATOMIC_MIN_MAX`.
+//! - `Fast`: the paper's — one depth per fragment (nearest hit subpixel) through the hardware
+//!   depth test; dual-source blending keeps the subpixels a triangle misses. Approximate.
+
+mod pipelines;
+mod scratch;
+
+use std::collections::HashMap;
+
+use super::pipeline::{cleared, draw_fullscreen};
+use super::specialize::Specialization;
+use crate::error::{Error, Result};
+use crate::frame::{Frame, FrameBinding};
+use crate::mesh::MeshBuffers;
+use crate::target::SpatialTarget;
+use pipelines::{Layouts, Pipelines};
+use scratch::Scratch;
+
+/// How per-subpixel visibility is resolved.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Visibility {
+    /// Subpixel-resolution rasterisation + hardware depth test + deferred shading. Exact.
+    Exact,
+    /// Per-pixel fragments, per-subpixel 64-bit atomic depth + deferred shading. Exact.
+    ExactAtomic,
+    /// The paper's one depth per fragment; approximate where triangles split a pixel.
+    Fast,
+}
+
+impl Visibility {
+    /// Features the mode needs beyond the WebGPU defaults.
+    pub fn required_features(self) -> wgpu::Features {
+        match self {
+            Visibility::Exact => wgpu::Features::empty(),
+            Visibility::ExactAtomic => {
+                wgpu::Features::SHADER_INT64 | wgpu::Features::SHADER_INT64_ATOMIC_MIN_MAX
+            }
+            Visibility::Fast => wgpu::Features::DUAL_SOURCE_BLENDING,
+        }
+    }
+}
+
+/// Horizontal extent of the covering rectangles.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CoverBounds {
+    /// DESIGN §3: `x ± vd·|1 − fd/d|` per vertex. Always covers.
+    Exact,
+    /// The paper's printed `(x ∓ vd)·fd/d`: under-covers geometry beyond 2·fd (kept to measure).
+    Paper,
+}
+
+/// Creation-time options.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct MeshSinglePassOptions {
+    /// Visibility mode.
+    pub visibility: Visibility,
+    /// Covering-rectangle bounds.
+    pub bounds: CoverBounds,
+}
+
+impl Default for MeshSinglePassOptions {
+    fn default() -> Self {
+        Self {
+            visibility: Visibility::Exact,
+            bounds: CoverBounds::Exact,
+        }
+    }
+}
+
+/// The single-pass mesh renderer. Pipelines are built per display specialisation (K, N) on
+/// first use and cached; scratch buffers follow the frame size and triangle count.
+pub struct MeshSinglePass {
+    options: MeshSinglePassOptions,
+    frame: FrameBinding,
+    layouts: Layouts,
+    pipelines: HashMap<Specialization, Pipelines>,
+    scratch: Scratch,
+}
+
+impl MeshSinglePass {
+    /// Check that the device can run `options`; prepare the bind group layouts.
+    pub fn new(device: &wgpu::Device, options: MeshSinglePassOptions) -> Result<Self> {
+        let missing = options.visibility.required_features() - device.features();
+        if !missing.is_empty() {
+            return Err(Error::MissingFeature {
+                adapter: "this device".into(),
+                feature: format!("{missing:?}"),
+                purpose: format!("{:?} visibility of single-pass meshes", options.visibility),
+            });
+        }
+        let layouts = Layouts::new(device);
+        Ok(Self {
+            options,
+            frame: FrameBinding::new(device, &layouts.frame),
+            layouts,
+            pipelines: HashMap::new(),
+            scratch: Scratch::default(),
+        })
+    }
+
+    /// The options this renderer was made with.
+    pub fn options(&self) -> MeshSinglePassOptions {
+        self.options
+    }
+
+    /// Record the frame into `encoder`.
+    pub fn encode(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        encoder: &mut wgpu::CommandEncoder,
+        mesh: &MeshBuffers,
+        frame: &Frame,
+        target: &SpatialTarget,
+    ) -> Result<()> {
+        frame.validate()?;
+        if target.size() != frame.size {
+            return Err(Error::invalid(
+                "target",
+                format!("size {:?} differs from the frame's {:?}", target.size(), frame.size),
+            ));
+        }
+        let spec = Specialization::of(frame);
+        if !self.pipelines.contains_key(&spec) {
+            let built = crate::gpu::checked(device, "building the single-pass mesh pipelines", || {
+                pipelines::build(device, &self.layouts, self.options, spec)
+            })??;
+            self.pipelines.insert(spec, built);
+        }
+        let triangles = mesh.index_count / 3;
+        self.scratch
+            .prepare(device, self.options.visibility, frame, triangles)?;
+        self.frame.write(queue, frame);
+        let pipelines = &self.pipelines[&spec];
+        let groups = self
+            .scratch
+            .bind_groups(device, &self.layouts, self.options.visibility, mesh);
+
+        {
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: Some("mesh cover"),
+                timestamp_writes: None,
+            });
+            pass.set_pipeline(&pipelines.cover);
+            pass.set_bind_group(0, &self.frame.bind_group, &[]);
+            pass.set_bind_group(1, &groups.cover_compute, &[]);
+            let [x, y] = dispatch_2d(device, triangles.div_ceil(pipelines::COVER_WORKGROUP));
+            pass.dispatch_workgroups(x, y, 1);
+        }
+
+        let s = &self.scratch;
+        let (color, depth, label) = match self.options.visibility {
+            Visibility::Fast => (
+                cleared(&target.view, frame.background),
+                s.depth_view(),
+                "mesh single pass (fast)",
+            ),
+            Visibility::Exact => (
+                wgpu::RenderPassColorAttachment {
+                    view: s.triangle_ids_view(),
+                    depth_slice: None,
+                    resolve_target: None,
+                    ops: wgpu::Operations {
+                        // NO_TRIANGLE in mesh_single_pass_subpixel_resolve.wgsl.
+                        load: wgpu::LoadOp::Clear(wgpu::Color {
+                            r: u32::MAX as f64,
+                            g: 0.0,
+                            b: 0.0,
+                            a: 0.0,
+                        }),
+                        store: wgpu::StoreOp::Store,
+                    },
+                },
+                s.depth_view(),
+                "mesh single pass (subpixel visibility)",
+            ),
+            Visibility::ExactAtomic => {
+                encoder.clear_buffer(s.keys_buffer(), 0, None);
+                (cleared(&target.view, frame.background), None, "mesh single pass (atomic visibility)")
+            }
+        };
+        {
+            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some(label),
+                color_attachments: &[Some(color)],
+                depth_stencil_attachment: depth.map(|view| wgpu::RenderPassDepthStencilAttachment {
+                    view,
+                    depth_ops: Some(wgpu::Operations {
+                        load: wgpu::LoadOp::Clear(1.0),
+                        store: wgpu::StoreOp::Discard,
+                    }),
+                    stencil_ops: None,
+                }),
+                timestamp_writes: None,
+                occlusion_query_set: None,
+                multiview_mask: None,
+            });
+            pass.set_pipeline(&pipelines.geometry);
+            pass.set_bind_group(0, &self.frame.bind_group, &[]);
+            pass.set_bind_group(1, &groups.mesh, &[]);
+            if let Some(keys) = &groups.keys_write {
+                pass.set_bind_group(2, keys, &[]);
+            }
+            pass.draw(0..triangles * 6, 0..1);
+        }
+        if let (Some(resolve), Some(visible)) = (&pipelines.resolve, &groups.visible) {
+            draw_fullscreen(
+                encoder,
+                "mesh single pass (resolve)",
+                resolve,
+                &[&self.frame.bind_group, &groups.mesh, visible],
+                &target.view,
+            );
+        }
+        Ok(())
+    }
+
+    /// Encode, submit and wait.
+    pub fn render(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        mesh: &MeshBuffers,
+        frame: &Frame,
+        target: &SpatialTarget,
+    ) -> Result<()> {
+        let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+            label: Some("mesh single pass"),
+        });
+        self.encode(device, queue, &mut encoder, mesh, frame, target)?;
+        queue.submit([encoder.finish()]);
+        crate::readback::wait_idle(device)
+    }
+}
+
+/// Split `groups` workgroups over x and y within the per-dimension limit (the shader
+/// linearises `group.y · groups.x + group.x` and skips indices past the end).
+fn dispatch_2d(device: &wgpu::Device, groups: u32) -> [u32; 2] {
+    let max = device.limits().max_compute_workgroups_per_dimension.max(1);
+    let x = groups.clamp(1, max);
+    [x, groups.div_ceil(x).max(1)]
+}

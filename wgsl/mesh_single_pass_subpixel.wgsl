@@ -1,0 +1,26 @@
+// Single-pass meshes, `exact` visibility, geometry pass: the covering rectangles are rasterised
+// at subpixel resolution (K·W × H), so every fragment is one ray — subpixel c = x mod K of
+// pixel x / K, seen from view mask(pixel, c) — and the hardware depth test keeps the nearest
+// hit per subpixel. Writes the triangle id; mesh_single_pass_subpixel_resolve.wgsl shades.
+// No atomics, so it runs on every adapter.
+#import shared/cover.wgsl
+
+struct SubpixelOut {
+    @location(0) triangle: u32,
+    @builtin(frag_depth) depth: f32,
+}
+
+@fragment
+fn fs_main(in: CoverOut) -> SubpixelOut {
+    let column = u32(in.position.x);
+    let px = vec2<u32>(column / VIEWS_PER_PIXEL, u32(in.position.y));
+    let c = column % VIEWS_PER_PIXEL;
+    let centre = vec2<f32>(f32(px.x) + 0.5, in.position.y);
+    let ray = view_ray(centre, ray_view(px, c));
+    let t = fragment_triangle(in.tri);
+    let hit = ray_triangle(ray, t.p0.xyz, t.p1.xyz, t.p2.xyz);
+    if (hit.x < 0.0) {
+        discard;
+    }
+    return SubpixelOut(in.tri, window_depth(hit.x * frame.camera.focal_distance));
+}
