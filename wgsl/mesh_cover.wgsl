@@ -58,6 +58,9 @@ fn cover_bounds(p: array<vec3<f32>, 3>) -> Bounds {
 }
 
 const WORKGROUP: u32 = 64u;
+// Padding of the covering rectangles, pixels: a sliver where fragments sample pixel centres;
+// the subpixel-resolution pass (samples at x + 1/6, x + 1/2, x + 5/6) needs half a pixel.
+override COVER_PADDING_PX: f32 = 0.0625;
 
 @compute @workgroup_size(64)
 fn cs_main(@builtin(workgroup_id) group: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>, @builtin(local_invocation_index) local: u32) {
@@ -76,9 +79,11 @@ fn cs_main(@builtin(workgroup_id) group: vec3<u32>, @builtin(num_workgroups) gro
         cover_rects[tri] = vec4<f32>(1.0, 1.0, -1.0, -1.0); // behind the near plane: empty
         return;
     }
-    // One pixel of conservative padding, then to NDC (focal window ↦ [−1, 1]), clamped so that
-    // huge rectangles of near triangles stay finite.
-    let pad = frame.camera.focal_window / frame.camera.viewport;
+    // Rays go through pixel centres and the bounds are exact, so a pixel whose centre any view's
+    // projection covers is inside the rectangle already; a sliver of padding absorbs rounding
+    // (DESIGN §3 suggests a whole pixel, which triples the fragments of 1-pixel triangles).
+    // Then to NDC (focal window ↦ [−1, 1]), clamped so that near triangles stay finite.
+    let pad = COVER_PADDING_PX * frame.camera.focal_window / frame.camera.viewport;
     let half = 0.5 * frame.camera.focal_window;
     let lo = clamp((b.lo - pad) / half, vec2<f32>(-2.0), vec2<f32>(2.0));
     let hi = clamp((b.hi + pad) / half, vec2<f32>(-2.0), vec2<f32>(2.0));

@@ -131,7 +131,9 @@ pub(super) fn build(
     spec: Specialization,
 ) -> Result<Pipelines> {
     let paper = (options.bounds == CoverBounds::Paper) as u32 as f64;
-    let cover_constants = spec.constants(&[("PAPER_BOUNDS", paper)]);
+    let subpixel_samples = options.visibility == Visibility::Exact && spec.views_per_pixel > 1;
+    let padding = if subpixel_samples { 0.5 } else { 1.0 / 16.0 };
+    let cover_constants = spec.constants(&[("PAPER_BOUNDS", paper), ("COVER_PADDING_PX", padding)]);
     let constants = spec.constants(&[]);
     let compile = |constants| wgpu::PipelineCompilationOptions {
         constants,
