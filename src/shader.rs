@@ -23,11 +23,23 @@ const SHARED: &[(&str, &str)] = &[
         "shared/frame.wgsl",
         include_str!("../wgsl/shared/frame.wgsl"),
     ),
-    ("shared/multiview.wgsl", include_str!("../wgsl/shared/multiview.wgsl")),
+    (
+        "shared/multiview.wgsl",
+        include_str!("../wgsl/shared/multiview.wgsl"),
+    ),
     ("shared/ray.wgsl", include_str!("../wgsl/shared/ray.wgsl")),
-    ("shared/mesh_data.wgsl", include_str!("../wgsl/shared/mesh_data.wgsl")),
-    ("shared/cover_data.wgsl", include_str!("../wgsl/shared/cover_data.wgsl")),
-    ("shared/cover.wgsl", include_str!("../wgsl/shared/cover.wgsl")),
+    (
+        "shared/mesh_data.wgsl",
+        include_str!("../wgsl/shared/mesh_data.wgsl"),
+    ),
+    (
+        "shared/cover_data.wgsl",
+        include_str!("../wgsl/shared/cover_data.wgsl"),
+    ),
+    (
+        "shared/cover.wgsl",
+        include_str!("../wgsl/shared/cover.wgsl"),
+    ),
 ];
 
 /// One WGSL file per pipeline stage, by file name.

@@ -11,14 +11,13 @@ struct SubpixelOut {
 }
 
 @fragment
-fn fs_main(in: CoverOut) -> SubpixelOut {
+fn fs_main(in: CoverFlatOut) -> SubpixelOut {
     let column = u32(in.position.x);
     let px = vec2<u32>(column / VIEWS_PER_PIXEL, u32(in.position.y));
     let c = column % VIEWS_PER_PIXEL;
     let centre = vec2<f32>(f32(px.x) + 0.5, in.position.y);
     let ray = view_ray(centre, ray_view(px, c));
-    let t = fragment_triangle(in.tri);
-    let hit = ray_triangle(ray, t.p0.xyz, t.p1.xyz, t.p2.xyz);
+    let hit = ray_triangle(ray, in.p0, in.p1, in.p2);
     if (hit.x < 0.0) {
         discard;
     }

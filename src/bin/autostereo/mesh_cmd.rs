@@ -5,10 +5,11 @@ use std::path::PathBuf;
 use anyhow::{bail, Context, Result};
 use autostereo::camera::MultiViewCamera;
 use autostereo::frame::Frame;
-use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::image_io::compare;
+use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::{
-    CoverBounds, MeshBaseline, MeshBaselineMethod, MeshSinglePass, MeshSinglePassOptions, Visibility,
+    CoverBounds, MeshBaseline, MeshBaselineMethod, MeshSinglePass, MeshSinglePassOptions,
+    Visibility,
 };
 use autostereo::target::SpatialTarget;
 use autostereo::timing::{median, FrameTimer};
@@ -27,6 +28,8 @@ pub enum Method {
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum VisibilityArg {
+    /// The fastest exact mode the adapter supports (atomic, else exact).
+    Auto,
     /// Per-subpixel depth by subpixel-resolution rasterisation (any adapter).
     Exact,
     /// Per-subpixel depth with 64-bit atomics.
@@ -55,8 +58,8 @@ pub struct MeshArgs {
     /// Rendering method.
     #[arg(long, value_enum, default_value = "single-pass")]
     method: Method,
-    /// Single-pass visibility: exact | atomic (both per-subpixel depth) | fast (the paper's).
-    #[arg(long, value_enum, default_value = "exact")]
+    /// Single-pass visibility: auto | exact | atomic (per-subpixel depth) | fast (the paper's).
+    #[arg(long, value_enum, default_value = "auto")]
     visibility: VisibilityArg,
     /// Single-pass covering-quad bounds: exact (DESIGN §3) or the paper's printed formula.
     #[arg(long, value_enum, default_value = "exact")]
@@ -156,7 +159,14 @@ pub fn run(args: MeshArgs) -> Result<()> {
     }
     let diff = if args.compare {
         let reference = SpatialTarget::new(device, args.size)?;
-        MeshBaseline::new(device)?.render(device, queue, &buffers, &frame, MeshBaselineMethod::NPass, &reference)?;
+        MeshBaseline::new(device)?.render(
+            device,
+            queue,
+            &buffers,
+            &frame,
+            MeshBaselineMethod::NPass,
+            &reference,
+        )?;
         Some(compare(&image, &reference.read(device, queue)?)?)
     } else {
         None
@@ -182,8 +192,8 @@ pub fn run(args: MeshArgs) -> Result<()> {
             "separation": frame.camera.separation,
         });
         let mut json = json;
-        if args.method == Method::SinglePass {
-            json["visibility"] = format!("{:?}", args.visibility).to_lowercase().into();
+        if let Renderer::SinglePass(r) = &renderer {
+            json["visibility"] = r.options().visibility.name().into();
             json["bounds"] = format!("{:?}", args.bounds).to_lowercase().into();
         }
         if let Some(d) = diff {
@@ -233,6 +243,7 @@ impl Renderer {
                 device,
                 MeshSinglePassOptions {
                     visibility: match args.visibility {
+                        VisibilityArg::Auto => Visibility::best_exact(device),
                         VisibilityArg::Exact => Visibility::Exact,
                         VisibilityArg::Atomic => Visibility::ExactAtomic,
                         VisibilityArg::Fast => Visibility::Fast,
@@ -256,7 +267,9 @@ impl Renderer {
         target: &SpatialTarget,
     ) -> autostereo::Result<()> {
         match self {
-            Self::Baseline(r, MeshBaselineMethod::NPass) => r.encode(device, queue, encoder, mesh, frame, target),
+            Self::Baseline(r, MeshBaselineMethod::NPass) => {
+                r.encode(device, queue, encoder, mesh, frame, target)
+            }
             Self::Baseline(r, MeshBaselineMethod::SingleView) => {
                 r.encode_single_view(device, queue, encoder, mesh, frame, target)
             }

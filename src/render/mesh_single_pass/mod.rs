@@ -40,6 +40,28 @@ pub enum Visibility {
 }
 
 impl Visibility {
+    /// The fastest exact mode `device` supports: atomic where 64-bit atomics exist (measured
+    /// ~2× faster on lavapipe), else subpixel rasterisation.
+    pub fn best_exact(device: &wgpu::Device) -> Self {
+        if device
+            .features()
+            .contains(Visibility::ExactAtomic.required_features())
+        {
+            Visibility::ExactAtomic
+        } else {
+            Visibility::Exact
+        }
+    }
+
+    /// Name as the CLI spells it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Visibility::Exact => "exact",
+            Visibility::ExactAtomic => "atomic",
+            Visibility::Fast => "fast",
+        }
+    }
+
     /// Features the mode needs beyond the WebGPU defaults.
     pub fn required_features(self) -> wgpu::Features {
         match self {
@@ -129,14 +151,19 @@ impl MeshSinglePass {
         if target.size() != frame.size {
             return Err(Error::invalid(
                 "target",
-                format!("size {:?} differs from the frame's {:?}", target.size(), frame.size),
+                format!(
+                    "size {:?} differs from the frame's {:?}",
+                    target.size(),
+                    frame.size
+                ),
             ));
         }
         let spec = Specialization::of(frame);
         if !self.pipelines.contains_key(&spec) {
-            let built = crate::gpu::checked(device, "building the single-pass mesh pipelines", || {
-                pipelines::build(device, &self.layouts, self.options, spec)
-            })??;
+            let built =
+                crate::gpu::checked(device, "building the single-pass mesh pipelines", || {
+                    pipelines::build(device, &self.layouts, self.options, spec)
+                })??;
             self.pipelines.insert(spec, built);
         }
         let triangles = mesh.index_count / 3;
@@ -188,20 +215,26 @@ impl MeshSinglePass {
             ),
             Visibility::ExactAtomic => {
                 encoder.clear_buffer(s.keys_buffer(), 0, None);
-                (cleared(&target.view, frame.background), None, "mesh single pass (atomic visibility)")
+                (
+                    cleared(&target.view, frame.background),
+                    None,
+                    "mesh single pass (atomic visibility)",
+                )
             }
         };
         {
             let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
                 label: Some(label),
                 color_attachments: &[Some(color)],
-                depth_stencil_attachment: depth.map(|view| wgpu::RenderPassDepthStencilAttachment {
-                    view,
-                    depth_ops: Some(wgpu::Operations {
-                        load: wgpu::LoadOp::Clear(1.0),
-                        store: wgpu::StoreOp::Discard,
-                    }),
-                    stencil_ops: None,
+                depth_stencil_attachment: depth.map(|view| {
+                    wgpu::RenderPassDepthStencilAttachment {
+                        view,
+                        depth_ops: Some(wgpu::Operations {
+                            load: wgpu::LoadOp::Clear(1.0),
+                            store: wgpu::StoreOp::Discard,
+                        }),
+                        stencil_ops: None,
+                    }
                 }),
                 timestamp_writes: None,
                 occlusion_query_set: None,

@@ -27,7 +27,11 @@ pub(super) struct Layouts {
     pub triangle_ids: wgpu::BindGroupLayout,
 }
 
-fn storage(binding: u32, read_only: bool, stages: wgpu::ShaderStages) -> wgpu::BindGroupLayoutEntry {
+fn storage(
+    binding: u32,
+    read_only: bool,
+    stages: wgpu::ShaderStages,
+) -> wgpu::BindGroupLayoutEntry {
     wgpu::BindGroupLayoutEntry {
         binding,
         visibility: stages,
@@ -55,11 +59,21 @@ impl Layouts {
             frame: frame_bind_group_layout(device),
             mesh: layout(
                 "mesh + cover data",
-                &[storage(0, true, vf), storage(1, true, vf), storage(2, true, vf), storage(3, true, vf)],
+                &[
+                    storage(0, true, vf),
+                    storage(1, true, vf),
+                    storage(2, true, vf),
+                    storage(3, true, vf),
+                ],
             ),
             cover_compute: layout(
                 "mesh cover compute",
-                &[storage(0, true, cs), storage(1, true, cs), storage(2, false, cs), storage(3, false, cs)],
+                &[
+                    storage(0, true, cs),
+                    storage(1, true, cs),
+                    storage(2, false, cs),
+                    storage(3, false, cs),
+                ],
             ),
             keys_write: layout("nearest keys (write)", &[storage(0, false, fs)]),
             keys_read: layout("nearest keys (read)", &[storage(0, true, fs)]),
@@ -171,7 +185,11 @@ pub(super) fn build(
         )),
         vertex: wgpu::VertexState {
             module: &module,
-            entry_point: Some("vs_cover"),
+            entry_point: Some(if options.visibility == Visibility::Exact {
+                "vs_cover_flat"
+            } else {
+                "vs_cover"
+            }),
             compilation_options: compile(&constants),
             buffers: &[],
         },
@@ -195,8 +213,13 @@ pub(super) fn build(
     });
 
     let resolve_stage = match options.visibility {
-        Visibility::Exact => Some(("mesh_single_pass_subpixel_resolve.wgsl", &layouts.triangle_ids)),
-        Visibility::ExactAtomic => Some(("mesh_single_pass_atomic_resolve.wgsl", &layouts.keys_read)),
+        Visibility::Exact => Some((
+            "mesh_single_pass_subpixel_resolve.wgsl",
+            &layouts.triangle_ids,
+        )),
+        Visibility::ExactAtomic => {
+            Some(("mesh_single_pass_atomic_resolve.wgsl", &layouts.keys_read))
+        }
         Visibility::Fast => None,
     };
     let resolve = match resolve_stage {

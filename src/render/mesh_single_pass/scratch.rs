@@ -45,7 +45,13 @@ fn check(what: String, value: u64, limit: u64) -> Result<()> {
     Ok(())
 }
 
-fn texture(device: &wgpu::Device, label: &str, size: [u32; 2], format: wgpu::TextureFormat, usage: wgpu::TextureUsages) -> (wgpu::Texture, wgpu::TextureView) {
+fn texture(
+    device: &wgpu::Device,
+    label: &str,
+    size: [u32; 2],
+    format: wgpu::TextureFormat,
+    usage: wgpu::TextureUsages,
+) -> (wgpu::Texture, wgpu::TextureView) {
     let texture = device.create_texture(&wgpu::TextureDescriptor {
         label: Some(label),
         size: wgpu::Extent3d {
@@ -65,7 +71,8 @@ fn texture(device: &wgpu::Device, label: &str, size: [u32; 2], format: wgpu::Tex
 }
 
 fn stale(slot: &Option<(wgpu::Texture, wgpu::TextureView)>, size: [u32; 2]) -> bool {
-    slot.as_ref().is_none_or(|(t, _)| [t.width(), t.height()] != size)
+    slot.as_ref()
+        .is_none_or(|(t, _)| [t.width(), t.height()] != size)
 }
 
 impl Scratch {
@@ -84,7 +91,11 @@ impl Scratch {
             triangles * EYE_TRIANGLE_BYTES,
             limit,
         )?;
-        if self.rects.as_ref().is_none_or(|b| b.size() != triangles * RECT_BYTES) {
+        if self
+            .rects
+            .as_ref()
+            .is_none_or(|b| b.size() != triangles * RECT_BYTES)
+        {
             let buffer = |label, size| {
                 device.create_buffer(&wgpu::BufferDescriptor {
                     label: Some(label),
@@ -101,7 +112,13 @@ impl Scratch {
         match visibility {
             Visibility::Fast => {
                 if stale(&self.depth, frame.size) {
-                    self.depth = Some(texture(device, "single-pass depth", frame.size, DEPTH_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT));
+                    self.depth = Some(texture(
+                        device,
+                        "single-pass depth",
+                        frame.size,
+                        DEPTH_FORMAT,
+                        wgpu::TextureUsages::RENDER_ATTACHMENT,
+                    ));
                 }
             }
             Visibility::Exact => {
@@ -110,7 +127,13 @@ impl Scratch {
                 check(format!("subpixel target width ({k} × {w})"), wide[0], max)?;
                 let wide = [wide[0] as u32, h];
                 if stale(&self.depth, wide) {
-                    self.depth = Some(texture(device, "subpixel depth", wide, DEPTH_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT));
+                    self.depth = Some(texture(
+                        device,
+                        "subpixel depth",
+                        wide,
+                        DEPTH_FORMAT,
+                        wgpu::TextureUsages::RENDER_ATTACHMENT,
+                    ));
                 }
                 if stale(&self.triangle_ids, wide) {
                     self.triangle_ids = Some(texture(
@@ -118,7 +141,8 @@ impl Scratch {
                         "subpixel triangle ids",
                         wide,
                         TRIANGLE_ID_FORMAT,
-                        wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+                        wgpu::TextureUsages::RENDER_ATTACHMENT
+                            | wgpu::TextureUsages::TEXTURE_BINDING,
                     ));
                 }
             }
@@ -143,7 +167,11 @@ impl Scratch {
     }
 
     pub fn triangle_ids_view(&self) -> &wgpu::TextureView {
-        &self.triangle_ids.as_ref().expect("prepared for exact visibility").1
+        &self
+            .triangle_ids
+            .as_ref()
+            .expect("prepared for exact visibility")
+            .1
     }
 
     pub fn keys_buffer(&self) -> &wgpu::Buffer {
@@ -161,28 +189,32 @@ impl Scratch {
         let eye = self.eye_triangles.as_ref().expect("prepared");
         let rects = self.rects.as_ref().expect("prepared");
         let buffers = [&mesh.vertices, &mesh.indices, eye, rects];
-        let group = |label, layout: &wgpu::BindGroupLayout, resources: Vec<wgpu::BindingResource>| {
-            let entries: Vec<wgpu::BindGroupEntry> = resources
-                .into_iter()
-                .enumerate()
-                .map(|(i, resource)| wgpu::BindGroupEntry {
-                    binding: i as u32,
-                    resource,
+        let group =
+            |label, layout: &wgpu::BindGroupLayout, resources: Vec<wgpu::BindingResource>| {
+                let entries: Vec<wgpu::BindGroupEntry> = resources
+                    .into_iter()
+                    .enumerate()
+                    .map(|(i, resource)| wgpu::BindGroupEntry {
+                        binding: i as u32,
+                        resource,
+                    })
+                    .collect();
+                device.create_bind_group(&wgpu::BindGroupDescriptor {
+                    label: Some(label),
+                    layout,
+                    entries: &entries,
                 })
-                .collect();
-            device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some(label),
-                layout,
-                entries: &entries,
-            })
-        };
+            };
         let mesh_resources = || buffers.iter().map(|b| b.as_entire_binding()).collect();
         let keys = || self.keys_buffer().as_entire_binding();
         let (keys_write, visible) = match visibility {
             Visibility::Fast => (None, None),
             Visibility::Exact => {
                 let view = wgpu::BindingResource::TextureView(self.triangle_ids_view());
-                (None, Some(group("triangle ids", &layouts.triangle_ids, vec![view])))
+                (
+                    None,
+                    Some(group("triangle ids", &layouts.triangle_ids, vec![view])),
+                )
             }
             Visibility::ExactAtomic => (
                 Some(group("nearest keys", &layouts.keys_write, vec![keys()])),
@@ -191,7 +223,11 @@ impl Scratch {
         };
         Groups {
             mesh: group("mesh + cover data", &layouts.mesh, mesh_resources()),
-            cover_compute: group("mesh cover compute", &layouts.cover_compute, mesh_resources()),
+            cover_compute: group(
+                "mesh cover compute",
+                &layouts.cover_compute,
+                mesh_resources(),
+            ),
             keys_write,
             visible,
         }
