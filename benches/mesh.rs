@@ -1,0 +1,114 @@
+//! Meshes: single-pass (every visibility mode) vs N-pass vs single view, side by side in one
+//! process on one adapter. Full Stanford dragon (871k triangles) and res2 (203k), 512²,
+//! N = 8 (the paper's 8-view display) and N = 32 (a slanted display with the same lens).
+//! GPU time per frame from timestamp queries where the adapter has them.
+//!
+//! `data/fetch && cargo bench --bench mesh`   (report: `python3 docs/tools/bench_table.py mesh`)
+
+use std::path::Path;
+use std::time::Duration;
+
+use autostereo::camera::MultiViewCamera;
+use autostereo::display::Display;
+use autostereo::frame::Frame;
+use autostereo::gpu::GpuContext;
+use autostereo::mesh::{Mesh, MeshBuffers};
+use autostereo::render::{MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Visibility};
+use autostereo::target::SpatialTarget;
+use autostereo::timing::FrameTimer;
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+
+const SIZE: [u32; 2] = [512, 512];
+
+fn load(name: &str) -> Mesh {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("data/fetched")
+        .join(name);
+    Mesh::load_obj(&path)
+        .unwrap_or_else(|e| panic!("{e}\nrun data/fetch first to get the Stanford dragon"))
+}
+
+fn bench(c: &mut Criterion) {
+    let ctx = GpuContext::new(&Default::default()).expect("GPU adapter");
+    let (device, queue) = (&ctx.device, &ctx.queue);
+    let target = SpatialTarget::new(device, SIZE).unwrap();
+    let timer = FrameTimer::new(device, queue);
+    let mut baseline = MeshBaseline::new(device).unwrap();
+    let mut single_pass: Vec<(&str, MeshSinglePass)> =
+        [Visibility::ExactAtomic, Visibility::Exact, Visibility::Fast]
+            .into_iter()
+            .filter(|v| device.features().contains(v.required_features()))
+            .map(|visibility| {
+                let options = MeshSinglePassOptions {
+                    visibility,
+                    ..Default::default()
+                };
+                (
+                    visibility.name(),
+                    MeshSinglePass::new(device, options).unwrap(),
+                )
+            })
+            .collect();
+    for (mesh_name, file) in [
+        ("dragon", "dragon_vrip.obj"),
+        ("dragon-res2", "dragon_vrip_res2.obj"),
+    ] {
+        let mesh = load(file);
+        let buffers = MeshBuffers::new(device, &mesh).unwrap();
+        for views in [8u32, 32] {
+            let display = Display::parse(&format!("slanted:{views},8,2/3,7/6")).unwrap();
+            let camera = MultiViewCamera::framing(
+                mesh.bounds().unwrap(),
+                views,
+                None,
+                30f32.to_radians(),
+                1.0,
+            )
+            .unwrap();
+            let frame = Frame::new(camera, display, SIZE).unwrap();
+            let mut group = c.benchmark_group(format!("mesh/{mesh_name}/N{views}"));
+            group
+                .sample_size(10)
+                .warm_up_time(Duration::from_millis(1))
+                .measurement_time(Duration::from_secs(1));
+            for (name, renderer) in &mut single_pass {
+                group.bench_function(BenchmarkId::new("single-pass", *name), |b| {
+                    gpu_iter(b, &timer, device, queue, |e| {
+                        renderer.encode(device, queue, e, &buffers, &frame, &target)
+                    })
+                });
+            }
+            group.bench_function("n-pass", |b| {
+                gpu_iter(b, &timer, device, queue, |e| {
+                    baseline.encode(device, queue, e, &buffers, &frame, &target)
+                })
+            });
+            group.bench_function("single-view", |b| {
+                gpu_iter(b, &timer, device, queue, |e| {
+                    baseline.encode_single_view(device, queue, e, &buffers, &frame, &target)
+                })
+            });
+            group.finish();
+        }
+    }
+}
+
+/// Criterion iterations timed on the GPU (timestamps) rather than by the CPU clock.
+fn gpu_iter(
+    b: &mut criterion::Bencher,
+    timer: &FrameTimer,
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    mut encode: impl FnMut(&mut wgpu::CommandEncoder) -> autostereo::Result<()>,
+) {
+    b.iter_custom(|iters| {
+        let mut total_ms = 0.0;
+        for _ in 0..iters {
+            total_ms += timer.time_frame(device, queue, &mut encode).unwrap();
+        }
+        Duration::from_secs_f64(total_ms / 1e3)
+    })
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
