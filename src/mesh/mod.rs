@@ -3,6 +3,7 @@
 mod generate;
 mod gpu;
 mod obj;
+mod order;
 
 pub use gpu::{GpuVertex, MeshBuffers};
 

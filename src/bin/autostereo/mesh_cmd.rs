@@ -64,6 +64,9 @@ pub struct MeshArgs {
     /// Single-pass covering-quad bounds: exact (DESIGN §3) or the paper's printed formula.
     #[arg(long, value_enum, default_value = "exact")]
     bounds: BoundsArg,
+    /// Reorder triangles along a Morton curve before rendering (locality; every method).
+    #[arg(long)]
+    sort_triangles: bool,
     /// Also render N-pass and report psnr_db, max_abs_err, frac_off_2 against it.
     #[arg(long)]
     compare: bool,
@@ -130,10 +133,13 @@ pub fn run(args: MeshArgs) -> Result<()> {
         bail!("--frames must be at least 1");
     }
     let display = args.display.display()?;
-    let mesh = match &args.obj {
+    let mut mesh = match &args.obj {
         Some(path) => Mesh::load_obj(path)?,
         None => Mesh::torus_scene(),
     };
+    if args.sort_triangles {
+        mesh.sort_triangles_spatially();
+    }
     let bounds = mesh.bounds().context("the mesh has no vertices")?;
     let camera = args.camera.camera(bounds, display.views(), args.size)?;
     let frame = Frame::new(camera, display, args.size)?;
