@@ -34,21 +34,25 @@ fn bench(c: &mut Criterion) {
     let target = SpatialTarget::new(device, SIZE).unwrap();
     let timer = FrameTimer::new(device, queue);
     let mut baseline = MeshBaseline::new(device).unwrap();
-    let mut single_pass: Vec<(&str, MeshSinglePass)> =
-        [Visibility::ExactAtomic, Visibility::Exact, Visibility::Fast]
-            .into_iter()
-            .filter(|v| device.features().contains(v.required_features()))
-            .map(|visibility| {
-                let options = MeshSinglePassOptions {
-                    visibility,
-                    ..Default::default()
-                };
-                (
-                    visibility.name(),
-                    MeshSinglePass::new(device, options).unwrap(),
-                )
-            })
-            .collect();
+    let mut single_pass: Vec<(&str, MeshSinglePass)> = [
+        Visibility::Compute,
+        Visibility::ExactAtomic,
+        Visibility::Exact,
+        Visibility::Fast,
+    ]
+    .into_iter()
+    .filter(|v| device.features().contains(v.required_features()))
+    .map(|visibility| {
+        let options = MeshSinglePassOptions {
+            visibility,
+            ..Default::default()
+        };
+        (
+            visibility.name(),
+            MeshSinglePass::new(device, options).unwrap(),
+        )
+    })
+    .collect();
     for (mesh_name, file) in [
         ("dragon", "dragon_vrip.obj"),
         ("dragon-res2", "dragon_vrip_res2.obj"),

@@ -8,66 +8,39 @@ use std::collections::HashSet;
 
 use crate::error::{Error, Result};
 
+/// `(path, contents)` of a file under `wgsl/`.
+macro_rules! wgsl {
+    ($path:literal) => {
+        ($path, include_str!(concat!("../wgsl/", $path)))
+    };
+}
+
 /// Shared WGSL, by import path.
 const SHARED: &[(&str, &str)] = &[
-    (
-        "shared/camera.wgsl",
-        include_str!("../wgsl/shared/camera.wgsl"),
-    ),
-    ("shared/mask.wgsl", include_str!("../wgsl/shared/mask.wgsl")),
-    (
-        "shared/shading.wgsl",
-        include_str!("../wgsl/shared/shading.wgsl"),
-    ),
-    (
-        "shared/frame.wgsl",
-        include_str!("../wgsl/shared/frame.wgsl"),
-    ),
-    (
-        "shared/multiview.wgsl",
-        include_str!("../wgsl/shared/multiview.wgsl"),
-    ),
-    ("shared/ray.wgsl", include_str!("../wgsl/shared/ray.wgsl")),
-    (
-        "shared/mesh_data.wgsl",
-        include_str!("../wgsl/shared/mesh_data.wgsl"),
-    ),
-    (
-        "shared/cover_data.wgsl",
-        include_str!("../wgsl/shared/cover_data.wgsl"),
-    ),
-    (
-        "shared/cover.wgsl",
-        include_str!("../wgsl/shared/cover.wgsl"),
-    ),
+    wgsl!("shared/camera.wgsl"),
+    wgsl!("shared/mask.wgsl"),
+    wgsl!("shared/shading.wgsl"),
+    wgsl!("shared/frame.wgsl"),
+    wgsl!("shared/multiview.wgsl"),
+    wgsl!("shared/ray.wgsl"),
+    wgsl!("shared/mesh_data.wgsl"),
+    wgsl!("shared/cover_bounds.wgsl"),
+    wgsl!("shared/cover_data.wgsl"),
+    wgsl!("shared/cover.wgsl"),
 ];
 
 /// One WGSL file per pipeline stage, by file name.
 pub const STAGES: &[(&str, &str)] = &[
-    ("mask_image.wgsl", include_str!("../wgsl/mask_image.wgsl")),
-    ("mesh_view.wgsl", include_str!("../wgsl/mesh_view.wgsl")),
-    ("composite.wgsl", include_str!("../wgsl/composite.wgsl")),
-    ("mesh_cover.wgsl", include_str!("../wgsl/mesh_cover.wgsl")),
-    (
-        "mesh_single_pass_fast.wgsl",
-        include_str!("../wgsl/mesh_single_pass_fast.wgsl"),
-    ),
-    (
-        "mesh_single_pass_atomic.wgsl",
-        include_str!("../wgsl/mesh_single_pass_atomic.wgsl"),
-    ),
-    (
-        "mesh_single_pass_subpixel.wgsl",
-        include_str!("../wgsl/mesh_single_pass_subpixel.wgsl"),
-    ),
-    (
-        "mesh_single_pass_subpixel_resolve.wgsl",
-        include_str!("../wgsl/mesh_single_pass_subpixel_resolve.wgsl"),
-    ),
-    (
-        "mesh_single_pass_atomic_resolve.wgsl",
-        include_str!("../wgsl/mesh_single_pass_atomic_resolve.wgsl"),
-    ),
+    wgsl!("mask_image.wgsl"),
+    wgsl!("mesh_view.wgsl"),
+    wgsl!("composite.wgsl"),
+    wgsl!("mesh_cover.wgsl"),
+    wgsl!("mesh_single_pass_fast.wgsl"),
+    wgsl!("mesh_single_pass_subpixel.wgsl"),
+    wgsl!("mesh_single_pass_subpixel_resolve.wgsl"),
+    wgsl!("mesh_single_pass_atomic.wgsl"),
+    wgsl!("mesh_single_pass_atomic_resolve.wgsl"),
+    wgsl!("mesh_single_pass_compute.wgsl"),
 ];
 
 fn lookup(table: &[(&str, &'static str)], name: &str) -> Option<&'static str> {

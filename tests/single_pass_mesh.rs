@@ -17,7 +17,11 @@ use autostereo::target::SpatialTarget;
 use glam::{Mat4, Vec3};
 
 const SIZE: [u32; 2] = [160, 128];
-const EXACT: [Visibility; 2] = [Visibility::Exact, Visibility::ExactAtomic];
+const EXACT: [Visibility; 3] = [
+    Visibility::Exact,
+    Visibility::ExactAtomic,
+    Visibility::Compute,
+];
 
 fn display(spec: &str) -> Display {
     Display::parse(spec).unwrap()
@@ -148,7 +152,7 @@ fn far_geometry_needs_the_exact_bound() {
         &mesh,
         &frame,
         MeshSinglePassOptions {
-            visibility: Visibility::ExactAtomic,
+            visibility: Visibility::Compute,
             bounds: CoverBounds::Paper,
         },
     );
@@ -284,7 +288,12 @@ fn degenerate_triangles_add_nothing_and_nan_is_an_error() {
         base + 3,
     ]);
     let frame = Frame::new(framed(&clean, 8, 0.05, 1.0), display("hubner8"), SIZE).unwrap();
-    for visibility in [Visibility::Exact, Visibility::ExactAtomic, Visibility::Fast] {
+    for visibility in [
+        Visibility::Exact,
+        Visibility::ExactAtomic,
+        Visibility::Compute,
+        Visibility::Fast,
+    ] {
         let options = MeshSinglePassOptions {
             visibility,
             bounds: CoverBounds::Exact,

@@ -1,15 +1,11 @@
 // Covering quads (DESIGN §3), one compute invocation per triangle: eye-space vertices and the
-// NDC rectangle that covers the triangle's projections in all views. y from the centre
-// projection; x widened per vertex by vd·|1 − fd/d| (exact for the sheared frusta; the paper's
-// printed vd·fd/d under-covers geometry beyond 2·fd and is kept only as a measured option).
-// Vertices behind the near plane are clipped first, so a triangle crossing it gets the bounds of
-// its visible part. Computing this once per triangle (not once per quad corner) keeps the vertex
-// stage to one 16-byte load.
+// NDC rectangle that covers the triangle's projections in all views (shared/cover_bounds.wgsl).
+// Computing this once per triangle (not once per quad corner) keeps the vertex stage to one
+// 16-byte load.
 #import shared/frame.wgsl
 #import shared/multiview.wgsl
 #import shared/mesh_data.wgsl
-
-override PAPER_BOUNDS: bool = false;
+#import shared/cover_bounds.wgsl
 
 struct EyeTriangle {
     p0: vec4<f32>,
@@ -19,43 +15,6 @@ struct EyeTriangle {
 
 @group(1) @binding(2) var<storage, read_write> eye_triangles: array<EyeTriangle>;
 @group(1) @binding(3) var<storage, read_write> cover_rects: array<vec4<f32>>;
-
-struct Bounds {
-    lo: vec2<f32>,
-    hi: vec2<f32>,
-}
-
-fn extend(b: Bounds, q: vec3<f32>) -> Bounds {
-    let s = frame.camera.focal_distance / -q.z;
-    let centre = q.xy * s;
-    var spread = max_view_offset() * abs(1.0 - s);
-    if (PAPER_BOUNDS) {
-        spread = max_view_offset() * s;
-    }
-    return Bounds(
-        min(b.lo, vec2<f32>(centre.x - spread, centre.y)),
-        max(b.hi, vec2<f32>(centre.x + spread, centre.y)),
-    );
-}
-
-// Focal-plane bounds of the part of triangle p in front of the near plane.
-fn cover_bounds(p: array<vec3<f32>, 3>) -> Bounds {
-    let near = frame.camera.near;
-    var b = Bounds(vec2<f32>(3.0e38), vec2<f32>(-3.0e38));
-    for (var e = 0u; e < 3u; e++) {
-        let a = p[e];
-        let c = p[(e + 1u) % 3u];
-        let da = -a.z;
-        let dc = -c.z;
-        if (da >= near) {
-            b = extend(b, a);
-        }
-        if ((da >= near) != (dc >= near)) {
-            b = extend(b, mix(a, c, (near - da) / (dc - da)));
-        }
-    }
-    return b;
-}
 
 const WORKGROUP: u32 = 64u;
 // Padding of the covering rectangles, pixels: a sliver where fragments sample pixel centres;

@@ -34,6 +34,8 @@ pub enum VisibilityArg {
     Exact,
     /// Per-subpixel depth with 64-bit atomics.
     Atomic,
+    /// Software (compute-pass) rasterisation of the covering rectangles, 64-bit atomics.
+    Compute,
     /// The paper's one depth per pixel (approximate).
     Fast,
 }
@@ -252,6 +254,7 @@ impl Renderer {
                         VisibilityArg::Auto => Visibility::best_exact(device),
                         VisibilityArg::Exact => Visibility::Exact,
                         VisibilityArg::Atomic => Visibility::ExactAtomic,
+                        VisibilityArg::Compute => Visibility::Compute,
                         VisibilityArg::Fast => Visibility::Fast,
                     },
                     bounds: match args.bounds {

@@ -11,6 +11,8 @@
 //!   needs no optional feature.
 //! - `ExactAtomic`: per-pixel fragments test the K rays and keep the nearest (depth, triangle)
 //!   per subpixel with 64-bit atomics. Also matches N-pass; needs `SHADER_INT64_ATOMIC_MIN_MAX`.
+//! - `Compute`: the rectangles rasterised in software by a compute pass, one invocation per
+//!   triangle, same 64-bit atomics; no hardware rasteriser involved. Matches N-pass.
 //! - `Fast`: the paper's — one depth per fragment (nearest hit subpixel) through the hardware
 //!   depth test; dual-source blending keeps the subpixels a triangle misses. Approximate.
 
@@ -35,6 +37,8 @@ pub enum Visibility {
     Exact,
     /// Per-pixel fragments, per-subpixel 64-bit atomic depth + deferred shading. Exact.
     ExactAtomic,
+    /// Covering rectangles rasterised by a compute pass, 64-bit atomic depth. Exact.
+    Compute,
     /// The paper's one depth per fragment; approximate where triangles split a pixel.
     Fast,
 }
@@ -58,6 +62,7 @@ impl Visibility {
         match self {
             Visibility::Exact => "exact",
             Visibility::ExactAtomic => "atomic",
+            Visibility::Compute => "compute",
             Visibility::Fast => "fast",
         }
     }
@@ -66,7 +71,7 @@ impl Visibility {
     pub fn required_features(self) -> wgpu::Features {
         match self {
             Visibility::Exact => wgpu::Features::empty(),
-            Visibility::ExactAtomic => {
+            Visibility::ExactAtomic | Visibility::Compute => {
                 wgpu::Features::SHADER_INT64 | wgpu::Features::SHADER_INT64_ATOMIC_MIN_MAX
             }
             Visibility::Fast => wgpu::Features::DUAL_SOURCE_BLENDING,
@@ -175,54 +180,56 @@ impl MeshSinglePass {
             .scratch
             .bind_groups(device, &self.layouts, self.options.visibility, mesh);
 
+        let s = &self.scratch;
+        if let Some(keys) = s.keys_buffer() {
+            encoder.clear_buffer(keys, 0, None);
+        }
         {
             let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-                label: Some("mesh cover"),
+                label: Some(pipelines.compute_label),
                 timestamp_writes: None,
             });
-            pass.set_pipeline(&pipelines.cover);
+            pass.set_pipeline(&pipelines.compute);
             pass.set_bind_group(0, &self.frame.bind_group, &[]);
             pass.set_bind_group(1, &groups.cover_compute, &[]);
+            if let Some(keys) = &groups.keys_write {
+                pass.set_bind_group(2, keys, &[]);
+            }
             let [x, y] = dispatch_2d(device, triangles.div_ceil(pipelines::COVER_WORKGROUP));
             pass.dispatch_workgroups(x, y, 1);
         }
-
-        let s = &self.scratch;
-        let (color, depth, label) = match self.options.visibility {
-            Visibility::Fast => (
-                cleared(&target.view, frame.background),
-                s.depth_view(),
-                "mesh single pass (fast)",
-            ),
-            Visibility::Exact => (
-                wgpu::RenderPassColorAttachment {
-                    view: s.triangle_ids_view(),
-                    depth_slice: None,
-                    resolve_target: None,
-                    ops: wgpu::Operations {
-                        // NO_TRIANGLE in mesh_single_pass_subpixel_resolve.wgsl.
-                        load: wgpu::LoadOp::Clear(wgpu::Color {
-                            r: u32::MAX as f64,
-                            g: 0.0,
-                            b: 0.0,
-                            a: 0.0,
-                        }),
-                        store: wgpu::StoreOp::Store,
+        if let Some(geometry) = &pipelines.geometry {
+            let (color, depth, label) = match self.options.visibility {
+                Visibility::Exact => (
+                    wgpu::RenderPassColorAttachment {
+                        view: s.triangle_ids_view(),
+                        depth_slice: None,
+                        resolve_target: None,
+                        ops: wgpu::Operations {
+                            // NO_TRIANGLE in mesh_single_pass_subpixel_resolve.wgsl.
+                            load: wgpu::LoadOp::Clear(wgpu::Color {
+                                r: u32::MAX as f64,
+                                g: 0.0,
+                                b: 0.0,
+                                a: 0.0,
+                            }),
+                            store: wgpu::StoreOp::Store,
+                        },
                     },
-                },
-                s.depth_view(),
-                "mesh single pass (subpixel visibility)",
-            ),
-            Visibility::ExactAtomic => {
-                encoder.clear_buffer(s.keys_buffer(), 0, None);
-                (
+                    s.depth_view(),
+                    "mesh single pass (subpixel visibility)",
+                ),
+                Visibility::ExactAtomic => (
                     cleared(&target.view, frame.background),
                     None,
                     "mesh single pass (atomic visibility)",
-                )
-            }
-        };
-        {
+                ),
+                _ => (
+                    cleared(&target.view, frame.background),
+                    s.depth_view(),
+                    "mesh single pass (fast)",
+                ),
+            };
             let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
                 label: Some(label),
                 color_attachments: &[Some(color)],
@@ -240,7 +247,7 @@ impl MeshSinglePass {
                 occlusion_query_set: None,
                 multiview_mask: None,
             });
-            pass.set_pipeline(&pipelines.geometry);
+            pass.set_pipeline(geometry);
             pass.set_bind_group(0, &self.frame.bind_group, &[]);
             pass.set_bind_group(1, &groups.mesh, &[]);
             if let Some(keys) = &groups.keys_write {

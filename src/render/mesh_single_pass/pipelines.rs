@@ -75,7 +75,10 @@ impl Layouts {
                     storage(3, false, cs),
                 ],
             ),
-            keys_write: layout("nearest keys (write)", &[storage(0, false, fs)]),
+            keys_write: layout(
+                "nearest keys (write)",
+                &[storage(0, false, fs | wgpu::ShaderStages::COMPUTE)],
+            ),
             keys_read: layout("nearest keys (read)", &[storage(0, true, fs)]),
             triangle_ids: layout(
                 "subpixel triangle ids",
@@ -95,14 +98,19 @@ impl Layouts {
 }
 
 pub(super) struct Pipelines {
-    pub cover: wgpu::ComputePipeline,
-    pub geometry: wgpu::RenderPipeline,
+    /// The per-triangle compute pass: covering rectangles, or (compute visibility) the whole
+    /// software rasterisation.
+    pub compute: wgpu::ComputePipeline,
+    pub compute_label: &'static str,
+    /// The hardware geometry pass (none for compute visibility).
+    pub geometry: Option<wgpu::RenderPipeline>,
     pub resolve: Option<wgpu::RenderPipeline>,
 }
 
 /// The stage files and the colour target of each visibility mode's geometry pass.
-fn geometry_stage(visibility: Visibility) -> (&'static str, wgpu::ColorTargetState, bool) {
-    match visibility {
+fn geometry_stage(visibility: Visibility) -> Option<(&'static str, wgpu::ColorTargetState, bool)> {
+    Some(match visibility {
+        Visibility::Compute => return None,
         Visibility::Exact => (
             "mesh_single_pass_subpixel.wgsl",
             TRIANGLE_ID_FORMAT.into(),
@@ -135,7 +143,7 @@ fn geometry_stage(visibility: Visibility) -> (&'static str, wgpu::ColorTargetSta
             },
             true,
         ),
-    }
+    })
 }
 
 pub(super) fn build(
@@ -148,6 +156,7 @@ pub(super) fn build(
     let subpixel_samples = options.visibility == Visibility::Exact && spec.views_per_pixel > 1;
     let padding = if subpixel_samples { 0.5 } else { 1.0 / 16.0 };
     let cover_constants = spec.constants(&[("PAPER_BOUNDS", paper), ("COVER_PADDING_PX", padding)]);
+    let compute_constants = spec.constants(&[("PAPER_BOUNDS", paper)]);
     let constants = spec.constants(&[]);
     let compile = |constants| wgpu::PipelineCompilationOptions {
         constants,
@@ -161,63 +170,87 @@ pub(super) fn build(
         })
     };
 
-    let cover_module = crate::shader::module(device, "mesh_cover.wgsl")?;
-    let cover = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-        label: Some("mesh cover"),
+    let compute_stage = if options.visibility == Visibility::Compute {
+        "mesh_single_pass_compute.wgsl"
+    } else {
+        "mesh_cover.wgsl"
+    };
+    let keys_write = matches!(
+        options.visibility,
+        Visibility::ExactAtomic | Visibility::Compute
+    )
+    .then_some(&layouts.keys_write);
+    let compute_keys = (options.visibility == Visibility::Compute).then_some(&layouts.keys_write);
+    let compute = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+        label: Some(compute_stage),
         layout: Some(&pipeline_layout(
-            "mesh cover",
-            &[Some(&layouts.frame), Some(&layouts.cover_compute)],
+            compute_stage,
+            &[
+                Some(&layouts.frame),
+                Some(&layouts.cover_compute),
+                compute_keys,
+            ],
         )),
-        module: &cover_module,
+        module: &crate::shader::module(device, compute_stage)?,
         entry_point: Some("cs_main"),
-        compilation_options: compile(&cover_constants),
+        compilation_options: compile(if options.visibility == Visibility::Compute {
+            &compute_constants
+        } else {
+            &cover_constants
+        }),
         cache: None,
     });
 
-    let (stage, target, depth_test) = geometry_stage(options.visibility);
-    let module = crate::shader::module(device, stage)?;
-    let keys_write = (options.visibility == Visibility::ExactAtomic).then_some(&layouts.keys_write);
-    let geometry = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some(stage),
-        layout: Some(&pipeline_layout(
-            stage,
-            &[Some(&layouts.frame), Some(&layouts.mesh), keys_write],
-        )),
-        vertex: wgpu::VertexState {
-            module: &module,
-            entry_point: Some(if options.visibility == Visibility::Exact {
-                "vs_cover_flat"
-            } else {
-                "vs_cover"
-            }),
-            compilation_options: compile(&constants),
-            buffers: &[],
-        },
-        primitive: wgpu::PrimitiveState::default(),
-        depth_stencil: depth_test.then(|| wgpu::DepthStencilState {
-            format: DEPTH_FORMAT,
-            depth_write_enabled: Some(true),
-            depth_compare: Some(wgpu::CompareFunction::Less),
-            stencil: Default::default(),
-            bias: Default::default(),
-        }),
-        multisample: Default::default(),
-        fragment: Some(wgpu::FragmentState {
-            module: &module,
-            entry_point: Some("fs_main"),
-            compilation_options: compile(&constants),
-            targets: &[Some(target)],
-        }),
-        multiview_mask: None,
-        cache: None,
-    });
+    let geometry = match geometry_stage(options.visibility) {
+        None => None,
+        Some((stage, target, depth_test)) => {
+            let module = crate::shader::module(device, stage)?;
+            Some(
+                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                    label: Some(stage),
+                    layout: Some(&pipeline_layout(
+                        stage,
+                        &[Some(&layouts.frame), Some(&layouts.mesh), keys_write],
+                    )),
+                    vertex: wgpu::VertexState {
+                        module: &module,
+                        // Subpixel fragments are many per triangle: flat varyings beat loads there.
+                        entry_point: Some(if options.visibility == Visibility::Exact {
+                            "vs_cover_flat"
+                        } else {
+                            "vs_cover"
+                        }),
+                        compilation_options: compile(&constants),
+                        buffers: &[],
+                    },
+                    primitive: wgpu::PrimitiveState::default(),
+                    depth_stencil: depth_test.then(|| wgpu::DepthStencilState {
+                        format: DEPTH_FORMAT,
+                        depth_write_enabled: Some(true),
+                        depth_compare: Some(wgpu::CompareFunction::Less),
+                        stencil: Default::default(),
+                        bias: Default::default(),
+                    }),
+                    multisample: Default::default(),
+                    fragment: Some(wgpu::FragmentState {
+                        module: &module,
+                        entry_point: Some("fs_main"),
+                        compilation_options: compile(&constants),
+                        targets: &[Some(target)],
+                    }),
+                    multiview_mask: None,
+                    cache: None,
+                }),
+            )
+        }
+    };
 
     let resolve_stage = match options.visibility {
         Visibility::Exact => Some((
             "mesh_single_pass_subpixel_resolve.wgsl",
             &layouts.triangle_ids,
         )),
-        Visibility::ExactAtomic => {
+        Visibility::ExactAtomic | Visibility::Compute => {
             Some(("mesh_single_pass_atomic_resolve.wgsl", &layouts.keys_read))
         }
         Visibility::Fast => None,
@@ -234,7 +267,8 @@ pub(super) fn build(
         None => None,
     };
     Ok(Pipelines {
-        cover,
+        compute,
+        compute_label: compute_stage,
         geometry,
         resolve,
     })

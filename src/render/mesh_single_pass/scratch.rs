@@ -146,7 +146,7 @@ impl Scratch {
                     ));
                 }
             }
-            Visibility::ExactAtomic => {
+            Visibility::ExactAtomic | Visibility::Compute => {
                 let bytes = w as u64 * h as u64 * k as u64 * KEY_BYTES;
                 check(format!("nearest-hit key bytes for {w}x{h}"), bytes, limit)?;
                 if self.keys.as_ref().is_none_or(|b| b.size() != bytes) {
@@ -174,8 +174,8 @@ impl Scratch {
             .1
     }
 
-    pub fn keys_buffer(&self) -> &wgpu::Buffer {
-        self.keys.as_ref().expect("prepared for atomic visibility")
+    pub fn keys_buffer(&self) -> Option<&wgpu::Buffer> {
+        self.keys.as_ref()
     }
 
     /// Bind groups for this frame (cheap to create; the buffers behind them are cached).
@@ -206,7 +206,12 @@ impl Scratch {
                 })
             };
         let mesh_resources = || buffers.iter().map(|b| b.as_entire_binding()).collect();
-        let keys = || self.keys_buffer().as_entire_binding();
+        let keys = || {
+            self.keys
+                .as_ref()
+                .expect("prepared for atomic visibility")
+                .as_entire_binding()
+        };
         let (keys_write, visible) = match visibility {
             Visibility::Fast => (None, None),
             Visibility::Exact => {
@@ -216,7 +221,7 @@ impl Scratch {
                     Some(group("triangle ids", &layouts.triangle_ids, vec![view])),
                 )
             }
-            Visibility::ExactAtomic => (
+            Visibility::ExactAtomic | Visibility::Compute => (
                 Some(group("nearest keys", &layouts.keys_write, vec![keys()])),
                 Some(group("nearest keys", &layouts.keys_read, vec![keys()])),
             ),
