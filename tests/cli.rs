@@ -1,0 +1,81 @@
+//! The CLI contract: the main mesh job, `--json` fields, `--compare`, `mask`, `views`.
+
+use std::path::PathBuf;
+use std::process::Command;
+
+fn run(args: &[&str]) -> String {
+    let out = Command::new(env!("CARGO_BIN_EXE_autostereo"))
+        .args(args)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{args:?} failed: {stderr}");
+    String::from_utf8(out.stdout).unwrap()
+}
+
+fn out_path(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/test-output");
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name)
+}
+
+#[test]
+fn mesh_json_reports_the_contract_fields_and_compares_with_npass() {
+    let png = out_path("cli_mesh.png");
+    let stdout = run(&[
+        "mesh", "--size", "96x64", "--frames", "2", "--json", "--compare", "--out", png.to_str().unwrap(),
+    ]);
+    let json: serde_json::Value = serde_json::from_str(stdout.trim()).unwrap();
+    assert_eq!(json["method"], "single-pass");
+    assert_eq!(json["views"], 8);
+    assert_eq!(json["size"], serde_json::json!([96, 64]));
+    assert!(json["adapter"].as_str().unwrap().len() > 3);
+    assert!(json["ms"].as_f64().unwrap() > 0.0);
+    assert!(json["frac_off_2"].as_f64().unwrap() <= 0.001, "{json}");
+    assert!(json["psnr_db"].as_f64().unwrap() > 40.0, "{json}");
+    let image = image::open(&png).unwrap();
+    assert_eq!((image.width(), image.height()), (96, 64));
+}
+
+#[test]
+fn every_method_and_visibility_runs() {
+    for args in [
+        vec!["--method", "n-pass"],
+        vec!["--method", "single-view"],
+        vec!["--visibility", "exact"],
+        vec!["--visibility", "atomic"],
+        vec!["--visibility", "compute"],
+        vec!["--visibility", "fast"],
+        vec!["--bounds", "paper"],
+    ] {
+        let mut all = vec!["mesh", "--size", "48x40", "--json", "--display", "lenticular:4"];
+        all.extend(args);
+        let json: serde_json::Value = serde_json::from_str(run(&all).trim()).unwrap();
+        assert_eq!(json["views_per_pixel"], 1);
+    }
+}
+
+#[test]
+fn mask_cpu_and_gpu_images_agree_and_views_extracts() {
+    let cpu = out_path("cli_mask_cpu.png");
+    let gpu = out_path("cli_mask_gpu.png");
+    for (path, extra) in [(&cpu, None), (&gpu, Some("--gpu"))] {
+        let mut args = vec!["mask", "--display", "slanted:5,4.5,-1/3,0.7", "--size", "64x48", "--origin", "3,4"];
+        args.extend(extra);
+        args.extend(["--out", path.to_str().unwrap()]);
+        run(&args);
+    }
+    let (a, b) = (image::open(&cpu).unwrap().to_rgb8(), image::open(&gpu).unwrap().to_rgb8());
+    assert_eq!(a, b);
+    assert!(a.pixels().all(|p| p.0.iter().all(|&v| v < 5)));
+    let spatial = out_path("cli_spatial.png");
+    run(&["mesh", "--size", "64x48", "--out", spatial.to_str().unwrap()]);
+    for extra in [["--view", "3"], ["--anaglyph", "2,5"]] {
+        let out = out_path("cli_view.png");
+        let mut args = vec!["views", spatial.to_str().unwrap(), "--display", "hubner8"];
+        args.extend(extra);
+        args.extend(["--out", out.to_str().unwrap()]);
+        run(&args);
+        assert_eq!(image::open(&out).unwrap().width(), 64);
+    }
+}
