@@ -85,10 +85,13 @@ impl RgbImage {
     }
 }
 
+/// PSNR reported for identical images (JSON has no infinity).
+pub const PSNR_IDENTICAL_DB: f64 = 1000.0;
+
 /// How far an image is from a reference, over all subpixels (0–255 scale).
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct ImageDiff {
-    /// Peak signal-to-noise ratio in dB (infinite when identical).
+    /// Peak signal-to-noise ratio in dB ([`PSNR_IDENTICAL_DB`] when identical).
     pub psnr_db: f64,
     /// Largest absolute subpixel difference.
     pub max_abs_err: u8,
@@ -120,7 +123,7 @@ pub fn compare(image: &RgbImage, reference: &RgbImage) -> Result<ImageDiff> {
     let mse = squared as f64 / n;
     Ok(ImageDiff {
         psnr_db: if mse == 0.0 {
-            f64::INFINITY
+            PSNR_IDENTICAL_DB
         } else {
             10.0 * (255.0f64 * 255.0 / mse).log10()
         },

@@ -183,7 +183,8 @@ fn cli_reports_bad_input_without_panicking() {
             ],
             "views",
         ),
-        (vec!["mesh", "--method", "single-pass"], "not implemented"),
+        (vec!["mesh", "--frames", "0"], "at least 1"),
+        (vec!["mesh", "--visibility", "bogus"], "invalid value"),
         (
             vec!["views", "nonexistent.png", "--view", "0", "--out", out],
             "nonexistent.png",

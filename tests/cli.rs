@@ -23,7 +23,15 @@ fn out_path(name: &str) -> PathBuf {
 fn mesh_json_reports_the_contract_fields_and_compares_with_npass() {
     let png = out_path("cli_mesh.png");
     let stdout = run(&[
-        "mesh", "--size", "96x64", "--frames", "2", "--json", "--compare", "--out", png.to_str().unwrap(),
+        "mesh",
+        "--size",
+        "96x64",
+        "--frames",
+        "2",
+        "--json",
+        "--compare",
+        "--out",
+        png.to_str().unwrap(),
     ]);
     let json: serde_json::Value = serde_json::from_str(stdout.trim()).unwrap();
     assert_eq!(json["method"], "single-pass");
@@ -48,7 +56,14 @@ fn every_method_and_visibility_runs() {
         vec!["--visibility", "fast"],
         vec!["--bounds", "paper"],
     ] {
-        let mut all = vec!["mesh", "--size", "48x40", "--json", "--display", "lenticular:4"];
+        let mut all = vec![
+            "mesh",
+            "--size",
+            "48x40",
+            "--json",
+            "--display",
+            "lenticular:4",
+        ];
         all.extend(args);
         let json: serde_json::Value = serde_json::from_str(run(&all).trim()).unwrap();
         assert_eq!(json["views_per_pixel"], 1);
@@ -60,16 +75,33 @@ fn mask_cpu_and_gpu_images_agree_and_views_extracts() {
     let cpu = out_path("cli_mask_cpu.png");
     let gpu = out_path("cli_mask_gpu.png");
     for (path, extra) in [(&cpu, None), (&gpu, Some("--gpu"))] {
-        let mut args = vec!["mask", "--display", "slanted:5,4.5,-1/3,0.7", "--size", "64x48", "--origin", "3,4"];
+        let mut args = vec![
+            "mask",
+            "--display",
+            "slanted:5,4.5,-1/3,0.7",
+            "--size",
+            "64x48",
+            "--origin",
+            "3,4",
+        ];
         args.extend(extra);
         args.extend(["--out", path.to_str().unwrap()]);
         run(&args);
     }
-    let (a, b) = (image::open(&cpu).unwrap().to_rgb8(), image::open(&gpu).unwrap().to_rgb8());
+    let (a, b) = (
+        image::open(&cpu).unwrap().to_rgb8(),
+        image::open(&gpu).unwrap().to_rgb8(),
+    );
     assert_eq!(a, b);
     assert!(a.pixels().all(|p| p.0.iter().all(|&v| v < 5)));
     let spatial = out_path("cli_spatial.png");
-    run(&["mesh", "--size", "64x48", "--out", spatial.to_str().unwrap()]);
+    run(&[
+        "mesh",
+        "--size",
+        "64x48",
+        "--out",
+        spatial.to_str().unwrap(),
+    ]);
     for extra in [["--view", "3"], ["--anaglyph", "2,5"]] {
         let out = out_path("cli_view.png");
         let mut args = vec!["views", spatial.to_str().unwrap(), "--display", "hubner8"];

@@ -205,7 +205,7 @@ pub fn run(args: MeshArgs) -> Result<()> {
             json["bounds"] = format!("{:?}", args.bounds).to_lowercase().into();
         }
         if let Some(d) = diff {
-            json["psnr_db"] = serde_json::to_value(d.psnr_db).unwrap_or(serde_json::Value::Null);
+            json["psnr_db"] = d.psnr_db.into();
             json["max_abs_err"] = d.max_abs_err.into();
             json["frac_off_2"] = d.frac_off_2.into();
         }
