@@ -13,7 +13,10 @@ use autostereo::display::Display;
 use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::mesh::{Mesh, MeshBuffers};
-use autostereo::render::{MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Visibility};
+use autostereo::render::{
+    MeshBaseline, MeshBaselineMethod, MeshRenderer, MeshSinglePass, MeshSinglePassOptions,
+    Visibility,
+};
 use autostereo::target::SpatialTarget;
 use autostereo::timing::FrameTimer;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
@@ -33,7 +36,8 @@ fn bench(c: &mut Criterion) {
     let (device, queue) = (&ctx.device, &ctx.queue);
     let target = SpatialTarget::new(device, SIZE).unwrap();
     let timer = FrameTimer::new(device, queue);
-    let mut baseline = MeshBaseline::new(device).unwrap();
+    let mut npass = MeshBaseline::new(device, MeshBaselineMethod::NPass).unwrap();
+    let mut single_view = MeshBaseline::new(device, MeshBaselineMethod::SingleView).unwrap();
     let mut single_pass: Vec<(&str, MeshSinglePass)> = [
         Visibility::Compute,
         Visibility::ExactAtomic,
@@ -84,12 +88,12 @@ fn bench(c: &mut Criterion) {
             }
             group.bench_function("n-pass", |b| {
                 gpu_iter(b, &timer, device, queue, |e| {
-                    baseline.encode(device, queue, e, &buffers, &frame, &target)
+                    npass.encode(device, queue, e, &buffers, &frame, &target)
                 })
             });
             group.bench_function("single-view", |b| {
                 gpu_iter(b, &timer, device, queue, |e| {
-                    baseline.encode_single_view(device, queue, e, &buffers, &frame, &target)
+                    single_view.encode(device, queue, e, &buffers, &frame, &target)
                 })
             });
             group.finish();

@@ -9,7 +9,7 @@ use autostereo::display::Display;
 use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::mesh::{Mesh, MeshBuffers};
-use autostereo::render::{MeshBaseline, MeshBaselineMethod};
+use autostereo::render::{MeshBaseline, MeshBaselineMethod, MeshRenderer};
 use autostereo::target::SpatialTarget;
 use autostereo::views::extract_view;
 
@@ -33,15 +33,8 @@ fn main() -> Result<()> {
     // GPU resources borrowed from the caller's device.
     let buffers = MeshBuffers::new(&ctx.device, &mesh)?;
     let target = SpatialTarget::new(&ctx.device, size)?;
-    let mut renderer = MeshBaseline::new(&ctx.device)?;
-    renderer.render(
-        &ctx.device,
-        &ctx.queue,
-        &buffers,
-        &frame,
-        MeshBaselineMethod::NPass,
-        &target,
-    )?;
+    let mut renderer = MeshBaseline::new(&ctx.device, MeshBaselineMethod::NPass)?;
+    renderer.render(&ctx.device, &ctx.queue, &buffers, &frame, &target)?;
 
     let spatial = target.read(&ctx.device, &ctx.queue)?;
     spatial.save_png(out.as_ref())?;

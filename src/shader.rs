@@ -24,9 +24,11 @@ const SHARED: &[(&str, &str)] = &[
     wgsl!("shared/multiview.wgsl"),
     wgsl!("shared/ray.wgsl"),
     wgsl!("shared/mesh_data.wgsl"),
+    wgsl!("shared/eye_triangle.wgsl"),
     wgsl!("shared/cover_bounds.wgsl"),
     wgsl!("shared/cover_data.wgsl"),
     wgsl!("shared/cover.wgsl"),
+    wgsl!("shared/resolve.wgsl"),
 ];
 
 /// One WGSL file per pipeline stage, by file name.
@@ -128,6 +130,32 @@ mod tests {
             if let Err(e) = validate(name) {
                 panic!("{e}");
             }
+        }
+    }
+
+    /// Every file under wgsl/ is registered, so none escapes naga validation.
+    #[test]
+    fn every_wgsl_file_is_registered() {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("wgsl");
+        let mut on_disk = Vec::new();
+        for dir in [root.clone(), root.join("shared")] {
+            for entry in std::fs::read_dir(&dir).unwrap() {
+                let path = entry.unwrap().path();
+                if path.extension().is_some_and(|e| e == "wgsl") {
+                    let rel = path
+                        .strip_prefix(&root)
+                        .unwrap()
+                        .to_string_lossy()
+                        .replace('\\', "/");
+                    on_disk.push(rel);
+                }
+            }
+        }
+        for file in on_disk {
+            assert!(
+                SHARED.iter().chain(STAGES).any(|(name, _)| *name == file),
+                "wgsl/{file} is not listed in src/shader.rs"
+            );
         }
     }
 

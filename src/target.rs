@@ -4,6 +4,7 @@ use crate::error::Result;
 use crate::gpu::check_size_2d;
 use crate::image_io::RgbImage;
 use crate::readback::read_texture_rgba8;
+use crate::render::texture::texture_2d;
 
 /// Format of every spatial image and per-view layer: plain (linear) 8-bit RGBA.
 pub const SPATIAL_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
@@ -20,24 +21,16 @@ impl SpatialTarget {
     /// Allocate a `size` target after checking the device limits.
     pub fn new(device: &wgpu::Device, size: [u32; 2]) -> Result<Self> {
         check_size_2d(device, size[0], size[1])?;
-        let texture = device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("spatial image"),
-            size: wgpu::Extent3d {
-                width: size[0],
-                height: size[1],
-                depth_or_array_layers: 1,
-            },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: SPATIAL_FORMAT,
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT
+        let (texture, view) = texture_2d(
+            device,
+            "spatial image",
+            size,
+            SPATIAL_FORMAT,
+            wgpu::TextureUsages::RENDER_ATTACHMENT
                 | wgpu::TextureUsages::STORAGE_BINDING
                 | wgpu::TextureUsages::TEXTURE_BINDING
                 | wgpu::TextureUsages::COPY_SRC,
-            view_formats: &[],
-        });
-        let view = texture.create_view(&Default::default());
+        );
         Ok(Self { texture, view })
     }
 

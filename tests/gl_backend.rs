@@ -9,22 +9,15 @@ use autostereo::frame::Frame;
 use autostereo::gpu::{GpuContext, GpuOptions};
 use autostereo::image_io::{compare, RgbImage};
 use autostereo::mesh::{Mesh, MeshBuffers};
-use autostereo::render::{MaskImageRenderer, MeshBaseline, MeshBaselineMethod};
+use autostereo::render::{MaskImageRenderer, MeshBaseline, MeshBaselineMethod, MeshRenderer};
 use autostereo::target::SpatialTarget;
 
 fn render_npass(ctx: &GpuContext, frame: &Frame, mesh: &Mesh) -> RgbImage {
     let buffers = MeshBuffers::new(&ctx.device, mesh).unwrap();
     let target = SpatialTarget::new(&ctx.device, frame.size).unwrap();
-    let mut renderer = MeshBaseline::new(&ctx.device).unwrap();
+    let mut renderer = MeshBaseline::new(&ctx.device, MeshBaselineMethod::NPass).unwrap();
     renderer
-        .render(
-            &ctx.device,
-            &ctx.queue,
-            &buffers,
-            frame,
-            MeshBaselineMethod::NPass,
-            &target,
-        )
+        .render(&ctx.device, &ctx.queue, &buffers, frame, &target)
         .unwrap();
     target.read(&ctx.device, &ctx.queue).unwrap()
 }

@@ -9,7 +9,7 @@ use autostereo::frame::Frame;
 use autostereo::image_io::RgbImage;
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::readback::read_texture_rgba8;
-use autostereo::render::{MeshBaseline, MeshBaselineMethod};
+use autostereo::render::{MeshBaseline, MeshBaselineMethod, MeshRenderer};
 use autostereo::target::SpatialTarget;
 use glam::{Mat4, Vec3};
 
@@ -54,12 +54,16 @@ fn frame(views: u32, separation: f32) -> Frame {
     Frame::new(camera(views, separation), display, SIZE).unwrap()
 }
 
-fn render(frame: &Frame, method: MeshBaselineMethod, renderer: &mut MeshBaseline) -> RgbImage {
+fn npass() -> MeshBaseline {
+    MeshBaseline::new(&common::gpu().device, MeshBaselineMethod::NPass).unwrap()
+}
+
+fn render(frame: &Frame, renderer: &mut MeshBaseline) -> RgbImage {
     let ctx = common::gpu();
     let buffers = MeshBuffers::new(&ctx.device, &scene()).unwrap();
     let target = SpatialTarget::new(&ctx.device, frame.size).unwrap();
     renderer
-        .render(&ctx.device, &ctx.queue, &buffers, frame, method, &target)
+        .render(&ctx.device, &ctx.queue, &buffers, frame, &target)
         .unwrap();
     target.read(&ctx.device, &ctx.queue).unwrap()
 }
@@ -85,8 +89,8 @@ fn centroid_x(image: &RgbImage, c: u32) -> f64 {
 fn views_shift_as_the_camera_formula_predicts() {
     let views = 8;
     let frame = frame(views, 0.2);
-    let mut renderer = MeshBaseline::new(&common::gpu().device).unwrap();
-    render(&frame, MeshBaselineMethod::NPass, &mut renderer);
+    let mut renderer = npass();
+    render(&frame, &mut renderer);
     let ctx = common::gpu();
     let layers = renderer.view_layers().expect("N-pass allocates layers");
     let cam = &frame.camera;
@@ -135,8 +139,8 @@ fn views_shift_as_the_camera_formula_predicts() {
 fn composite_equals_cpu_mask_applied_to_the_view_layers() {
     let views = 8;
     let frame = frame(views, 0.2);
-    let mut renderer = MeshBaseline::new(&common::gpu().device).unwrap();
-    let spatial = render(&frame, MeshBaselineMethod::NPass, &mut renderer);
+    let mut renderer = npass();
+    let spatial = render(&frame, &mut renderer);
     let ctx = common::gpu();
     let layers = renderer.view_layers().unwrap();
     let images: Vec<RgbImage> = (0..views)
@@ -168,11 +172,13 @@ fn composite_equals_cpu_mask_applied_to_the_view_layers() {
 
 #[test]
 fn zero_separation_or_one_view_equals_single_view() {
-    let mut renderer = MeshBaseline::new(&common::gpu().device).unwrap();
+    let mut renderer = npass();
+    let mut single_view =
+        MeshBaseline::new(&common::gpu().device, MeshBaselineMethod::SingleView).unwrap();
     for (views, separation) in [(8, 0.0), (1, 0.3)] {
         let frame = frame(views, separation);
-        let npass = render(&frame, MeshBaselineMethod::NPass, &mut renderer);
-        let single = render(&frame, MeshBaselineMethod::SingleView, &mut renderer);
+        let npass = render(&frame, &mut renderer);
+        let single = render(&frame, &mut single_view);
         if npass != single {
             panic!(
                 "N={views} e={separation}: {}",

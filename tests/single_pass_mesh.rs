@@ -10,8 +10,8 @@ use autostereo::frame::Frame;
 use autostereo::image_io::{compare, ImageDiff, RgbImage};
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::{
-    CoverBounds, MeshBaseline, MeshBaselineMethod, MeshSinglePass, MeshSinglePassOptions,
-    Visibility,
+    CoverBounds, MeshBaseline, MeshBaselineMethod, MeshRenderer, MeshSinglePass,
+    MeshSinglePassOptions, Visibility,
 };
 use autostereo::target::SpatialTarget;
 use glam::{Mat4, Vec3};
@@ -51,16 +51,9 @@ fn render(mesh: &Mesh, frame: &Frame, how: Option<MeshSinglePassOptions>) -> Rgb
             .unwrap()
             .render(&ctx.device, &ctx.queue, &buffers, frame, &target)
             .unwrap(),
-        None => MeshBaseline::new(&ctx.device)
+        None => MeshBaseline::new(&ctx.device, MeshBaselineMethod::NPass)
             .unwrap()
-            .render(
-                &ctx.device,
-                &ctx.queue,
-                &buffers,
-                frame,
-                MeshBaselineMethod::NPass,
-                &target,
-            )
+            .render(&ctx.device, &ctx.queue, &buffers, frame, &target)
             .unwrap(),
     }
     target.read(&ctx.device, &ctx.queue).unwrap()
@@ -245,16 +238,9 @@ fn zero_separation_equals_single_view() {
     let ctx = common::gpu();
     let buffers = MeshBuffers::new(&ctx.device, &mesh).unwrap();
     let target = SpatialTarget::new(&ctx.device, SIZE).unwrap();
-    MeshBaseline::new(&ctx.device)
+    MeshBaseline::new(&ctx.device, MeshBaselineMethod::SingleView)
         .unwrap()
-        .render(
-            &ctx.device,
-            &ctx.queue,
-            &buffers,
-            &frame,
-            MeshBaselineMethod::SingleView,
-            &target,
-        )
+        .render(&ctx.device, &ctx.queue, &buffers, &frame, &target)
         .unwrap();
     let single_view = target.read(&ctx.device, &ctx.queue).unwrap();
     drop(ctx);

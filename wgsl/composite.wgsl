@@ -3,11 +3,6 @@
 
 @group(1) @binding(0) var views: texture_2d_array<f32>;
 
-@vertex
-fn vs_main(@builtin(vertex_index) vertex: u32) -> @builtin(position) vec4<f32> {
-    return fullscreen_position(vertex);
-}
-
 @fragment
 fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
     let px = vec2<u32>(position.xy);

@@ -1,11 +1,6 @@
 // View-index image: each channel = the view of that subpixel (test oracle and `autostereo mask --gpu`).
 #import shared/frame.wgsl
 
-@vertex
-fn vs_main(@builtin(vertex_index) vertex: u32) -> @builtin(position) vec4<f32> {
-    return fullscreen_position(vertex);
-}
-
 @fragment
 fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<u32> {
     let px = vec2<u32>(position.xy);

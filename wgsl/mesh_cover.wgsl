@@ -4,14 +4,8 @@
 // 16-byte load.
 #import shared/frame.wgsl
 #import shared/multiview.wgsl
-#import shared/mesh_data.wgsl
+#import shared/eye_triangle.wgsl
 #import shared/cover_bounds.wgsl
-
-struct EyeTriangle {
-    p0: vec4<f32>,
-    p1: vec4<f32>,
-    p2: vec4<f32>,
-}
 
 @group(1) @binding(2) var<storage, read_write> eye_triangles: array<EyeTriangle>;
 @group(1) @binding(3) var<storage, read_write> cover_rects: array<vec4<f32>>;
@@ -27,12 +21,8 @@ fn cs_main(@builtin(workgroup_id) group: vec3<u32>, @builtin(num_workgroups) gro
     if (tri >= arrayLength(&cover_rects)) {
         return;
     }
-    let p = array<vec3<f32>, 3>(
-        eye_position(triangle_vertex(tri, 0u)),
-        eye_position(triangle_vertex(tri, 1u)),
-        eye_position(triangle_vertex(tri, 2u)),
-    );
-    eye_triangles[tri] = EyeTriangle(vec4<f32>(p[0], 1.0), vec4<f32>(p[1], 1.0), vec4<f32>(p[2], 1.0));
+    let p = transform_triangle(tri);
+    eye_triangles[tri] = eye_triangle(p);
     let b = cover_bounds(p);
     if (b.lo.x > b.hi.x) {
         cover_rects[tri] = vec4<f32>(1.0, 1.0, -1.0, -1.0); // behind the near plane: empty

@@ -1,4 +1,4 @@
-// Single-pass meshes, `exact` visibility, geometry pass: every hit subpixel keeps the nearest
+// Single-pass meshes, `atomic` visibility, geometry pass: every hit subpixel keeps the nearest
 // (depth, triangle) pair with one 64-bit atomic. The key is depth bits (high word; positive
 // floats order like their bits) and triangle id (low word), stored inverted so that the cleared
 // buffer (0) means "empty" and atomicMax picks the nearest. Shading happens once per subpixel
@@ -11,7 +11,7 @@
 fn fs_main(in: CoverOut) -> @location(0) vec4<f32> {
     let px = vec2<u32>(in.position.xy);
     let base = (px.y * u32(frame.camera.viewport.x) + px.x) * VIEWS_PER_PIXEL;
-    let t = fragment_triangle(in.tri);
+    let t = eye_triangles[in.tri];
     for (var c = 0u; c < VIEWS_PER_PIXEL; c++) {
         let ray = view_ray(in.position.xy, ray_view(px, c));
         let hit = ray_triangle(ray, t.p0.xyz, t.p1.xyz, t.p2.xyz);

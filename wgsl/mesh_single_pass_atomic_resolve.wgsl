@@ -1,17 +1,9 @@
-// Single-pass meshes, `exact` visibility, resolve pass: per subpixel, the winning triangle of
-// mesh_single_pass_atomic.wgsl is intersected again with that subpixel's ray and shaded.
-#import shared/frame.wgsl
-#import shared/multiview.wgsl
-#import shared/ray.wgsl
-#import shared/cover_data.wgsl
+// Single-pass meshes, `atomic` and `compute` visibility, resolve pass: per subpixel, the winning
+// triangle of mesh_single_pass_atomic.wgsl / mesh_single_pass_compute.wgsl is shaded.
+#import shared/resolve.wgsl
 
 // The same buffer as `nearest_keys`, read as (low, high) words of the inverted u64 keys.
 @group(2) @binding(0) var<storage, read> nearest_keys: array<vec2<u32>>;
-
-@vertex
-fn vs_main(@builtin(vertex_index) vertex: u32) -> @builtin(position) vec4<f32> {
-    return fullscreen_position(vertex);
-}
 
 @fragment
 fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
@@ -24,18 +16,7 @@ fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
             continue;
         }
         let tri = ~key.x;
-        let ray = view_ray(position.xy, ray_view(px, c));
-        let t = eye_triangles[tri];
-        let hit = ray_triangle(ray, t.p0.xyz, t.p1.xyz, t.p2.xyz);
-        if (hit.x < 0.0) {
-            continue; // cannot happen for the same ray; keeps the background rather than NaN
-        }
-        let shaded = shade_hit(tri, ray, hit);
-        if (VIEWS_PER_PIXEL == 1u) {
-            color = shaded;
-        } else {
-            color[c] = shaded[c];
-        }
+        color = resolve_subpixel(color, position.xy, px, c, tri);
     }
     return vec4<f32>(color, 1.0);
 }

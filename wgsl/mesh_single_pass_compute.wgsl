@@ -6,15 +6,8 @@
 // mesh_single_pass_atomic_resolve.wgsl then shades each subpixel once.
 #import shared/frame.wgsl
 #import shared/multiview.wgsl
-#import shared/mesh_data.wgsl
+#import shared/eye_triangle.wgsl
 #import shared/cover_bounds.wgsl
-
-// Eye-space vertices for the resolve pass (shared/cover_data.wgsl reads them).
-struct EyeTriangle {
-    p0: vec4<f32>,
-    p1: vec4<f32>,
-    p2: vec4<f32>,
-}
 
 @group(1) @binding(2) var<storage, read_write> eye_triangles: array<EyeTriangle>;
 @group(2) @binding(0) var<storage, read_write> nearest_keys: array<atomic<u64>>;
@@ -27,12 +20,8 @@ fn cs_main(@builtin(workgroup_id) group: vec3<u32>, @builtin(num_workgroups) gro
     if (tri >= arrayLength(&mesh_indices) / 3u) {
         return;
     }
-    let p = array<vec3<f32>, 3>(
-        eye_position(triangle_vertex(tri, 0u)),
-        eye_position(triangle_vertex(tri, 1u)),
-        eye_position(triangle_vertex(tri, 2u)),
-    );
-    eye_triangles[tri] = EyeTriangle(vec4<f32>(p[0], 1.0), vec4<f32>(p[1], 1.0), vec4<f32>(p[2], 1.0));
+    let p = transform_triangle(tri);
+    eye_triangles[tri] = eye_triangle(p);
     let b = cover_bounds(p);
     if (b.lo.x > b.hi.x) {
         return; // behind the near plane

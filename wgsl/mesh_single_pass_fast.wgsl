@@ -17,7 +17,7 @@ fn fs_main(in: CoverOut) -> FastOut {
     var color = vec3<f32>(0.0);
     var coverage = vec3<f32>(0.0);
     var nearest = 3.0e38;
-    let t = fragment_triangle(in.tri);
+    let t = eye_triangles[in.tri];
     for (var c = 0u; c < VIEWS_PER_PIXEL; c++) {
         let ray = view_ray(in.position.xy, ray_view(px, c));
         let hit = ray_triangle(ray, t.p0.xyz, t.p1.xyz, t.p2.xyz);

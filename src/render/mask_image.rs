@@ -1,6 +1,7 @@
 //! The display mask evaluated by the GPU (WGSL) into a view-index image.
 
 use super::pipeline::{draw_fullscreen, fullscreen_pipeline};
+use super::texture::texture_2d;
 use crate::display::Display;
 use crate::error::{Error, Result};
 use crate::frame::{frame_bind_group_layout, FrameBinding, FrameUniform};
@@ -46,21 +47,13 @@ impl MaskImageRenderer {
         let mut uniform: FrameUniform = bytemuck::Zeroable::zeroed();
         uniform.set_mask(display.mask().uniform());
         self.frame.write_uniform(queue, &uniform);
-        let texture = device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("mask image"),
-            size: wgpu::Extent3d {
-                width: size[0],
-                height: size[1],
-                depth_or_array_layers: 1,
-            },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: FORMAT,
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
-            view_formats: &[],
-        });
-        let view = texture.create_view(&Default::default());
+        let (texture, view) = texture_2d(
+            device,
+            "mask image",
+            size,
+            FORMAT,
+            wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+        );
         let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
             label: Some("mask image"),
         });

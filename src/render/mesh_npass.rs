@@ -2,7 +2,9 @@
 //! compositing) and single view (the centre camera straight into the target).
 //! Shading is `wgsl/shared/shading.wgsl`, the same the single-pass path uses.
 
+use super::mesh_renderer::MeshRenderer;
 use super::pipeline::cleared;
+use super::texture::{cached_texture_2d, Texture2d};
 use super::view_layers::DEPTH_FORMAT;
 use super::{Compositor, ViewLayers};
 use crate::camera::ViewUniform;
@@ -20,21 +22,22 @@ pub enum MeshBaselineMethod {
     SingleView,
 }
 
-/// N-pass and single-view mesh renderer. Holds pipelines and lazily sized scratch resources.
+/// N-pass or single-view mesh renderer. Holds pipelines and lazily sized scratch resources.
 pub struct MeshBaseline {
+    method: MeshBaselineMethod,
     pipeline: wgpu::RenderPipeline,
     view_layout: wgpu::BindGroupLayout,
     frame: FrameBinding,
     compositor: Compositor,
     layers: Option<ViewLayers>,
-    single_view_depth: Option<(wgpu::Texture, wgpu::TextureView)>,
+    single_view_depth: Option<Texture2d>,
     view_uniforms: Option<(wgpu::Buffer, wgpu::BindGroup, u32)>,
     view_stride: u64,
 }
 
 impl MeshBaseline {
-    /// Build the pipelines.
-    pub fn new(device: &wgpu::Device) -> Result<Self> {
+    /// Build the pipelines for `method`.
+    pub fn new(device: &wgpu::Device, method: MeshBaselineMethod) -> Result<Self> {
         let frame_layout = frame_bind_group_layout(device);
         let view_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("view"),
@@ -87,6 +90,7 @@ impl MeshBaseline {
         });
         let align = device.limits().min_uniform_buffer_offset_alignment as u64;
         Ok(Self {
+            method,
             pipeline,
             compositor: Compositor::new(device, &frame_layout)?,
             frame: FrameBinding::new(device, &frame_layout),
@@ -103,8 +107,8 @@ impl MeshBaseline {
         self.layers.as_ref()
     }
 
-    /// Record the N-pass baseline into `encoder`: N view passes into the layers, then compositing.
-    pub fn encode(
+    /// N view passes into the layers, then compositing.
+    fn encode_npass(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
@@ -131,8 +135,8 @@ impl MeshBaseline {
         Ok(())
     }
 
-    /// Record the single-view render (centre camera) straight into `target`.
-    pub fn encode_single_view(
+    /// The centre camera straight into `target`.
+    fn encode_single_view(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
@@ -150,59 +154,16 @@ impl MeshBaseline {
         Ok(())
     }
 
-    /// Encode, submit and wait.
-    pub fn render(
-        &mut self,
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        mesh: &MeshBuffers,
-        frame: &Frame,
-        method: MeshBaselineMethod,
-        target: &SpatialTarget,
-    ) -> Result<()> {
-        let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
-            label: Some("mesh baseline"),
-        });
-        match method {
-            MeshBaselineMethod::NPass => {
-                self.encode(device, queue, &mut encoder, mesh, frame, target)?
-            }
-            MeshBaselineMethod::SingleView => {
-                self.encode_single_view(device, queue, &mut encoder, mesh, frame, target)?
-            }
-        }
-        queue.submit([encoder.finish()]);
-        crate::readback::wait_idle(device)
-    }
-
     fn single_view_depth(&mut self, device: &wgpu::Device, size: [u32; 2]) -> wgpu::TextureView {
-        let stale = self
-            .single_view_depth
-            .as_ref()
-            .is_none_or(|(t, _)| [t.width(), t.height()] != size);
-        if stale {
-            let texture = device.create_texture(&wgpu::TextureDescriptor {
-                label: Some("single-view depth"),
-                size: wgpu::Extent3d {
-                    width: size[0],
-                    height: size[1],
-                    depth_or_array_layers: 1,
-                },
-                mip_level_count: 1,
-                sample_count: 1,
-                dimension: wgpu::TextureDimension::D2,
-                format: DEPTH_FORMAT,
-                usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
-                view_formats: &[],
-            });
-            let view = texture.create_view(&Default::default());
-            self.single_view_depth = Some((texture, view));
-        }
-        self.single_view_depth
-            .as_ref()
-            .expect("set above")
-            .1
-            .clone()
+        cached_texture_2d(
+            &mut self.single_view_depth,
+            device,
+            "single-view depth",
+            size,
+            DEPTH_FORMAT,
+            wgpu::TextureUsages::RENDER_ATTACHMENT,
+        )
+        .clone()
     }
 
     fn write_views(
@@ -280,5 +241,26 @@ impl MeshBaseline {
         pass.set_vertex_buffer(0, mesh.vertices.slice(..));
         pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
         pass.draw_indexed(0..mesh.index_count, 0, 0..1);
+    }
+}
+
+impl MeshRenderer for MeshBaseline {
+    fn encode(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        encoder: &mut wgpu::CommandEncoder,
+        mesh: &MeshBuffers,
+        frame: &Frame,
+        target: &SpatialTarget,
+    ) -> Result<()> {
+        match self.method {
+            MeshBaselineMethod::NPass => {
+                self.encode_npass(device, queue, encoder, mesh, frame, target)
+            }
+            MeshBaselineMethod::SingleView => {
+                self.encode_single_view(device, queue, encoder, mesh, frame, target)
+            }
+        }
     }
 }

@@ -8,13 +8,16 @@
 pub mod composite;
 pub mod mask_image;
 pub mod mesh_npass;
+mod mesh_renderer;
 pub mod mesh_single_pass;
 mod pipeline;
 mod specialize;
+pub(crate) mod texture;
 mod view_layers;
 
 pub use composite::Compositor;
 pub use mask_image::MaskImageRenderer;
 pub use mesh_npass::{MeshBaseline, MeshBaselineMethod};
+pub use mesh_renderer::MeshRenderer;
 pub use mesh_single_pass::{CoverBounds, MeshSinglePass, MeshSinglePassOptions, Visibility};
 pub use view_layers::ViewLayers;

@@ -1,6 +1,6 @@
 //! Small helpers shared by the pipelines.
 
-/// A render pipeline for a full-screen triangle (`vs_main` / `fs_main`, no vertex buffers).
+/// A render pipeline for a full-screen triangle (`vs_fullscreen` / `fs_main`, no vertex buffers).
 pub(crate) fn fullscreen_pipeline(
     device: &wgpu::Device,
     label: &str,
@@ -34,7 +34,7 @@ pub(crate) fn fullscreen_pipeline_with(
         layout: Some(&layout),
         vertex: wgpu::VertexState {
             module,
-            entry_point: Some("vs_main"),
+            entry_point: Some("vs_fullscreen"),
             compilation_options: options.clone(),
             buffers: &[],
         },

@@ -47,8 +47,3 @@ fn vs_cover_flat(@builtin(vertex_index) vertex: u32) -> CoverFlatOut {
     let t = eye_triangles[tri];
     return CoverFlatOut(cover_corner(vertex), tri, t.p0.xyz, t.p1.xyz, t.p2.xyz);
 }
-
-// The eye-space triangle of a covering fragment.
-fn fragment_triangle(tri: u32) -> EyeTriangle {
-    return eye_triangles[tri];
-}

@@ -1,13 +1,6 @@
 // Per-triangle data made by mesh_cover.wgsl for the single-pass mesh stages (group 1, bindings
-// 2 and 3, read-only here). Keep in sync with src/render/mesh_single_pass.rs.
-#import shared/mesh_data.wgsl
-
-// Eye-space vertices of one triangle (w unused).
-struct EyeTriangle {
-    p0: vec4<f32>,
-    p1: vec4<f32>,
-    p2: vec4<f32>,
-}
+// 2 and 3, read-only here). Keep in sync with src/render/mesh_single_pass/.
+#import shared/eye_triangle.wgsl
 
 @group(1) @binding(2) var<storage, read> eye_triangles: array<EyeTriangle>;
 // NDC rectangle (lo.xy, hi.xy) covering the triangle in all views; lo > hi when invisible.

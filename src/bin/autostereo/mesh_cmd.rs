@@ -8,8 +8,8 @@ use autostereo::frame::Frame;
 use autostereo::image_io::compare;
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::{
-    CoverBounds, MeshBaseline, MeshBaselineMethod, MeshSinglePass, MeshSinglePassOptions,
-    Visibility,
+    CoverBounds, MeshBaseline, MeshBaselineMethod, MeshRenderer, MeshSinglePass,
+    MeshSinglePassOptions, Visibility,
 };
 use autostereo::target::SpatialTarget;
 use autostereo::timing::{median, FrameTimer};
@@ -149,7 +149,7 @@ pub fn run(args: MeshArgs) -> Result<()> {
     let (device, queue) = (&ctx.device, &ctx.queue);
     let buffers = MeshBuffers::new(device, &mesh)?;
     let target = SpatialTarget::new(device, args.size)?;
-    let mut renderer = Renderer::new(device, &args)?;
+    let mut renderer = renderer(device, &args)?;
     let timer = FrameTimer::new(device, queue);
     let mut times = Vec::new();
     for i in 0..args.frames + 2 {
@@ -167,14 +167,8 @@ pub fn run(args: MeshArgs) -> Result<()> {
     }
     let diff = if args.compare {
         let reference = SpatialTarget::new(device, args.size)?;
-        MeshBaseline::new(device)?.render(
-            device,
-            queue,
-            &buffers,
-            &frame,
-            MeshBaselineMethod::NPass,
-            &reference,
-        )?;
+        MeshBaseline::new(device, MeshBaselineMethod::NPass)?
+            .render(device, queue, &buffers, &frame, &reference)?;
         Some(compare(&image, &reference.read(device, queue)?)?)
     } else {
         None
@@ -200,8 +194,8 @@ pub fn run(args: MeshArgs) -> Result<()> {
             "separation": frame.camera.separation,
         });
         let mut json = json;
-        if let Renderer::SinglePass(r) = &renderer {
-            json["visibility"] = r.options().visibility.name().into();
+        if args.method == Method::SinglePass {
+            json["visibility"] = single_pass_options(device, &args).visibility.name().into();
             json["bounds"] = format!("{:?}", args.bounds).to_lowercase().into();
         }
         if let Some(d) = diff {
@@ -235,54 +229,29 @@ pub fn run(args: MeshArgs) -> Result<()> {
 }
 
 /// The renderer a `--method` selects.
-enum Renderer {
-    Baseline(MeshBaseline, MeshBaselineMethod),
-    SinglePass(MeshSinglePass),
+fn renderer(device: &wgpu::Device, args: &MeshArgs) -> Result<Box<dyn MeshRenderer>> {
+    Ok(match args.method {
+        Method::NPass => Box::new(MeshBaseline::new(device, MeshBaselineMethod::NPass)?),
+        Method::SingleView => Box::new(MeshBaseline::new(device, MeshBaselineMethod::SingleView)?),
+        Method::SinglePass => Box::new(MeshSinglePass::new(
+            device,
+            single_pass_options(device, args),
+        )?),
+    })
 }
 
-impl Renderer {
-    fn new(device: &wgpu::Device, args: &MeshArgs) -> Result<Self> {
-        Ok(match args.method {
-            Method::NPass => Self::Baseline(MeshBaseline::new(device)?, MeshBaselineMethod::NPass),
-            Method::SingleView => {
-                Self::Baseline(MeshBaseline::new(device)?, MeshBaselineMethod::SingleView)
-            }
-            Method::SinglePass => Self::SinglePass(MeshSinglePass::new(
-                device,
-                MeshSinglePassOptions {
-                    visibility: match args.visibility {
-                        VisibilityArg::Auto => Visibility::best_exact(device),
-                        VisibilityArg::Exact => Visibility::Exact,
-                        VisibilityArg::Atomic => Visibility::ExactAtomic,
-                        VisibilityArg::Compute => Visibility::Compute,
-                        VisibilityArg::Fast => Visibility::Fast,
-                    },
-                    bounds: match args.bounds {
-                        BoundsArg::Exact => CoverBounds::Exact,
-                        BoundsArg::Paper => CoverBounds::Paper,
-                    },
-                },
-            )?),
-        })
-    }
-
-    fn encode(
-        &mut self,
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        encoder: &mut wgpu::CommandEncoder,
-        mesh: &MeshBuffers,
-        frame: &Frame,
-        target: &SpatialTarget,
-    ) -> autostereo::Result<()> {
-        match self {
-            Self::Baseline(r, MeshBaselineMethod::NPass) => {
-                r.encode(device, queue, encoder, mesh, frame, target)
-            }
-            Self::Baseline(r, MeshBaselineMethod::SingleView) => {
-                r.encode_single_view(device, queue, encoder, mesh, frame, target)
-            }
-            Self::SinglePass(r) => r.encode(device, queue, encoder, mesh, frame, target),
-        }
+fn single_pass_options(device: &wgpu::Device, args: &MeshArgs) -> MeshSinglePassOptions {
+    MeshSinglePassOptions {
+        visibility: match args.visibility {
+            VisibilityArg::Auto => Visibility::best_exact(device),
+            VisibilityArg::Exact => Visibility::Exact,
+            VisibilityArg::Atomic => Visibility::ExactAtomic,
+            VisibilityArg::Compute => Visibility::Compute,
+            VisibilityArg::Fast => Visibility::Fast,
+        },
+        bounds: match args.bounds {
+            BoundsArg::Exact => CoverBounds::Exact,
+            BoundsArg::Paper => CoverBounds::Paper,
+        },
     }
 }

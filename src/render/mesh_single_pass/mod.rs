@@ -21,6 +21,7 @@ mod scratch;
 
 use std::collections::HashMap;
 
+use super::mesh_renderer::MeshRenderer;
 use super::pipeline::{cleared, draw_fullscreen};
 use super::specialize::Specialization;
 use crate::error::{Error, Result};
@@ -141,9 +142,10 @@ impl MeshSinglePass {
     pub fn options(&self) -> MeshSinglePassOptions {
         self.options
     }
+}
 
-    /// Record the frame into `encoder`.
-    pub fn encode(
+impl MeshRenderer for MeshSinglePass {
+    fn encode(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
@@ -265,23 +267,6 @@ impl MeshSinglePass {
             );
         }
         Ok(())
-    }
-
-    /// Encode, submit and wait.
-    pub fn render(
-        &mut self,
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        mesh: &MeshBuffers,
-        frame: &Frame,
-        target: &SpatialTarget,
-    ) -> Result<()> {
-        let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
-            label: Some("mesh single pass"),
-        });
-        self.encode(device, queue, &mut encoder, mesh, frame, target)?;
-        queue.submit([encoder.finish()]);
-        crate::readback::wait_idle(device)
     }
 }
 

@@ -6,6 +6,7 @@ use super::Visibility;
 use crate::error::{Error, Result};
 use crate::frame::Frame;
 use crate::mesh::MeshBuffers;
+use crate::render::texture::{cached_texture_2d, Texture2d};
 use crate::render::view_layers::DEPTH_FORMAT;
 
 /// Bytes per triangle of `EyeTriangle` and of a covering rectangle (wgsl/shared/cover_data.wgsl).
@@ -18,8 +19,8 @@ const KEY_BYTES: u64 = 8;
 pub(super) struct Scratch {
     eye_triangles: Option<wgpu::Buffer>,
     rects: Option<wgpu::Buffer>,
-    depth: Option<(wgpu::Texture, wgpu::TextureView)>,
-    triangle_ids: Option<(wgpu::Texture, wgpu::TextureView)>,
+    depth: Option<Texture2d>,
+    triangle_ids: Option<Texture2d>,
     keys: Option<wgpu::Buffer>,
 }
 
@@ -43,36 +44,6 @@ fn check(what: String, value: u64, limit: u64) -> Result<()> {
         return Err(Error::LimitExceeded { what, value, limit });
     }
     Ok(())
-}
-
-fn texture(
-    device: &wgpu::Device,
-    label: &str,
-    size: [u32; 2],
-    format: wgpu::TextureFormat,
-    usage: wgpu::TextureUsages,
-) -> (wgpu::Texture, wgpu::TextureView) {
-    let texture = device.create_texture(&wgpu::TextureDescriptor {
-        label: Some(label),
-        size: wgpu::Extent3d {
-            width: size[0],
-            height: size[1],
-            depth_or_array_layers: 1,
-        },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format,
-        usage,
-        view_formats: &[],
-    });
-    let view = texture.create_view(&Default::default());
-    (texture, view)
-}
-
-fn stale(slot: &Option<(wgpu::Texture, wgpu::TextureView)>, size: [u32; 2]) -> bool {
-    slot.as_ref()
-        .is_none_or(|(t, _)| [t.width(), t.height()] != size)
 }
 
 impl Scratch {
@@ -111,40 +82,36 @@ impl Scratch {
         let [w, h] = frame.size;
         match visibility {
             Visibility::Fast => {
-                if stale(&self.depth, frame.size) {
-                    self.depth = Some(texture(
-                        device,
-                        "single-pass depth",
-                        frame.size,
-                        DEPTH_FORMAT,
-                        wgpu::TextureUsages::RENDER_ATTACHMENT,
-                    ));
-                }
+                cached_texture_2d(
+                    &mut self.depth,
+                    device,
+                    "single-pass depth",
+                    frame.size,
+                    DEPTH_FORMAT,
+                    wgpu::TextureUsages::RENDER_ATTACHMENT,
+                );
             }
             Visibility::Exact => {
                 let wide = [w as u64 * k as u64, h as u64];
                 let max = device.limits().max_texture_dimension_2d as u64;
                 check(format!("subpixel target width ({k} × {w})"), wide[0], max)?;
                 let wide = [wide[0] as u32, h];
-                if stale(&self.depth, wide) {
-                    self.depth = Some(texture(
-                        device,
-                        "subpixel depth",
-                        wide,
-                        DEPTH_FORMAT,
-                        wgpu::TextureUsages::RENDER_ATTACHMENT,
-                    ));
-                }
-                if stale(&self.triangle_ids, wide) {
-                    self.triangle_ids = Some(texture(
-                        device,
-                        "subpixel triangle ids",
-                        wide,
-                        TRIANGLE_ID_FORMAT,
-                        wgpu::TextureUsages::RENDER_ATTACHMENT
-                            | wgpu::TextureUsages::TEXTURE_BINDING,
-                    ));
-                }
+                cached_texture_2d(
+                    &mut self.depth,
+                    device,
+                    "subpixel depth",
+                    wide,
+                    DEPTH_FORMAT,
+                    wgpu::TextureUsages::RENDER_ATTACHMENT,
+                );
+                cached_texture_2d(
+                    &mut self.triangle_ids,
+                    device,
+                    "subpixel triangle ids",
+                    wide,
+                    TRIANGLE_ID_FORMAT,
+                    wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+                );
             }
             Visibility::ExactAtomic | Visibility::Compute => {
                 let bytes = w as u64 * h as u64 * k as u64 * KEY_BYTES;

@@ -1,0 +1,49 @@
+//! 2D textures the passes allocate for themselves (depth buffers, id targets, scratch images).
+
+/// A texture and its default view.
+pub(crate) type Texture2d = (wgpu::Texture, wgpu::TextureView);
+
+/// Create a single-mip, single-sample 2D texture of `size` and its default view.
+pub(crate) fn texture_2d(
+    device: &wgpu::Device,
+    label: &str,
+    size: [u32; 2],
+    format: wgpu::TextureFormat,
+    usage: wgpu::TextureUsages,
+) -> Texture2d {
+    let texture = device.create_texture(&wgpu::TextureDescriptor {
+        label: Some(label),
+        size: wgpu::Extent3d {
+            width: size[0],
+            height: size[1],
+            depth_or_array_layers: 1,
+        },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format,
+        usage,
+        view_formats: &[],
+    });
+    let view = texture.create_view(&Default::default());
+    (texture, view)
+}
+
+/// The view of `slot`, (re)allocated when missing or of another size.
+pub(crate) fn cached_texture_2d<'a>(
+    slot: &'a mut Option<Texture2d>,
+    device: &wgpu::Device,
+    label: &str,
+    size: [u32; 2],
+    format: wgpu::TextureFormat,
+    usage: wgpu::TextureUsages,
+) -> &'a wgpu::TextureView {
+    if slot
+        .as_ref()
+        .is_none_or(|(t, _)| [t.width(), t.height()] != size)
+    {
+        *slot = None; // free before allocating the replacement
+        *slot = Some(texture_2d(device, label, size, format, usage));
+    }
+    &slot.as_ref().expect("allocated above").1
+}
