@@ -45,14 +45,14 @@ pub enum Visibility {
 }
 
 impl Visibility {
-    /// The fastest exact mode `device` supports: atomic where 64-bit atomics exist (measured
-    /// ~2× faster on lavapipe), else subpixel rasterisation.
+    /// The fastest exact mode `device` supports: compute rasterisation where 64-bit atomics
+    /// exist (fastest on lavapipe by far, docs/MESHES.md), else subpixel rasterisation.
     pub fn best_exact(device: &wgpu::Device) -> Self {
         if device
             .features()
-            .contains(Visibility::ExactAtomic.required_features())
+            .contains(Visibility::Compute.required_features())
         {
-            Visibility::ExactAtomic
+            Visibility::Compute
         } else {
             Visibility::Exact
         }
