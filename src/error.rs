@@ -74,6 +74,14 @@ pub enum Error {
         /// What is wrong with it.
         reason: String,
     },
+    /// A volume file is malformed, truncated or of an unsupported kind.
+    #[error("volume {path}: {reason}")]
+    Volume {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong with it.
+        reason: String,
+    },
     /// An image could not be read or written.
     #[error("image {path}: {reason}")]
     Image {

@@ -25,6 +25,7 @@ pub mod render;
 pub mod shader;
 pub mod target;
 pub mod timing;
+pub mod volume;
 pub mod views;
 
 pub use error::{Error, Result};

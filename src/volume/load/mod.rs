@@ -1,0 +1,129 @@
+//! Volume file formats: raw (dimensions, type, endianness, spacing given), NRRD (raw and gzip
+//! encodings, attached or detached data), VolPack `.den`. Headers are validated and sizes
+//! checked against the file before anything large is allocated.
+
+mod den;
+mod nrrd;
+mod raw;
+
+pub use den::load_den;
+pub use nrrd::load_nrrd;
+pub use raw::{load_raw, RawSpec};
+
+use std::path::Path;
+
+use super::{check_dims, Volume};
+use crate::error::{Error, Result};
+
+/// Sample types the loaders understand.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SampleType {
+    /// Unsigned 8-bit (normalised by 255).
+    U8,
+    /// Signed 8-bit.
+    I8,
+    /// Unsigned 16-bit.
+    U16,
+    /// Signed 16-bit.
+    I16,
+    /// Unsigned 32-bit.
+    U32,
+    /// Signed 32-bit.
+    I32,
+    /// 32-bit float.
+    F32,
+    /// 64-bit float.
+    F64,
+}
+
+impl SampleType {
+    /// Bytes per sample.
+    pub fn size(self) -> u64 {
+        match self {
+            SampleType::U8 | SampleType::I8 => 1,
+            SampleType::U16 | SampleType::I16 => 2,
+            SampleType::U32 | SampleType::I32 | SampleType::F32 => 4,
+            SampleType::F64 => 8,
+        }
+    }
+
+    /// Parse a name: u8 uint8 uchar "unsigned char", i8 int8 char, u16 uint16 ushort, i16 int16
+    /// short, u32 uint32 uint, i32 int32 int, f32 float, f64 double (NRRD spellings included).
+    pub fn parse(name: &str) -> Option<Self> {
+        Some(match name.trim().to_ascii_lowercase().as_str() {
+            "u8" | "uint8" | "uchar" | "unsigned char" | "uint8_t" => SampleType::U8,
+            "i8" | "int8" | "char" | "signed char" | "int8_t" => SampleType::I8,
+            "u16" | "uint16" | "ushort" | "unsigned short" | "unsigned short int" | "uint16_t" => SampleType::U16,
+            "i16" | "int16" | "short" | "short int" | "signed short" | "signed short int" | "int16_t" => SampleType::I16,
+            "u32" | "uint32" | "uint" | "unsigned int" | "uint32_t" => SampleType::U32,
+            "i32" | "int32" | "int" | "signed int" | "int32_t" => SampleType::I32,
+            "f32" | "float" => SampleType::F32,
+            "f64" | "double" => SampleType::F64,
+            _ => return None,
+        })
+    }
+}
+
+/// Decode `bytes` (exactly `count` samples) to f32.
+pub(crate) fn decode(bytes: &[u8], kind: SampleType, big_endian: bool) -> Vec<f32> {
+    macro_rules! conv {
+        ($t:ty, $n:expr) => {
+            bytes
+                .chunks_exact($n)
+                .map(|c| {
+                    let a: [u8; $n] = c.try_into().expect("chunk size");
+                    (if big_endian { <$t>::from_be_bytes(a) } else { <$t>::from_le_bytes(a) }) as f32
+                })
+                .collect()
+        };
+    }
+    match kind {
+        SampleType::U8 => bytes.iter().map(|&b| b as f32).collect(),
+        SampleType::I8 => bytes.iter().map(|&b| b as i8 as f32).collect(),
+        SampleType::U16 => conv!(u16, 2),
+        SampleType::I16 => conv!(i16, 2),
+        SampleType::U32 => conv!(u32, 4),
+        SampleType::I32 => conv!(i32, 4),
+        SampleType::F32 => conv!(f32, 4),
+        SampleType::F64 => conv!(f64, 8),
+    }
+}
+
+/// Bytes of `dims` samples of `kind`, checked for overflow and the voxel limit.
+pub(crate) fn data_bytes(dims: [u64; 3], kind: SampleType) -> Result<u64> {
+    Ok(check_dims(dims)? * kind.size())
+}
+
+/// Normalise decoded samples: 8-bit unsigned by 255 (keeps transfer functions meaningful),
+/// everything else by its own min..max.
+pub(crate) fn to_volume(dims: [u32; 3], spacing: [f32; 3], samples: Vec<f32>, kind: SampleType) -> Result<Volume> {
+    let range = (kind == SampleType::U8).then_some([0.0, 255.0]);
+    Volume::from_samples(dims, spacing, samples, range)
+}
+
+pub(crate) fn format_error(path: &Path, reason: impl Into<String>) -> Error {
+    Error::Volume {
+        path: path.to_path_buf(),
+        reason: reason.into(),
+    }
+}
+
+pub(crate) fn io_error(path: &Path, source: std::io::Error) -> Error {
+    Error::Io {
+        path: path.to_path_buf(),
+        source,
+    }
+}
+
+/// Load by extension: `.nrrd`/`.nhdr` → NRRD, `.den` → VolPack. Raw files need [`load_raw`].
+pub fn load_any(path: &Path) -> Result<Volume> {
+    let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
+    match ext.as_str() {
+        "nrrd" | "nhdr" => load_nrrd(path),
+        "den" => load_den(path),
+        _ => Err(format_error(
+            path,
+            "unknown volume format: expected .nrrd, .nhdr or .den (raw files need --raw-dims and --raw-type)",
+        )),
+    }
+}

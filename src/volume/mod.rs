@@ -1,0 +1,107 @@
+//! Scalar volumes: loading (raw, NRRD, VolPack .den), built-in data sets, gradients, transfer
+//! functions with pre-integration, and their GPU textures.
+
+mod gpu;
+pub mod load;
+mod gradient;
+pub mod phantom;
+pub mod transfer;
+
+pub use gpu::{PreintegrationTexture, VolumeTexture};
+pub use transfer::{PreintegrationTable, TransferFunction};
+
+use glam::Vec3;
+
+use crate::camera::Bounds;
+use crate::error::{Error, Result};
+
+/// Most voxels a volume may have (4 bytes each on the CPU, 8 on the GPU): 1 Gi.
+pub const MAX_VOXELS: u64 = 1 << 30;
+
+/// A scalar volume normalised to 0..1, x fastest, then y, then z.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Volume {
+    /// Voxels along x, y, z.
+    pub dims: [u32; 3],
+    /// Voxel spacing along x, y, z (world units).
+    pub spacing: [f32; 3],
+    /// `dims[0]·dims[1]·dims[2]` scalars in 0..1.
+    pub data: Vec<f32>,
+}
+
+/// Check dimensions before anything is allocated: each ≥ 1, product ≤ [`MAX_VOXELS`].
+pub fn check_dims(dims: [u64; 3]) -> Result<u64> {
+    if dims.contains(&0) {
+        return Err(Error::invalid("volume dimensions", format!("{dims:?}: every dimension must be at least 1")));
+    }
+    let count = dims
+        .iter()
+        .try_fold(1u64, |acc, &d| acc.checked_mul(d))
+        .filter(|&n| n <= MAX_VOXELS)
+        .ok_or_else(|| Error::invalid("volume dimensions", format!("{dims:?}: more than {MAX_VOXELS} voxels")))?;
+    Ok(count)
+}
+
+fn check_spacing(spacing: [f32; 3]) -> Result<()> {
+    if spacing.iter().all(|s| s.is_finite() && *s > 0.0) {
+        Ok(())
+    } else {
+        Err(Error::invalid("voxel spacing", format!("{spacing:?}: must be positive and finite")))
+    }
+}
+
+impl Volume {
+    /// A volume from scalars already in 0..1 (checked: sizes, finite values, spacing).
+    pub fn new(dims: [u32; 3], spacing: [f32; 3], data: Vec<f32>) -> Result<Self> {
+        let count = check_dims(dims.map(u64::from))?;
+        check_spacing(spacing)?;
+        if data.len() as u64 != count {
+            return Err(Error::invalid("volume data", format!("{} values for dimensions {dims:?}", data.len())));
+        }
+        if let Some(i) = data.iter().position(|v| !v.is_finite()) {
+            return Err(Error::invalid("volume data", format!("voxel {i} is not finite")));
+        }
+        Ok(Self { dims, spacing, data })
+    }
+
+    /// A volume from raw samples of any range, mapped linearly from [min, max] to [0, 1]
+    /// (a constant volume maps to 0).
+    pub fn from_samples(dims: [u32; 3], spacing: [f32; 3], samples: Vec<f32>, range: Option<[f32; 2]>) -> Result<Self> {
+        let [lo, hi] = range.unwrap_or_else(|| {
+            let finite = samples.iter().copied().filter(|v| v.is_finite());
+            let lo = finite.clone().fold(f32::INFINITY, f32::min);
+            let hi = finite.fold(f32::NEG_INFINITY, f32::max);
+            [lo, hi]
+        });
+        let scale = if hi > lo { 1.0 / (hi - lo) } else { 0.0 };
+        let data = samples
+            .into_iter()
+            .map(|v| if v.is_finite() { ((v - lo) * scale).clamp(0.0, 1.0) } else { 0.0 })
+            .collect();
+        Self::new(dims, spacing, data)
+    }
+
+    /// Scalar at integer voxel (clamped to the volume).
+    #[inline]
+    pub fn at(&self, x: i64, y: i64, z: i64) -> f32 {
+        let c = |v: i64, n: u32| v.clamp(0, n as i64 - 1) as usize;
+        let [nx, ny, nz] = self.dims;
+        self.data[(c(z, nz) * ny as usize + c(y, ny)) * nx as usize + c(x, nx)]
+    }
+
+    /// World-space size of the box (voxel centres at the faces' half-voxel insets).
+    pub fn extent(&self) -> Vec3 {
+        Vec3::from_array(self.spacing) * Vec3::new(self.dims[0] as f32, self.dims[1] as f32, self.dims[2] as f32)
+    }
+
+    /// Bounds of the box, centred at the origin.
+    pub fn bounds(&self) -> Bounds {
+        let half = self.extent() * 0.5;
+        Bounds { min: -half, max: half }
+    }
+
+    /// Smallest voxel spacing: the natural sampling distance.
+    pub fn min_spacing(&self) -> f32 {
+        self.spacing.iter().copied().fold(f32::INFINITY, f32::min)
+    }
+}
