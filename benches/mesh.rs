@@ -14,8 +14,7 @@ use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::{
-    MeshBaseline, MeshBaselineMethod, MeshRenderer, MeshSinglePass, MeshSinglePassOptions,
-    Visibility,
+    MeshBaseline, MeshBaselineMethod, MeshSinglePass, MeshSinglePassOptions, Renderer, Visibility,
 };
 use autostereo::target::SpatialTarget;
 use autostereo::timing::FrameTimer;

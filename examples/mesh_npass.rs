@@ -9,7 +9,7 @@ use autostereo::display::Display;
 use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::mesh::{Mesh, MeshBuffers};
-use autostereo::render::{MeshBaseline, MeshBaselineMethod, MeshRenderer};
+use autostereo::render::{MeshBaseline, MeshBaselineMethod, Renderer};
 use autostereo::target::SpatialTarget;
 use autostereo::views::extract_view;
 

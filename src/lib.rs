@@ -25,7 +25,7 @@ pub mod render;
 pub mod shader;
 pub mod target;
 pub mod timing;
-pub mod volume;
 pub mod views;
+pub mod volume;
 
 pub use error::{Error, Result};

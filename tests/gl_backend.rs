@@ -9,7 +9,7 @@ use autostereo::frame::Frame;
 use autostereo::gpu::{GpuContext, GpuOptions};
 use autostereo::image_io::{compare, RgbImage};
 use autostereo::mesh::{Mesh, MeshBuffers};
-use autostereo::render::{MaskImageRenderer, MeshBaseline, MeshBaselineMethod, MeshRenderer};
+use autostereo::render::{MaskImageRenderer, MeshBaseline, MeshBaselineMethod, Renderer};
 use autostereo::target::SpatialTarget;
 
 fn render_npass(ctx: &GpuContext, frame: &Frame, mesh: &Mesh) -> RgbImage {

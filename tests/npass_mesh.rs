@@ -9,7 +9,7 @@ use autostereo::frame::Frame;
 use autostereo::image_io::RgbImage;
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::readback::read_texture_rgba8;
-use autostereo::render::{MeshBaseline, MeshBaselineMethod, MeshRenderer};
+use autostereo::render::{MeshBaseline, MeshBaselineMethod, Renderer};
 use autostereo::target::SpatialTarget;
 use glam::{Mat4, Vec3};
 

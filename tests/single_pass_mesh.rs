@@ -10,8 +10,8 @@ use autostereo::frame::Frame;
 use autostereo::image_io::{compare, ImageDiff, RgbImage};
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::{
-    CoverBounds, MeshBaseline, MeshBaselineMethod, MeshRenderer, MeshSinglePass,
-    MeshSinglePassOptions, Visibility,
+    CoverBounds, MeshBaseline, MeshBaselineMethod, MeshSinglePass, MeshSinglePassOptions, Renderer,
+    Visibility,
 };
 use autostereo::target::SpatialTarget;
 use glam::{Mat4, Vec3};

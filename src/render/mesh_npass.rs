@@ -2,8 +2,8 @@
 //! compositing) and single view (the centre camera straight into the target).
 //! Shading is `wgsl/shared/shading.wgsl`, the same the single-pass path uses.
 
-use super::mesh_renderer::MeshRenderer;
 use super::pipeline::cleared;
+use super::renderer::Renderer;
 use super::texture::{cached_texture_2d, Texture2d};
 use super::view_layers::DEPTH_FORMAT;
 use super::{Compositor, ViewLayers};
@@ -244,7 +244,7 @@ impl MeshBaseline {
     }
 }
 
-impl MeshRenderer for MeshBaseline {
+impl Renderer<MeshBuffers> for MeshBaseline {
     fn encode(
         &mut self,
         device: &wgpu::Device,

@@ -8,9 +8,9 @@
 pub mod composite;
 pub mod mask_image;
 pub mod mesh_npass;
-mod mesh_renderer;
 pub mod mesh_single_pass;
 mod pipeline;
+mod renderer;
 mod specialize;
 pub(crate) mod texture;
 mod view_layers;
@@ -18,6 +18,6 @@ mod view_layers;
 pub use composite::Compositor;
 pub use mask_image::MaskImageRenderer;
 pub use mesh_npass::{MeshBaseline, MeshBaselineMethod};
-pub use mesh_renderer::MeshRenderer;
 pub use mesh_single_pass::{CoverBounds, MeshSinglePass, MeshSinglePassOptions, Visibility};
+pub use renderer::Renderer;
 pub use view_layers::ViewLayers;

@@ -26,7 +26,10 @@ impl VolumeTexture {
         let limit = device.limits().max_texture_dimension_3d;
         if let Some(&d) = volume.dims.iter().find(|&&d| d > limit) {
             return Err(Error::LimitExceeded {
-                what: format!("volume dimension {d} of {:?} (downsample it, e.g. --downsample 2)", volume.dims),
+                what: format!(
+                    "volume dimension {d} of {:?} (downsample it, e.g. --downsample 2)",
+                    volume.dims
+                ),
                 value: d.into(),
                 limit: limit.into(),
             });
@@ -38,7 +41,11 @@ impl VolumeTexture {
                 queue,
                 &wgpu::TextureDescriptor {
                     label: Some("volume"),
-                    size: wgpu::Extent3d { width: w, height: h, depth_or_array_layers: d },
+                    size: wgpu::Extent3d {
+                        width: w,
+                        height: h,
+                        depth_or_array_layers: d,
+                    },
                     mip_level_count: 1,
                     sample_count: 1,
                     dimension: wgpu::TextureDimension::D3,
@@ -72,7 +79,11 @@ impl PreintegrationTexture {
             queue,
             &wgpu::TextureDescriptor {
                 label: Some("pre-integration table"),
-                size: wgpu::Extent3d { width: n, height: n, depth_or_array_layers: 1 },
+                size: wgpu::Extent3d {
+                    width: n,
+                    height: n,
+                    depth_or_array_layers: 1,
+                },
                 mip_level_count: 1,
                 sample_count: 1,
                 dimension: wgpu::TextureDimension::D2,

@@ -20,14 +20,21 @@ impl Volume {
                         for dy in -1..=1i64 {
                             for dx in -1..=1i64 {
                                 let v = self.at(x + dx, y + dy, z + dz);
-                                let w = |a: i64, b: i64| smooth[(a + 1) as usize] * smooth[(b + 1) as usize];
+                                let w = |a: i64, b: i64| {
+                                    smooth[(a + 1) as usize] * smooth[(b + 1) as usize]
+                                };
                                 g[0] += dx as f32 * w(dy, dz) * v;
                                 g[1] += dy as f32 * w(dx, dz) * v;
                                 g[2] += dz as f32 * w(dx, dy) * v;
                             }
                         }
                     }
-                    out.push([g[0] * scale[0], g[1] * scale[1], g[2] * scale[2], self.at(x, y, z)]);
+                    out.push([
+                        g[0] * scale[0],
+                        g[1] * scale[1],
+                        g[2] * scale[2],
+                        self.at(x, y, z),
+                    ]);
                 }
             }
         }
@@ -56,7 +63,11 @@ mod tests {
         let inner = (2 * 5 + 2) * 6 + 2; // voxel (2, 2, 2)
         let expect = [0.01 / 0.5, 0.02 / 1.0, 0.03 / 2.0];
         for a in 0..3 {
-            assert!((g[inner][a] - expect[a]).abs() < 1e-6, "{a}: {:?}", g[inner]);
+            assert!(
+                (g[inner][a] - expect[a]).abs() < 1e-6,
+                "{a}: {:?}",
+                g[inner]
+            );
         }
     }
 }

@@ -2,8 +2,8 @@
 //! functions with pre-integration, and their GPU textures.
 
 mod gpu;
-pub mod load;
 mod gradient;
+pub mod load;
 pub mod phantom;
 pub mod transfer;
 
@@ -32,13 +32,21 @@ pub struct Volume {
 /// Check dimensions before anything is allocated: each ≥ 1, product ≤ [`MAX_VOXELS`].
 pub fn check_dims(dims: [u64; 3]) -> Result<u64> {
     if dims.contains(&0) {
-        return Err(Error::invalid("volume dimensions", format!("{dims:?}: every dimension must be at least 1")));
+        return Err(Error::invalid(
+            "volume dimensions",
+            format!("{dims:?}: every dimension must be at least 1"),
+        ));
     }
     let count = dims
         .iter()
         .try_fold(1u64, |acc, &d| acc.checked_mul(d))
         .filter(|&n| n <= MAX_VOXELS)
-        .ok_or_else(|| Error::invalid("volume dimensions", format!("{dims:?}: more than {MAX_VOXELS} voxels")))?;
+        .ok_or_else(|| {
+            Error::invalid(
+                "volume dimensions",
+                format!("{dims:?}: more than {MAX_VOXELS} voxels"),
+            )
+        })?;
     Ok(count)
 }
 
@@ -46,7 +54,10 @@ fn check_spacing(spacing: [f32; 3]) -> Result<()> {
     if spacing.iter().all(|s| s.is_finite() && *s > 0.0) {
         Ok(())
     } else {
-        Err(Error::invalid("voxel spacing", format!("{spacing:?}: must be positive and finite")))
+        Err(Error::invalid(
+            "voxel spacing",
+            format!("{spacing:?}: must be positive and finite"),
+        ))
     }
 }
 
@@ -56,17 +67,32 @@ impl Volume {
         let count = check_dims(dims.map(u64::from))?;
         check_spacing(spacing)?;
         if data.len() as u64 != count {
-            return Err(Error::invalid("volume data", format!("{} values for dimensions {dims:?}", data.len())));
+            return Err(Error::invalid(
+                "volume data",
+                format!("{} values for dimensions {dims:?}", data.len()),
+            ));
         }
         if let Some(i) = data.iter().position(|v| !v.is_finite()) {
-            return Err(Error::invalid("volume data", format!("voxel {i} is not finite")));
+            return Err(Error::invalid(
+                "volume data",
+                format!("voxel {i} is not finite"),
+            ));
         }
-        Ok(Self { dims, spacing, data })
+        Ok(Self {
+            dims,
+            spacing,
+            data,
+        })
     }
 
     /// A volume from raw samples of any range, mapped linearly from [min, max] to [0, 1]
     /// (a constant volume maps to 0).
-    pub fn from_samples(dims: [u32; 3], spacing: [f32; 3], samples: Vec<f32>, range: Option<[f32; 2]>) -> Result<Self> {
+    pub fn from_samples(
+        dims: [u32; 3],
+        spacing: [f32; 3],
+        samples: Vec<f32>,
+        range: Option<[f32; 2]>,
+    ) -> Result<Self> {
         let [lo, hi] = range.unwrap_or_else(|| {
             let finite = samples.iter().copied().filter(|v| v.is_finite());
             let lo = finite.clone().fold(f32::INFINITY, f32::min);
@@ -76,7 +102,13 @@ impl Volume {
         let scale = if hi > lo { 1.0 / (hi - lo) } else { 0.0 };
         let data = samples
             .into_iter()
-            .map(|v| if v.is_finite() { ((v - lo) * scale).clamp(0.0, 1.0) } else { 0.0 })
+            .map(|v| {
+                if v.is_finite() {
+                    ((v - lo) * scale).clamp(0.0, 1.0)
+                } else {
+                    0.0
+                }
+            })
             .collect();
         Self::new(dims, spacing, data)
     }
@@ -91,13 +123,21 @@ impl Volume {
 
     /// World-space size of the box (voxel centres at the faces' half-voxel insets).
     pub fn extent(&self) -> Vec3 {
-        Vec3::from_array(self.spacing) * Vec3::new(self.dims[0] as f32, self.dims[1] as f32, self.dims[2] as f32)
+        Vec3::from_array(self.spacing)
+            * Vec3::new(
+                self.dims[0] as f32,
+                self.dims[1] as f32,
+                self.dims[2] as f32,
+            )
     }
 
     /// Bounds of the box, centred at the origin.
     pub fn bounds(&self) -> Bounds {
         let half = self.extent() * 0.5;
-        Bounds { min: -half, max: half }
+        Bounds {
+            min: -half,
+            max: half,
+        }
     }
 
     /// Smallest voxel spacing: the natural sampling distance.

@@ -72,7 +72,9 @@ pub fn marschner_lobb(n: u32) -> Result<Volume> {
                 let (x, y, z) = (c(x), c(y), c(z));
                 let r = (x * x + y * y).sqrt();
                 let rho_r = (2.0 * pi * fm * (pi * r / 2.0).cos()).cos();
-                data.push((1.0 - (pi * z / 2.0).sin() + alpha * (1.0 + rho_r)) / (2.0 * (1.0 + alpha)));
+                data.push(
+                    (1.0 - (pi * z / 2.0).sin() + alpha * (1.0 + rho_r)) / (2.0 * (1.0 + alpha)),
+                );
             }
         }
     }
@@ -86,7 +88,10 @@ mod tests {
     #[test]
     fn built_in_data_is_in_range_and_not_constant() {
         for v in [ct_head(32).unwrap(), marschner_lobb(24).unwrap()] {
-            let (lo, hi) = v.data.iter().fold((1.0f32, 0.0f32), |(l, h), &x| (l.min(x), h.max(x)));
+            let (lo, hi) = v
+                .data
+                .iter()
+                .fold((1.0f32, 0.0f32), |(l, h), &x| (l.min(x), h.max(x)));
             assert!(lo >= 0.0 && hi <= 1.0 && hi - lo > 0.5, "{lo}..{hi}");
         }
         assert_eq!(ct_head(32).unwrap().spacing, [1.0, 1.0, 1.25]);

@@ -20,7 +20,10 @@ impl TransferFunction {
     /// Check and build from control points.
     pub fn new(mut points: Vec<(f32, [f32; 4])>) -> Result<Self> {
         if points.is_empty() {
-            return Err(Error::invalid("transfer function", "needs at least one control point"));
+            return Err(Error::invalid(
+                "transfer function",
+                "needs at least one control point",
+            ));
         }
         points.sort_by(|a, b| a.0.total_cmp(&b.0));
         for (s, c) in &points {
@@ -89,7 +92,8 @@ impl TransferFunction {
             path: path.to_path_buf(),
             source,
         })?;
-        Self::parse(&text).map_err(|e| Error::invalid("transfer function", format!("{}: {e}", path.display())))
+        Self::parse(&text)
+            .map_err(|e| Error::invalid("transfer function", format!("{}: {e}", path.display())))
     }
 
     /// Parse the text format of [`TransferFunction::load`].
@@ -104,9 +108,21 @@ impl TransferFunction {
                 .split_whitespace()
                 .map(|w| w.parse::<f32>())
                 .collect::<std::result::Result<_, _>>()
-                .map_err(|_| Error::invalid("transfer function", format!("line {}: '{line}' is not 5 numbers", n + 1)))?;
+                .map_err(|_| {
+                    Error::invalid(
+                        "transfer function",
+                        format!("line {}: '{line}' is not 5 numbers", n + 1),
+                    )
+                })?;
             if v.len() != 5 {
-                return Err(Error::invalid("transfer function", format!("line {}: {} numbers, expected 5 (scalar r g b a)", n + 1, v.len())));
+                return Err(Error::invalid(
+                    "transfer function",
+                    format!(
+                        "line {}: {} numbers, expected 5 (scalar r g b a)",
+                        n + 1,
+                        v.len()
+                    ),
+                ));
             }
             points.push((v[0], [v[1], v[2], v[3], v[4]]));
         }
@@ -148,7 +164,10 @@ impl PreintegrationTable {
     /// Build the table for `tf` at sampling distance `step` (voxels).
     pub fn new(tf: &TransferFunction, step: f32) -> Result<Self> {
         if !(step.is_finite() && step > 0.0) {
-            return Err(Error::invalid("sampling step", format!("{step}: must be positive")));
+            return Err(Error::invalid(
+                "sampling step",
+                format!("{step}: must be positive"),
+            ));
         }
         // Prefix integrals of τ and τ·c over the table's scalar grid (trapezoid rule on a grid
         // 4× finer than the table).
@@ -158,16 +177,17 @@ impl PreintegrationTable {
         let sample = |i: usize| {
             let c = tf.eval(i as f32 / FINE as f32);
             let tau = -(1.0 - c[3].min(0.9999) as f64).ln();
-            (tau, [c[0] as f64 * tau, c[1] as f64 * tau, c[2] as f64 * tau])
+            (
+                tau,
+                [c[0] as f64 * tau, c[1] as f64 * tau, c[2] as f64 * tau],
+            )
         };
         let mut prev = sample(0);
         for i in 1..=FINE {
             let cur = sample(i);
             let h = 1.0 / FINE as f64;
             tau_int[i] = tau_int[i - 1] + 0.5 * h * (prev.0 + cur.0);
-            for k in 0..3 {
-                col_int[i][k] = col_int[i - 1][k] + 0.5 * h * (prev.1[k] + cur.1[k]);
-            }
+            col_int[i] = [0, 1, 2].map(|k| col_int[i - 1][k] + 0.5 * h * (prev.1[k] + cur.1[k]));
             prev = cur;
         }
         let mut rgba = Vec::with_capacity(TABLE_SIZE * TABLE_SIZE);
@@ -181,7 +201,14 @@ impl PreintegrationTable {
                 } else {
                     let dt = (tau_int[j] - tau_int[i]) / ds;
                     let dc = [0, 1, 2].map(|k| (col_int[j][k] - col_int[i][k]) / ds);
-                    (dt, if dt.abs() > 1e-12 { dc.map(|v| v / dt) } else { [0.0; 3] })
+                    (
+                        dt,
+                        if dt.abs() > 1e-12 {
+                            dc.map(|v| v / dt)
+                        } else {
+                            [0.0; 3]
+                        },
+                    )
                 };
                 let alpha = 1.0 - (-tau_mean.max(0.0) * step as f64).exp();
                 rgba.push([
@@ -229,6 +256,9 @@ mod tests {
     fn premultiplied_colour_never_exceeds_alpha() {
         let tf = TransferFunction::preset("ct-skin").unwrap();
         let table = PreintegrationTable::new(&tf, 0.5).unwrap();
-        assert!(table.rgba.iter().all(|e| e.iter().all(|v| v.is_finite()) && e[0] <= e[3] + 1e-5));
+        assert!(table
+            .rgba
+            .iter()
+            .all(|e| e.iter().all(|v| v.is_finite()) && e[0] <= e[3] + 1e-5));
     }
 }

@@ -8,8 +8,8 @@ use autostereo::frame::Frame;
 use autostereo::image_io::compare;
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::{
-    CoverBounds, MeshBaseline, MeshBaselineMethod, MeshRenderer, MeshSinglePass,
-    MeshSinglePassOptions, Visibility,
+    CoverBounds, MeshBaseline, MeshBaselineMethod, MeshSinglePass, MeshSinglePassOptions, Renderer,
+    Visibility,
 };
 use autostereo::target::SpatialTarget;
 use autostereo::timing::{median, FrameTimer};
@@ -229,7 +229,7 @@ pub fn run(args: MeshArgs) -> Result<()> {
 }
 
 /// The renderer a `--method` selects.
-fn renderer(device: &wgpu::Device, args: &MeshArgs) -> Result<Box<dyn MeshRenderer>> {
+fn renderer(device: &wgpu::Device, args: &MeshArgs) -> Result<Box<dyn Renderer<MeshBuffers>>> {
     Ok(match args.method {
         Method::NPass => Box::new(MeshBaseline::new(device, MeshBaselineMethod::NPass)?),
         Method::SingleView => Box::new(MeshBaseline::new(device, MeshBaselineMethod::SingleView)?),

@@ -21,8 +21,8 @@ mod scratch;
 
 use std::collections::HashMap;
 
-use super::mesh_renderer::MeshRenderer;
 use super::pipeline::{cleared, draw_fullscreen};
+use super::renderer::Renderer;
 use super::specialize::Specialization;
 use crate::error::{Error, Result};
 use crate::frame::{Frame, FrameBinding};
@@ -144,7 +144,7 @@ impl MeshSinglePass {
     }
 }
 
-impl MeshRenderer for MeshSinglePass {
+impl Renderer<MeshBuffers> for MeshSinglePass {
     fn encode(
         &mut self,
         device: &wgpu::Device,

@@ -53,8 +53,11 @@ impl SampleType {
         Some(match name.trim().to_ascii_lowercase().as_str() {
             "u8" | "uint8" | "uchar" | "unsigned char" | "uint8_t" => SampleType::U8,
             "i8" | "int8" | "char" | "signed char" | "int8_t" => SampleType::I8,
-            "u16" | "uint16" | "ushort" | "unsigned short" | "unsigned short int" | "uint16_t" => SampleType::U16,
-            "i16" | "int16" | "short" | "short int" | "signed short" | "signed short int" | "int16_t" => SampleType::I16,
+            "u16" | "uint16" | "ushort" | "unsigned short" | "unsigned short int" | "uint16_t" => {
+                SampleType::U16
+            }
+            "i16" | "int16" | "short" | "short int" | "signed short" | "signed short int"
+            | "int16_t" => SampleType::I16,
             "u32" | "uint32" | "uint" | "unsigned int" | "uint32_t" => SampleType::U32,
             "i32" | "int32" | "int" | "signed int" | "int32_t" => SampleType::I32,
             "f32" | "float" => SampleType::F32,
@@ -72,7 +75,11 @@ pub(crate) fn decode(bytes: &[u8], kind: SampleType, big_endian: bool) -> Vec<f3
                 .chunks_exact($n)
                 .map(|c| {
                     let a: [u8; $n] = c.try_into().expect("chunk size");
-                    (if big_endian { <$t>::from_be_bytes(a) } else { <$t>::from_le_bytes(a) }) as f32
+                    (if big_endian {
+                        <$t>::from_be_bytes(a)
+                    } else {
+                        <$t>::from_le_bytes(a)
+                    }) as f32
                 })
                 .collect()
         };
@@ -96,7 +103,12 @@ pub(crate) fn data_bytes(dims: [u64; 3], kind: SampleType) -> Result<u64> {
 
 /// Normalise decoded samples: 8-bit unsigned by 255 (keeps transfer functions meaningful),
 /// everything else by its own min..max.
-pub(crate) fn to_volume(dims: [u32; 3], spacing: [f32; 3], samples: Vec<f32>, kind: SampleType) -> Result<Volume> {
+pub(crate) fn to_volume(
+    dims: [u32; 3],
+    spacing: [f32; 3],
+    samples: Vec<f32>,
+    kind: SampleType,
+) -> Result<Volume> {
     let range = (kind == SampleType::U8).then_some([0.0, 255.0]);
     Volume::from_samples(dims, spacing, samples, range)
 }
@@ -117,7 +129,11 @@ pub(crate) fn io_error(path: &Path, source: std::io::Error) -> Error {
 
 /// Load by extension: `.nrrd`/`.nhdr` → NRRD, `.den` → VolPack. Raw files need [`load_raw`].
 pub fn load_any(path: &Path) -> Result<Volume> {
-    let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or("")
+        .to_ascii_lowercase();
     match ext.as_str() {
         "nrrd" | "nhdr" => load_nrrd(path),
         "den" => load_den(path),

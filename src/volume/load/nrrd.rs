@@ -5,8 +5,8 @@ use std::io::Read;
 use std::path::Path;
 
 use super::{data_bytes, decode, format_error, io_error, to_volume, SampleType};
-use crate::volume::Volume;
 use crate::error::Result;
+use crate::volume::Volume;
 
 /// Longest header accepted (a guard against reading a binary file as text).
 const MAX_HEADER_BYTES: usize = 64 * 1024;
@@ -26,10 +26,14 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
     let mut lines = text.lines();
     let magic = lines.next().unwrap_or("");
     if !magic.starts_with("NRRD000") {
-        return Err(err(format!("not a NRRD file (first line '{}')", magic.chars().take(20).collect::<String>())));
+        return Err(err(format!(
+            "not a NRRD file (first line '{}')",
+            magic.chars().take(20).collect::<String>()
+        )));
     }
     let (mut kind, mut dims, mut dimension) = (None, None, None);
-    let (mut endian, mut encoding, mut spacing, mut data_file, mut byte_skip) = (None, None, None, None, 0u64);
+    let (mut endian, mut encoding, mut spacing, mut data_file, mut byte_skip) =
+        (None, None, None, None, 0u64);
     for line in lines {
         if line.is_empty() {
             break;
@@ -37,11 +41,24 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
         if line.starts_with('#') {
             continue;
         }
-        let Some((key, value)) = line.split_once(':') else { continue };
+        let Some((key, value)) = line.split_once(':') else {
+            continue;
+        };
         let value = value.trim_start_matches('=').trim();
         match key.trim().to_ascii_lowercase().as_str() {
-            "type" => kind = Some(SampleType::parse(value).ok_or_else(|| err(format!("unsupported type '{value}'")))?),
-            "dimension" => dimension = Some(value.parse::<u32>().map_err(|_| err(format!("bad dimension '{value}'")))?),
+            "type" => {
+                kind = Some(
+                    SampleType::parse(value)
+                        .ok_or_else(|| err(format!("unsupported type '{value}'")))?,
+                )
+            }
+            "dimension" => {
+                dimension = Some(
+                    value
+                        .parse::<u32>()
+                        .map_err(|_| err(format!("bad dimension '{value}'")))?,
+                )
+            }
             "sizes" => {
                 let v: Vec<u32> = value
                     .split_whitespace()
@@ -54,7 +71,10 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
             "spacings" => {
                 let v: Vec<f32> = value
                     .split_whitespace()
-                    .map(|s| s.parse().map_err(|_| err(format!("bad spacings '{value}'"))))
+                    .map(|s| {
+                        s.parse()
+                            .map_err(|_| err(format!("bad spacings '{value}'")))
+                    })
                     .collect::<Result<_>>()?;
                 spacing = Some(v);
             }
@@ -68,7 +88,11 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
                             .trim()
                             .trim_start_matches('(')
                             .split(',')
-                            .map(|c| c.trim().parse::<f32>().map_err(|_| err(format!("bad space directions '{value}'"))))
+                            .map(|c| {
+                                c.trim()
+                                    .parse::<f32>()
+                                    .map_err(|_| err(format!("bad space directions '{value}'")))
+                            })
                             .collect::<Result<_>>()?;
                         Ok(comps.iter().map(|c| c * c).sum::<f32>().sqrt())
                     })
@@ -77,22 +101,33 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
             }
             "data file" | "datafile" => data_file = Some(value.to_string()),
             "byte skip" | "byteskip" => {
-                byte_skip = value.parse().map_err(|_| err(format!("unsupported byte skip '{value}'")))?
+                byte_skip = value
+                    .parse()
+                    .map_err(|_| err(format!("unsupported byte skip '{value}'")))?
             }
             _ => {}
         }
     }
     let kind = kind.ok_or_else(|| err("missing field 'type'".into()))?;
     if dimension.ok_or_else(|| err("missing field 'dimension'".into()))? != 3 {
-        return Err(err(format!("dimension {} is not 3 (only scalar 3D volumes)", dimension.unwrap_or(0))));
+        return Err(err(format!(
+            "dimension {} is not 3 (only scalar 3D volumes)",
+            dimension.unwrap_or(0)
+        )));
     }
     let dims = dims.ok_or_else(|| err("missing field 'sizes'".into()))?;
-    let dims: [u32; 3] = dims.try_into().map_err(|d: Vec<u32>| err(format!("sizes has {} values, expected 3", d.len())))?;
+    let dims: [u32; 3] = dims
+        .try_into()
+        .map_err(|d: Vec<u32>| err(format!("sizes has {} values, expected 3", d.len())))?;
     let encoding = encoding.ok_or_else(|| err("missing field 'encoding'".into()))?;
     let gzip = match encoding.as_str() {
         "raw" => false,
         "gzip" | "gz" => true,
-        other => return Err(err(format!("unsupported encoding '{other}' (raw and gzip are)"))),
+        other => {
+            return Err(err(format!(
+                "unsupported encoding '{other}' (raw and gzip are)"
+            )))
+        }
     };
     let big_endian = match endian.as_deref() {
         Some("big") => true,
@@ -102,10 +137,20 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
     };
     let spacing = match spacing {
         None => [1.0; 3],
-        Some(v) if v.len() == 3 && v.iter().all(|s| s.is_finite() && *s > 0.0) => [v[0], v[1], v[2]],
+        Some(v) if v.len() == 3 && v.iter().all(|s| s.is_finite() && *s > 0.0) => {
+            [v[0], v[1], v[2]]
+        }
         Some(v) => return Err(err(format!("spacings {v:?}: need 3 positive values"))),
     };
-    Ok(Header { kind, dims, big_endian, gzip, spacing, data_file, byte_skip })
+    Ok(Header {
+        kind,
+        dims,
+        big_endian,
+        gzip,
+        spacing,
+        data_file,
+        byte_skip,
+    })
 }
 
 /// Load a `.nrrd` (attached data) or `.nhdr` (detached, `data file:` relative to it).
@@ -120,7 +165,12 @@ pub fn load_nrrd(path: &Path) -> Result<Volume> {
         Some(n) => String::from_utf8_lossy(&bytes[..n]).into_owned(),
         // A detached header may end without a blank line.
         None if bytes.len() <= MAX_HEADER_BYTES => String::from_utf8_lossy(&bytes).into_owned(),
-        None => return Err(format_error(path, "no end of header (blank line) in the first 64 KiB")),
+        None => {
+            return Err(format_error(
+                path,
+                "no end of header (blank line) in the first 64 KiB",
+            ))
+        }
     };
     let header = parse_header(path, &header_text)?;
     let expected = data_bytes(header.dims.map(u64::from), header.kind)?;
@@ -146,10 +196,17 @@ pub fn load_nrrd(path: &Path) -> Result<Volume> {
     if available < expected {
         return Err(format_error(
             path,
-            format!("truncated data: {available} bytes, {:?} {:?} samples need {expected}", header.dims, header.kind),
+            format!(
+                "truncated data: {available} bytes, {:?} {:?} samples need {expected}",
+                header.dims, header.kind
+            ),
         ));
     }
     let start = header.byte_skip as usize;
-    let samples = decode(&payload[start..start + expected as usize], header.kind, header.big_endian);
+    let samples = decode(
+        &payload[start..start + expected as usize],
+        header.kind,
+        header.big_endian,
+    );
     to_volume(header.dims, header.spacing, samples, header.kind)
 }

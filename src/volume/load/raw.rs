@@ -3,8 +3,8 @@
 use std::path::Path;
 
 use super::{data_bytes, decode, format_error, io_error, to_volume, SampleType};
-use crate::volume::Volume;
 use crate::error::Result;
+use crate::volume::Volume;
 
 /// How to read a raw file.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -24,7 +24,9 @@ pub struct RawSpec {
 /// Load a raw volume; the file must hold exactly `header_bytes` + the samples.
 pub fn load_raw(path: &Path, spec: &RawSpec) -> Result<Volume> {
     let needed = data_bytes(spec.dims.map(u64::from), spec.kind)? + spec.header_bytes;
-    let actual = std::fs::metadata(path).map_err(|e| io_error(path, e))?.len();
+    let actual = std::fs::metadata(path)
+        .map_err(|e| io_error(path, e))?
+        .len();
     if actual != needed {
         return Err(format_error(
             path,
@@ -39,6 +41,10 @@ pub fn load_raw(path: &Path, spec: &RawSpec) -> Result<Volume> {
         ));
     }
     let bytes = std::fs::read(path).map_err(|e| io_error(path, e))?;
-    let samples = decode(&bytes[spec.header_bytes as usize..], spec.kind, spec.big_endian);
+    let samples = decode(
+        &bytes[spec.header_bytes as usize..],
+        spec.kind,
+        spec.big_endian,
+    );
     to_volume(spec.dims, spec.spacing, samples, spec.kind)
 }

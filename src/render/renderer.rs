@@ -1,19 +1,20 @@
-//! The interface every mesh renderer shares: one frame of a mesh into a spatial target.
+//! The interface every renderer shares: one frame of a scene into a spatial target. A renderer
+//! per primitive (meshes: `Renderer<MeshBuffers>`, volumes: `Renderer<VolumeScene>`) and per
+//! method (single pass, N-pass, single view), all behind one camera + display + output.
 
 use crate::error::Result;
 use crate::frame::Frame;
-use crate::mesh::MeshBuffers;
 use crate::target::SpatialTarget;
 
-/// A renderer of triangle meshes (single pass, N-pass, single view…).
-pub trait MeshRenderer {
+/// Renders scenes of type `S` (single pass, N-pass, single view…).
+pub trait Renderer<S: ?Sized> {
     /// Record one frame into the caller's `encoder` (uniforms go through `queue`).
     fn encode(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         encoder: &mut wgpu::CommandEncoder,
-        mesh: &MeshBuffers,
+        scene: &S,
         frame: &Frame,
         target: &SpatialTarget,
     ) -> Result<()>;
@@ -23,14 +24,14 @@ pub trait MeshRenderer {
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
-        mesh: &MeshBuffers,
+        scene: &S,
         frame: &Frame,
         target: &SpatialTarget,
     ) -> Result<()> {
         let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
-            label: Some("mesh frame"),
+            label: Some("frame"),
         });
-        self.encode(device, queue, &mut encoder, mesh, frame, target)?;
+        self.encode(device, queue, &mut encoder, scene, frame, target)?;
         queue.submit([encoder.finish()]);
         crate::readback::wait_idle(device)
     }
