@@ -43,6 +43,7 @@ pub const STAGES: &[(&str, &str)] = &[
     wgsl!("mesh_single_pass_atomic.wgsl"),
     wgsl!("mesh_single_pass_atomic_resolve.wgsl"),
     wgsl!("mesh_single_pass_compute.wgsl"),
+    wgsl!("volume_raycast.wgsl"),
 ];
 
 fn lookup(table: &[(&str, &'static str)], name: &str) -> Option<&'static str> {

@@ -4,6 +4,7 @@
 //! - [`composite`]: N per-view layers → spatial image (shared by every N-pass baseline).
 //! - [`mesh_npass`]: the N-pass and single-view mesh baselines.
 //! - [`mesh_single_pass`]: single-pass meshes (covering quads + ray-triangle tests).
+//! - [`volume_raycast`]: volumes by ray marching (single pass, N-pass, single view).
 
 pub mod composite;
 pub mod mask_image;
@@ -14,6 +15,7 @@ mod renderer;
 mod specialize;
 pub(crate) mod texture;
 mod view_layers;
+pub mod volume_raycast;
 
 pub use composite::Compositor;
 pub use mask_image::MaskImageRenderer;
@@ -21,3 +23,4 @@ pub use mesh_npass::{MeshBaseline, MeshBaselineMethod};
 pub use mesh_single_pass::{CoverBounds, MeshSinglePass, MeshSinglePassOptions, Visibility};
 pub use renderer::Renderer;
 pub use view_layers::ViewLayers;
+pub use volume_raycast::{VolumeMethod, VolumeRaycaster, VolumeScene};

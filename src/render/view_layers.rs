@@ -45,6 +45,7 @@ impl ViewLayers {
             dimension: wgpu::TextureDimension::D2,
             format: SPATIAL_FORMAT,
             usage: wgpu::TextureUsages::RENDER_ATTACHMENT
+                | wgpu::TextureUsages::STORAGE_BINDING
                 | wgpu::TextureUsages::TEXTURE_BINDING
                 | wgpu::TextureUsages::COPY_SRC,
             view_formats: &[],

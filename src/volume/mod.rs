@@ -140,6 +140,39 @@ impl Volume {
         }
     }
 
+    /// Average blocks of `factor`³ voxels (edges: partial blocks); spacing grows by `factor`.
+    pub fn downsample(&self, factor: u32) -> Result<Self> {
+        if factor == 0 {
+            return Err(Error::invalid("downsample factor", "must be at least 1"));
+        }
+        let dims = self.dims.map(|d| d.div_ceil(factor));
+        let mut data = Vec::with_capacity((dims[0] * dims[1] * dims[2]) as usize);
+        let f = factor as i64;
+        for z in 0..dims[2] as i64 {
+            for y in 0..dims[1] as i64 {
+                for x in 0..dims[0] as i64 {
+                    let (mut sum, mut n) = (0.0, 0.0);
+                    for dz in 0..f {
+                        for dy in 0..f {
+                            for dx in 0..f {
+                                let (px, py, pz) = (x * f + dx, y * f + dy, z * f + dz);
+                                if px < self.dims[0] as i64
+                                    && py < self.dims[1] as i64
+                                    && pz < self.dims[2] as i64
+                                {
+                                    sum += self.at(px, py, pz);
+                                    n += 1.0;
+                                }
+                            }
+                        }
+                    }
+                    data.push(sum / n);
+                }
+            }
+        }
+        Volume::new(dims, self.spacing.map(|s| s * factor as f32), data)
+    }
+
     /// Smallest voxel spacing: the natural sampling distance.
     pub fn min_spacing(&self) -> f32 {
         self.spacing.iter().copied().fold(f32::INFINITY, f32::min)

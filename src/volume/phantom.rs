@@ -32,30 +32,31 @@ fn ellipsoid(p: [f32; 3], c: [f32; 3], r: [f32; 3]) -> f32 {
     (q[0] * q[0] + q[1] * q[1] + q[2] * q[2]).sqrt()
 }
 
+/// 1 inside an ellipsoid, 0 outside, with a smooth shell (no staircase contours when shaded).
+fn inside(r: f32) -> f32 {
+    const SOFT: f32 = 0.04;
+    let t = ((r - (1.0 - SOFT)) / (2.0 * SOFT)).clamp(0.0, 1.0);
+    1.0 - t * t * (3.0 - 2.0 * t)
+}
+
+fn mix(a: f32, b: f32, t: f32) -> f32 {
+    a + (b - a) * t
+}
+
 fn head_density(p: [f32; 3]) -> f32 {
-    let outer = ellipsoid(p, [0.0, 0.0, 0.0], [0.72, 0.88, 0.8]);
-    if outer > 1.0 {
-        return 0.0; // air
-    }
-    let skull_outer = ellipsoid(p, [0.0, 0.0, 0.0], [0.66, 0.82, 0.74]);
-    let skull_inner = ellipsoid(p, [0.0, 0.0, 0.0], [0.6, 0.76, 0.68]);
-    if skull_outer > 1.0 {
-        return 0.3; // skin and soft tissue
-    }
-    if skull_inner > 1.0 {
-        return 0.95; // bone
+    let origin = [0.0; 3];
+    let brain = 0.45 + 0.05 * (6.0 * p[0]).sin() * (5.0 * p[1]).cos();
+    // Layers from the outside in: skin and soft tissue, bone, brain with a little texture.
+    let mut d = 0.3 * inside(ellipsoid(p, origin, [0.72, 0.88, 0.8]));
+    d = mix(d, 0.95, inside(ellipsoid(p, origin, [0.66, 0.82, 0.74])));
+    d = mix(d, brain, inside(ellipsoid(p, origin, [0.6, 0.76, 0.68])));
+    for side in [-0.12f32, 0.12] {
+        d = mix(d, 0.1, inside(ellipsoid(p, [side, 0.05, 0.0], [0.07, 0.3, 0.12]))); // ventricles
     }
     for c in [[0.25, 0.3, 0.1], [-0.3, -0.2, -0.2], [0.1, -0.4, 0.35]] {
-        if ellipsoid(p, c, [0.08, 0.08, 0.08]) < 1.0 {
-            return 0.75; // dense lesions
-        }
+        d = mix(d, 0.75, inside(ellipsoid(p, c, [0.08, 0.08, 0.08]))); // dense lesions
     }
-    for side in [-0.12f32, 0.12] {
-        if ellipsoid(p, [side, 0.05, 0.0], [0.07, 0.3, 0.12]) < 1.0 {
-            return 0.1; // ventricles (fluid)
-        }
-    }
-    0.45 + 0.05 * (6.0 * p[0]).sin() * (5.0 * p[1]).cos() // brain with a little texture
+    d
 }
 
 /// The Marschner–Lobb test signal (f_M = 6, α = 0.25) on an `n³` grid over [−1, 1]³, the

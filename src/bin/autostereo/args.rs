@@ -1,6 +1,7 @@
 //! Flags shared by several subcommands, and their parsers.
 
 use anyhow::{bail, Context, Result};
+use autostereo::camera::MultiViewCamera;
 use autostereo::display::Display;
 
 /// `WxH` → [w, h], both ≥ 1.
@@ -82,4 +83,48 @@ pub fn check_output(path: &std::path::Path) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// Camera flags shared by the renderers.
+#[derive(clap::Args, Clone, Debug)]
+pub struct CameraArgs {
+    /// Separation of adjacent views, scene units (default: 5 % of the bounding radius).
+    #[arg(long)]
+    separation: Option<f32>,
+    /// Focal distance (default: camera to the bounding-box centre).
+    #[arg(long, conflicts_with = "focal_scale")]
+    focal: Option<f32>,
+    /// Focal distance as a multiple of the default.
+    #[arg(long)]
+    focal_scale: Option<f32>,
+    /// Vertical field of view, degrees.
+    #[arg(long, default_value_t = 30.0)]
+    fov: f32,
+}
+
+impl CameraArgs {
+    /// Frame `bounds` with these settings.
+    pub fn camera(
+        &self,
+        bounds: autostereo::camera::Bounds,
+        views: u32,
+        size: [u32; 2],
+    ) -> Result<MultiViewCamera> {
+        let aspect = size[0] as f32 / size[1] as f32;
+        let mut camera = MultiViewCamera::framing(
+            bounds,
+            views,
+            self.separation,
+            self.fov.to_radians(),
+            aspect,
+        )?;
+        if let Some(fd) = self.focal {
+            camera.focal_distance = fd;
+        }
+        if let Some(s) = self.focal_scale {
+            camera.focal_distance *= s;
+        }
+        camera.validate()?;
+        Ok(camera)
+    }
 }

@@ -3,7 +3,9 @@
 mod args;
 mod mask_cmd;
 mod mesh_cmd;
+mod run;
 mod views_cmd;
+mod volume_cmd;
 
 use clap::{Parser, Subcommand};
 
@@ -24,6 +26,8 @@ enum Command {
     Mask(mask_cmd::MaskArgs),
     /// Render a triangle mesh (OBJ; a generated torus scene when no file is given).
     Mesh(mesh_cmd::MeshArgs),
+    /// Render a volume (a built-in CT-like head when no file is given).
+    Volume(volume_cmd::VolumeArgs),
     /// Extract what one view zone sees from a spatial image, or a red/cyan anaglyph.
     Views(views_cmd::ViewsArgs),
 }
@@ -39,6 +43,7 @@ fn main() -> std::process::ExitCode {
         Command::Mask(a) => mask_cmd::run(a),
         Command::Mesh(a) => mesh_cmd::run(a),
         Command::Views(a) => views_cmd::run(a),
+        Command::Volume(a) => volume_cmd::run(a),
     };
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,

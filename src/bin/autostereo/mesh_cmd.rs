@@ -3,18 +3,15 @@
 use std::path::PathBuf;
 
 use anyhow::{bail, Context, Result};
-use autostereo::camera::MultiViewCamera;
 use autostereo::frame::Frame;
-use autostereo::image_io::compare;
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::{
     CoverBounds, MeshBaseline, MeshBaselineMethod, MeshSinglePass, MeshSinglePassOptions, Renderer,
     Visibility,
 };
-use autostereo::target::SpatialTarget;
-use autostereo::timing::{median, FrameTimer};
 
-use crate::args::{check_output, gpu, parse_size, DisplayArgs};
+use crate::args::{check_output, gpu, parse_size, CameraArgs, DisplayArgs};
+use crate::run::{compare_with, report, timed};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum Method {
@@ -83,50 +80,6 @@ pub struct MeshArgs {
     json: bool,
 }
 
-/// Camera flags shared by the renderers.
-#[derive(clap::Args, Clone, Debug)]
-pub struct CameraArgs {
-    /// Separation of adjacent views, scene units (default: 5 % of the bounding radius).
-    #[arg(long)]
-    separation: Option<f32>,
-    /// Focal distance (default: camera to the bounding-box centre).
-    #[arg(long, conflicts_with = "focal_scale")]
-    focal: Option<f32>,
-    /// Focal distance as a multiple of the default.
-    #[arg(long)]
-    focal_scale: Option<f32>,
-    /// Vertical field of view, degrees.
-    #[arg(long, default_value_t = 30.0)]
-    fov: f32,
-}
-
-impl CameraArgs {
-    /// Frame `bounds` with these settings.
-    pub fn camera(
-        &self,
-        bounds: autostereo::camera::Bounds,
-        views: u32,
-        size: [u32; 2],
-    ) -> Result<MultiViewCamera> {
-        let aspect = size[0] as f32 / size[1] as f32;
-        let mut camera = MultiViewCamera::framing(
-            bounds,
-            views,
-            self.separation,
-            self.fov.to_radians(),
-            aspect,
-        )?;
-        if let Some(fd) = self.focal {
-            camera.focal_distance = fd;
-        }
-        if let Some(s) = self.focal_scale {
-            camera.focal_distance *= s;
-        }
-        camera.validate()?;
-        Ok(camera)
-    }
-}
-
 pub fn run(args: MeshArgs) -> Result<()> {
     if let Some(out) = &args.out {
         check_output(out)?;
@@ -146,30 +99,18 @@ pub fn run(args: MeshArgs) -> Result<()> {
     let camera = args.camera.camera(bounds, display.views(), args.size)?;
     let frame = Frame::new(camera, display, args.size)?;
     let ctx = gpu()?;
-    let (device, queue) = (&ctx.device, &ctx.queue);
+    let device = &ctx.device;
     let buffers = MeshBuffers::new(device, &mesh)?;
-    let target = SpatialTarget::new(device, args.size)?;
     let mut renderer = renderer(device, &args)?;
-    let timer = FrameTimer::new(device, queue);
-    let mut times = Vec::new();
-    for i in 0..args.frames + 2 {
-        let ms = timer.time_frame(device, queue, |encoder| {
-            renderer.encode(device, queue, encoder, &buffers, &frame, &target)
-        })?;
-        if i >= 2 {
-            times.push(ms);
-        }
-    }
-    let ms = median(&times);
-    let image = target.read(device, queue)?;
+    let run = timed(&ctx, renderer.as_mut(), &buffers, &frame, args.frames)?;
     if let Some(out) = &args.out {
-        image.save_png(out)?;
+        run.image.save_png(out)?;
     }
     let diff = if args.compare {
-        let reference = SpatialTarget::new(device, args.size)?;
-        MeshBaseline::new(device, MeshBaselineMethod::NPass)?
-            .render(device, queue, &buffers, &frame, &reference)?;
-        Some(compare(&image, &reference.read(device, queue)?)?)
+        let mut npass = MeshBaseline::new(device, MeshBaselineMethod::NPass)?;
+        Some(compare_with(
+            &ctx, &mut npass, &buffers, &frame, &run.image,
+        )?)
     } else {
         None
     };
@@ -178,53 +119,36 @@ pub fn run(args: MeshArgs) -> Result<()> {
         Method::SingleView => "single-view",
         Method::SinglePass => "single-pass",
     };
-    if args.json {
-        let json = serde_json::json!({
-            "method": method_name,
-            "views": frame.camera.views,
-            "views_per_pixel": frame.display.views_per_pixel(),
-            "display": args.display.display,
-            "size": args.size,
-            "adapter": ctx.adapter_label(),
-            "ms": ms,
-            "frames": args.frames,
-            "timing": timer.source(),
-            "triangles": mesh.triangle_count(),
-            "focal_distance": frame.camera.focal_distance,
-            "separation": frame.camera.separation,
-        });
-        let mut json = json;
-        if args.method == Method::SinglePass {
-            json["visibility"] = single_pass_options(device, &args).visibility.name().into();
-            json["bounds"] = format!("{:?}", args.bounds).to_lowercase().into();
-        }
-        if let Some(d) = diff {
-            json["psnr_db"] = d.psnr_db.into();
-            json["max_abs_err"] = d.max_abs_err.into();
-            json["frac_off_2"] = d.frac_off_2.into();
-        }
-        println!("{json}");
-    } else {
-        eprintln!(
-            "{method_name}: {} triangles, {} views, {}x{}, {:.2} ms/frame (median of {}, {:?}) on {}",
-            mesh.triangle_count(),
-            frame.camera.views,
-            args.size[0],
-            args.size[1],
-            ms,
-            args.frames,
-            timer.source(),
-            ctx.adapter_label()
-        );
-        if let Some(d) = diff {
-            eprintln!(
-                "vs n-pass: PSNR {:.2} dB, max abs error {}, {:.4} % of subpixels off by > 2/255",
-                d.psnr_db,
-                d.max_abs_err,
-                100.0 * d.frac_off_2
-            );
-        }
+    let mut fields = serde_json::json!({
+        "method": method_name,
+        "views": frame.camera.views,
+        "views_per_pixel": frame.display.views_per_pixel(),
+        "display": args.display.display,
+        "size": args.size,
+        "adapter": ctx.adapter_label(),
+        "ms": run.ms,
+        "frames": args.frames,
+        "timing": run.timing,
+        "triangles": mesh.triangle_count(),
+        "focal_distance": frame.camera.focal_distance,
+        "separation": frame.camera.separation,
+    });
+    if args.method == Method::SinglePass {
+        fields["visibility"] = single_pass_options(device, &args).visibility.name().into();
+        fields["bounds"] = format!("{:?}", args.bounds).to_lowercase().into();
     }
+    let summary = format!(
+        "{method_name}: {} triangles, {} views, {}x{}, {:.2} ms/frame (median of {}, {:?}) on {}",
+        mesh.triangle_count(),
+        frame.camera.views,
+        args.size[0],
+        args.size[1],
+        run.ms,
+        args.frames,
+        run.timing,
+        ctx.adapter_label()
+    );
+    report(args.json, fields, diff, &summary);
     Ok(())
 }
 

@@ -1,0 +1,81 @@
+//! What the render commands share: timed frames, the N-pass comparison, the report.
+
+use anyhow::Result;
+use autostereo::frame::Frame;
+use autostereo::gpu::GpuContext;
+use autostereo::image_io::{compare, ImageDiff, RgbImage};
+use autostereo::render::Renderer;
+use autostereo::target::SpatialTarget;
+use autostereo::timing::{median, FrameTimer, TimingSource};
+
+/// Frames rendered before timing: lavapipe compiles shaders on first use.
+const WARM_UP_FRAMES: u32 = 2;
+
+/// The last frame's image and the median time over the timed frames.
+pub struct Timed {
+    pub image: RgbImage,
+    pub ms: f64,
+    pub timing: TimingSource,
+}
+
+/// Render `frames` timed frames after the warm-up; keep the last image.
+pub fn timed<S: ?Sized>(
+    ctx: &GpuContext,
+    renderer: &mut dyn Renderer<S>,
+    scene: &S,
+    frame: &Frame,
+    frames: u32,
+) -> Result<Timed> {
+    let (device, queue) = (&ctx.device, &ctx.queue);
+    let target = SpatialTarget::new(device, frame.size)?;
+    let timer = FrameTimer::new(device, queue);
+    let mut times = Vec::new();
+    for i in 0..frames + WARM_UP_FRAMES {
+        let ms = timer.time_frame(device, queue, |encoder| {
+            renderer.encode(device, queue, encoder, scene, frame, &target)
+        })?;
+        if i >= WARM_UP_FRAMES {
+            times.push(ms);
+        }
+    }
+    Ok(Timed {
+        image: target.read(device, queue)?,
+        ms: median(&times),
+        timing: timer.source(),
+    })
+}
+
+/// One frame of `renderer` (the N-pass oracle for `--compare`) compared with `image`.
+pub fn compare_with<S: ?Sized>(
+    ctx: &GpuContext,
+    renderer: &mut dyn Renderer<S>,
+    scene: &S,
+    frame: &Frame,
+    image: &RgbImage,
+) -> Result<ImageDiff> {
+    let target = SpatialTarget::new(&ctx.device, frame.size)?;
+    renderer.render(&ctx.device, &ctx.queue, scene, frame, &target)?;
+    Ok(compare(image, &target.read(&ctx.device, &ctx.queue)?)?)
+}
+
+/// Print the run: one JSON object on stdout (`json`), else a summary on stderr.
+pub fn report(json: bool, mut fields: serde_json::Value, diff: Option<ImageDiff>, summary: &str) {
+    if json {
+        if let Some(d) = diff {
+            fields["psnr_db"] = d.psnr_db.into();
+            fields["max_abs_err"] = d.max_abs_err.into();
+            fields["frac_off_2"] = d.frac_off_2.into();
+        }
+        println!("{fields}");
+    } else {
+        eprintln!("{summary}");
+        if let Some(d) = diff {
+            eprintln!(
+                "vs n-pass: PSNR {:.2} dB, max abs error {}, {:.4} % of subpixels off by > 2/255",
+                d.psnr_db,
+                d.max_abs_err,
+                100.0 * d.frac_off_2
+            );
+        }
+    }
+}

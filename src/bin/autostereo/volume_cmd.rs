@@ -1,0 +1,307 @@
+//! `autostereo volume`: render a volume (a built-in data set when no file is given).
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{bail, Context, Result};
+use autostereo::frame::Frame;
+use autostereo::image_io::RgbImage;
+use autostereo::readback::read_texture_rgba8;
+use autostereo::render::{Renderer, VolumeMethod, VolumeRaycaster, VolumeScene};
+use autostereo::views::anaglyph;
+use autostereo::volume::load::{load_any, load_raw, RawSpec, SampleType};
+use autostereo::volume::{phantom, TransferFunction, Volume};
+use glam::Mat4;
+
+use crate::args::{check_output, gpu, parse_size, CameraArgs, DisplayArgs};
+use crate::run::{compare_with, report, timed};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Method {
+    /// One pass: each pixel marches the rays of its K views.
+    SinglePass,
+    /// One render per view + mask compositing (the oracle), same sampling.
+    NPass,
+    /// The centre view only.
+    SingleView,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Builtin {
+    /// CT-like head phantom (skin, skull, brain, ventricles, lesions; anisotropic z).
+    Head,
+    /// The Marschner–Lobb test signal.
+    Ml,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum PathArg {
+    /// Compute pass: per-pixel ray marching, exact α per channel.
+    Compute,
+    /// The paper's view-aligned proxy slices (not built yet).
+    Slices,
+}
+
+#[derive(clap::Args)]
+pub struct VolumeArgs {
+    /// Volume file (.nrrd, .nhdr, .den, or raw with --raw-dims/--raw-type); a built-in data set
+    /// when omitted.
+    file: Option<PathBuf>,
+    /// Built-in data set used when no file is given.
+    #[arg(long, value_enum, default_value = "head")]
+    builtin: Builtin,
+    /// Voxels per axis of the built-in data set.
+    #[arg(long, default_value_t = 96)]
+    builtin_size: u32,
+    #[command(flatten)]
+    display: DisplayArgs,
+    #[command(flatten)]
+    camera: CameraArgs,
+    /// Image size WxH in pixels.
+    #[arg(long, value_parser = parse_size, default_value = "512x512")]
+    size: [u32; 2],
+    /// Rendering method.
+    #[arg(long, value_enum, default_value = "single-pass")]
+    method: Method,
+    /// Single-pass path.
+    #[arg(long, value_enum, default_value = "compute")]
+    path: PathArg,
+    /// Transfer function: a preset (ct-skin, ct-bone, mri, ml) or a file of `s r g b a` lines.
+    #[arg(long)]
+    tf: Option<String>,
+    /// Samples across the volume's diagonal.
+    #[arg(long, conflicts_with = "step")]
+    slices: Option<u32>,
+    /// Sampling distance in voxels of the smallest spacing (default 0.5).
+    #[arg(long)]
+    step: Option<f32>,
+    /// Rotate the volume by AX,AY,AZ degrees (about x, then y, then z).
+    #[arg(long, value_parser = parse_f32_triple, default_value = "0,0,0")]
+    rotate: [f32; 3],
+    /// Emission-absorption only (no gradient shading).
+    #[arg(long)]
+    no_shading: bool,
+    /// Raw files: dimensions X,Y,Z.
+    #[arg(long, value_parser = parse_u32_triple)]
+    raw_dims: Option<[u32; 3]>,
+    /// Raw files: sample type (u8, i8, u16, i16, u32, i32, f32, f64).
+    #[arg(long)]
+    raw_type: Option<String>,
+    /// Raw files: samples are big-endian.
+    #[arg(long)]
+    raw_big_endian: bool,
+    /// Raw files: bytes to skip before the samples.
+    #[arg(long, default_value_t = 0)]
+    raw_header: u64,
+    /// Voxel spacing X,Y,Z (overrides the file's).
+    #[arg(long, value_parser = parse_f32_triple)]
+    spacing: Option<[f32; 3]>,
+    /// Average blocks of F³ voxels first (for volumes over the adapter's 3D texture limit).
+    #[arg(long, default_value_t = 1)]
+    downsample: u32,
+    /// Timed frames (after two warm-up frames); the median is reported.
+    #[arg(long, default_value_t = 1)]
+    frames: u32,
+    /// Output PNG of the spatial image.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Also write every view as DIR/view_NN.png.
+    #[arg(long)]
+    views_out: Option<PathBuf>,
+    /// Also write a red/cyan anaglyph of the two views around the centre.
+    #[arg(long)]
+    anaglyph: Option<PathBuf>,
+    /// Also render N-pass and report psnr_db, max_abs_err, frac_off_2 against it.
+    #[arg(long)]
+    compare: bool,
+    /// Print one JSON object with the run's parameters and timing on stdout.
+    #[arg(long)]
+    json: bool,
+}
+
+fn parse_triple<T: std::str::FromStr>(s: &str) -> Result<[T; 3], String> {
+    let parts: Vec<&str> = s.split(',').collect();
+    let bad = || format!("'{s}' is not three comma-separated numbers");
+    if parts.len() != 3 {
+        return Err(bad());
+    }
+    let mut out = Vec::with_capacity(3);
+    for p in parts {
+        out.push(p.trim().parse::<T>().map_err(|_| bad())?);
+    }
+    out.try_into().map_err(|_| bad())
+}
+
+fn parse_u32_triple(s: &str) -> Result<[u32; 3], String> {
+    parse_triple(s)
+}
+
+fn parse_f32_triple(s: &str) -> Result<[f32; 3], String> {
+    let v: [f32; 3] = parse_triple(s)?;
+    if v.iter().all(|x| x.is_finite()) {
+        Ok(v)
+    } else {
+        Err(format!("'{s}' has a non-finite value"))
+    }
+}
+
+fn load(args: &VolumeArgs) -> Result<(Volume, String)> {
+    let (mut volume, default_tf) = match &args.file {
+        None => match args.builtin {
+            Builtin::Head => (phantom::ct_head(args.builtin_size)?, "ct-skin"),
+            Builtin::Ml => (phantom::marschner_lobb(args.builtin_size)?, "ml"),
+        },
+        Some(path) => {
+            let volume = match (args.raw_dims, &args.raw_type) {
+                (Some(dims), Some(kind)) => {
+                    let kind = SampleType::parse(kind)
+                        .with_context(|| format!("unknown --raw-type '{kind}'"))?;
+                    let spec = RawSpec {
+                        dims,
+                        kind,
+                        big_endian: args.raw_big_endian,
+                        spacing: args.spacing.unwrap_or([1.0; 3]),
+                        header_bytes: args.raw_header,
+                    };
+                    load_raw(path, &spec)?
+                }
+                (None, None) => load_any(path)?,
+                _ => bail!("raw volumes need both --raw-dims and --raw-type"),
+            };
+            let tf = if path.extension().is_some_and(|e| e == "den") {
+                "mri"
+            } else {
+                "ct-skin"
+            };
+            (volume, tf)
+        }
+    };
+    if let Some(spacing) = args.spacing {
+        volume = Volume::new(volume.dims, spacing, volume.data)?;
+    }
+    if args.downsample > 1 {
+        volume = volume.downsample(args.downsample)?;
+    }
+    Ok((volume, default_tf.to_string()))
+}
+
+fn transfer(args: &VolumeArgs, default: &str) -> Result<TransferFunction> {
+    let name = args.tf.as_deref().unwrap_or(default);
+    if Path::new(name).is_file() {
+        Ok(TransferFunction::load(Path::new(name))?)
+    } else {
+        Ok(TransferFunction::preset(name)?)
+    }
+}
+
+fn raycaster(device: &wgpu::Device, method: Method) -> Result<VolumeRaycaster> {
+    Ok(VolumeRaycaster::new(
+        device,
+        match method {
+            Method::SinglePass => VolumeMethod::SinglePass,
+            Method::NPass => VolumeMethod::NPass,
+            Method::SingleView => VolumeMethod::SingleView,
+        },
+    )?)
+}
+
+pub fn run(args: VolumeArgs) -> Result<()> {
+    for path in [&args.out, &args.anaglyph].into_iter().flatten() {
+        check_output(path)?;
+    }
+    if args.frames == 0 {
+        bail!("--frames must be at least 1");
+    }
+    if args.path == PathArg::Slices {
+        bail!("--path slices (the paper's proxy-slice fragment path) is not implemented yet; use --path compute");
+    }
+    let display = args.display.display()?;
+    let (volume, default_tf) = load(&args)?;
+    let tf = transfer(&args, &default_tf)?;
+    let step = match (args.slices, args.step) {
+        (Some(n), _) => Some(VolumeScene::step_for_slices(&volume, n)),
+        (None, Some(s)) => Some(s * volume.min_spacing()),
+        (None, None) => None,
+    };
+    let [ax, ay, az] = args.rotate.map(f32::to_radians);
+    let model = Mat4::from_rotation_z(az) * Mat4::from_rotation_y(ay) * Mat4::from_rotation_x(ax);
+    let bounds = volume.bounds();
+    let camera = args.camera.camera(bounds, display.views(), args.size)?;
+    let frame = Frame::new(camera, display, args.size)?;
+    let ctx = gpu()?;
+    let mut scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, tf, step, model)?;
+    scene.shade = !args.no_shading;
+    let mut renderer = raycaster(&ctx.device, args.method)?;
+    let run = timed(&ctx, &mut renderer, &scene, &frame, args.frames)?;
+    if let Some(out) = &args.out {
+        run.image.save_png(out)?;
+    }
+    if let Some(path) = &args.anaglyph {
+        let n = frame.camera.views;
+        let (l, r) = (n.saturating_sub(1) / 2, (n / 2).min(n - 1));
+        anaglyph(&run.image, &frame.display.mask(), l, r).save_png(path)?;
+    }
+    if let Some(dir) = &args.views_out {
+        write_views(&ctx, &scene, &frame, dir)?;
+    }
+    let diff = if args.compare {
+        let mut npass = raycaster(&ctx.device, Method::NPass)?;
+        Some(compare_with(&ctx, &mut npass, &scene, &frame, &run.image)?)
+    } else {
+        None
+    };
+    let method = match args.method {
+        Method::SinglePass => "single-pass",
+        Method::NPass => "n-pass",
+        Method::SingleView => "single-view",
+    };
+    let fields = serde_json::json!({
+        "method": method,
+        "path": "compute",
+        "views": frame.camera.views,
+        "views_per_pixel": frame.display.views_per_pixel(),
+        "display": args.display.display,
+        "size": args.size,
+        "adapter": ctx.adapter_label(),
+        "ms": run.ms,
+        "frames": args.frames,
+        "timing": run.timing,
+        "volume_dims": volume.dims,
+        "spacing": volume.spacing,
+        "step": scene.step,
+        "samples_per_ray_max": (scene.extent.length() / scene.step).ceil(),
+        "focal_distance": frame.camera.focal_distance,
+        "separation": frame.camera.separation,
+    });
+    let summary = format!(
+        "{method}: volume {:?}, {} views, {}x{}, {:.2} ms/frame (median of {}, {:?}) on {}",
+        volume.dims,
+        frame.camera.views,
+        args.size[0],
+        args.size[1],
+        run.ms,
+        args.frames,
+        run.timing,
+        ctx.adapter_label()
+    );
+    report(args.json, fields, diff, &summary);
+    Ok(())
+}
+
+/// Every view as its own PNG (the N-pass layers).
+fn write_views(
+    ctx: &autostereo::gpu::GpuContext,
+    scene: &VolumeScene,
+    frame: &Frame,
+    dir: &Path,
+) -> Result<()> {
+    std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+    let mut npass = raycaster(&ctx.device, Method::NPass)?;
+    let target = autostereo::target::SpatialTarget::new(&ctx.device, frame.size)?;
+    npass.render(&ctx.device, &ctx.queue, scene, frame, &target)?;
+    let layers = npass.view_layers().context("N-pass allocates its layers")?;
+    for i in 0..frame.camera.views {
+        let rgba = read_texture_rgba8(&ctx.device, &ctx.queue, &layers.texture, i)?;
+        RgbImage::from_rgba(frame.size, &rgba).save_png(&dir.join(format!("view_{i:02}.png")))?;
+    }
+    Ok(())
+}
