@@ -51,7 +51,11 @@ fn head_density(p: [f32; 3]) -> f32 {
     d = mix(d, 0.95, inside(ellipsoid(p, origin, [0.66, 0.82, 0.74])));
     d = mix(d, brain, inside(ellipsoid(p, origin, [0.6, 0.76, 0.68])));
     for side in [-0.12f32, 0.12] {
-        d = mix(d, 0.1, inside(ellipsoid(p, [side, 0.05, 0.0], [0.07, 0.3, 0.12]))); // ventricles
+        d = mix(
+            d,
+            0.1,
+            inside(ellipsoid(p, [side, 0.05, 0.0], [0.07, 0.3, 0.12])),
+        ); // ventricles
     }
     for c in [[0.25, 0.3, 0.1], [-0.3, -0.2, -0.2], [0.1, -0.4, 0.35]] {
         d = mix(d, 0.75, inside(ellipsoid(p, c, [0.08, 0.08, 0.08]))); // dense lesions

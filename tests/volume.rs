@@ -1,0 +1,121 @@
+//! Volumes on the GPU: single pass against the N-pass oracle with identical sampling (rotated,
+//! focal plane in front of / inside / behind), separation 0 against the single view, degenerate
+//! volumes.
+
+mod common;
+
+use autostereo::camera::MultiViewCamera;
+use autostereo::display::Display;
+use autostereo::frame::Frame;
+use autostereo::image_io::{compare, RgbImage};
+use autostereo::render::{Renderer, VolumeMethod, VolumeRaycaster, VolumeScene};
+use autostereo::target::SpatialTarget;
+use autostereo::volume::{phantom, TransferFunction, Volume};
+use glam::Mat4;
+
+const SIZE: [u32; 2] = [96, 80];
+
+fn scene(volume: &Volume, tf: &str, rotate: Mat4) -> VolumeScene {
+    let ctx = common::gpu();
+    VolumeScene::new(
+        &ctx.device,
+        &ctx.queue,
+        volume,
+        TransferFunction::preset(tf).unwrap(),
+        None,
+        rotate,
+    )
+    .unwrap()
+}
+
+fn frame(volume: &Volume, spec: &str, separation_share: f32, focal_scale: f32) -> Frame {
+    let display = Display::parse(spec).unwrap();
+    let bounds = volume.bounds();
+    let mut camera = MultiViewCamera::framing(
+        bounds,
+        display.views(),
+        Some(separation_share * bounds.radius()),
+        0.6,
+        SIZE[0] as f32 / SIZE[1] as f32,
+    )
+    .unwrap();
+    camera.focal_distance *= focal_scale;
+    Frame::new(camera, display, SIZE).unwrap()
+}
+
+fn render(scene: &VolumeScene, frame: &Frame, method: VolumeMethod) -> RgbImage {
+    let ctx = common::gpu();
+    let target = SpatialTarget::new(&ctx.device, frame.size).unwrap();
+    VolumeRaycaster::new(&ctx.device, method)
+        .unwrap()
+        .render(&ctx.device, &ctx.queue, scene, frame, &target)
+        .unwrap();
+    target.read(&ctx.device, &ctx.queue).unwrap()
+}
+
+fn lit(image: &RgbImage) -> usize {
+    image.data.iter().filter(|&&v| v > 8).count()
+}
+
+#[test]
+fn single_pass_matches_npass_rotated_with_focal_plane_in_front_inside_and_behind() {
+    let head = phantom::ct_head(40).unwrap();
+    let ml = phantom::marschner_lobb(32).unwrap();
+    let rotate = Mat4::from_rotation_y(0.6) * Mat4::from_rotation_x(0.35);
+    for (name, volume, tf) in [("head", &head, "ct-skin"), ("ml", &ml, "ml")] {
+        let scene = scene(volume, tf, rotate);
+        for (place, scale) in [("front", 0.75), ("inside", 1.0), ("behind", 1.3)] {
+            for spec in ["hubner8", "lenticular:5", "slanted:16,7.5,-0.5,0.3"] {
+                let frame = frame(volume, spec, 0.06, scale);
+                let npass = render(&scene, &frame, VolumeMethod::NPass);
+                let single = render(&scene, &frame, VolumeMethod::SinglePass);
+                assert!(
+                    lit(&npass) > npass.data.len() / 10,
+                    "{name}: the volume must be visible"
+                );
+                let diff = compare(&single, &npass).unwrap();
+                if diff.psnr_db < 45.0 {
+                    common::save_diff(&format!("volume-{name}-{place}"), &single, &npass);
+                }
+                assert!(diff.psnr_db >= 45.0, "{name} {place} {spec}: {diff:?}");
+            }
+        }
+        // The views really differ: the test is not comparing N copies of one image.
+        let frame = frame(volume, "hubner8", 0.06, 1.3);
+        let mono = render(&scene, &frame, VolumeMethod::SingleView);
+        let single = render(&scene, &frame, VolumeMethod::SinglePass);
+        assert!(
+            compare(&single, &mono).unwrap().frac_off_2 > 0.01,
+            "{name}: no parallax?"
+        );
+    }
+}
+
+#[test]
+fn zero_separation_equals_single_view() {
+    let head = phantom::ct_head(32).unwrap();
+    let scene = scene(&head, "ct-skin", Mat4::from_rotation_z(0.3));
+    let frame = frame(&head, "hubner8", 0.0, 1.0);
+    let single = render(&scene, &frame, VolumeMethod::SinglePass);
+    let mono = render(&scene, &frame, VolumeMethod::SingleView);
+    assert_eq!(single, mono);
+}
+
+#[test]
+fn tiny_and_flat_volumes_render_without_garbage() {
+    for (dims, data) in [
+        ([1, 1, 1], vec![0.9]),
+        ([8, 8, 1], (0..64).map(|i| (i % 8) as f32 / 8.0).collect()),
+        ([1, 6, 6], vec![0.8; 36]),
+    ] {
+        let volume = Volume::new(dims, [1.0; 3], data).unwrap();
+        let scene = scene(&volume, "ct-bone", Mat4::from_rotation_y(0.4));
+        let frame = frame(&volume, "hubner8", 0.05, 1.0);
+        let single = render(&scene, &frame, VolumeMethod::SinglePass);
+        let npass = render(&scene, &frame, VolumeMethod::NPass);
+        assert!(
+            compare(&single, &npass).unwrap().psnr_db >= 45.0,
+            "{dims:?}"
+        );
+    }
+}
