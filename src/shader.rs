@@ -29,6 +29,7 @@ const SHARED: &[(&str, &str)] = &[
     wgsl!("shared/cover_data.wgsl"),
     wgsl!("shared/cover.wgsl"),
     wgsl!("shared/resolve.wgsl"),
+    wgsl!("shared/volume.wgsl"),
 ];
 
 /// One WGSL file per pipeline stage, by file name.
@@ -44,6 +45,8 @@ pub const STAGES: &[(&str, &str)] = &[
     wgsl!("mesh_single_pass_atomic_resolve.wgsl"),
     wgsl!("mesh_single_pass_compute.wgsl"),
     wgsl!("volume_raycast.wgsl"),
+    wgsl!("volume_slices.wgsl"),
+    wgsl!("volume_slices_resolve.wgsl"),
 ];
 
 fn lookup(table: &[(&str, &'static str)], name: &str) -> Option<&'static str> {

@@ -8,34 +8,9 @@
 // samples: the two methods differ only in which views they evaluate per pixel.
 #import shared/frame.wgsl
 #import shared/multiview.wgsl
+#import shared/volume.wgsl
 
-// Keep in sync with `VolumeParams` in src/render/volume_raycast.rs.
-struct VolumeParams {
-    tex_from_eye: mat4x4<f32>,    // eye space → texture coordinates (box = [0, 1]³)
-    normal_from_tex: mat4x4<f32>, // gradient (volume space) → eye-space normal direction
-    step: f32,                    // Δ, eye-depth distance between samples
-    fixed_offset: f32,            // camera offset vd when use_mask == 0
-    use_mask: u32,                // 1: K views per pixel from the mask; 0: one fixed camera
-    max_samples: u32,             // guard against runaway loops
-    shade: u32,                   // 1: Blinn-Phong from gradients; 0: emission-absorption only
-    _pad0: u32,
-    _pad1: u32,
-    _pad2: u32,
-}
-
-@group(1) @binding(0) var volume: texture_3d<f32>;
-@group(1) @binding(1) var linear_clamp: sampler;
-@group(1) @binding(2) var preintegration: texture_2d<f32>;
-@group(1) @binding(3) var<uniform> params: VolumeParams;
 @group(2) @binding(0) var output: texture_storage_2d<rgba8unorm, write>;
-
-const TABLE_SIZE: f32 = 256.0;
-const OPAQUE: f32 = 0.995;
-
-// Table coordinate of scalar s (texel centres hold s = i / 255).
-fn table_coord(s: f32) -> f32 {
-    return (s * (TABLE_SIZE - 1.0) + 0.5) / TABLE_SIZE;
-}
 
 // Premultiplied RGBA along the ray origin + t·dir (eye depth t·fd).
 fn march(origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
@@ -61,26 +36,8 @@ fn march(origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
     for (var i = 1u; i <= count; i++) {
         let depth = (k0 + f32(i)) * params.step;
         let back = textureSampleLevel(volume, linear_clamp, o + (depth / fd) * d, 0.0);
-        let seg = textureSampleLevel(preintegration, linear_clamp, vec2<f32>(table_coord(back.a), table_coord(front.a)), 0.0);
-        var rgb = seg.rgb;
-        if (params.shade == 1u && seg.a > 0.0) {
-            let g = (params.normal_from_tex * vec4<f32>(front.xyz + back.xyz, 0.0)).xyz;
-            if (dot(g, g) > 1e-12) {
-                let position = origin + (depth / fd) * dir;
-                // Paper: C = Ia·c + Id·c·(N·L) + Is·c·(N·H)^sh, c the pre-integrated colour.
-                let light = frame.light;
-                let to_eye = normalize(origin - position);
-                var n = normalize(-g);
-                if (dot(n, to_eye) < 0.0) {
-                    n = -n;
-                }
-                let h = normalize(light.direction.xyz + to_eye);
-                let diffuse = max(dot(n, light.direction.xyz), 0.0);
-                let specular = pow(max(dot(n, h), 0.0), light.specular.w);
-                rgb = seg.rgb * (light.ambient.rgb + light.diffuse.rgb * diffuse + light.specular.rgb * specular);
-            }
-        }
-        acc = vec4<f32>(acc.rgb + (1.0 - acc.a) * rgb, acc.a + (1.0 - acc.a) * seg.a);
+        let seg = shaded_segment(front, back, origin + (depth / fd) * dir, origin);
+        acc = vec4<f32>(acc.rgb + (1.0 - acc.a) * seg.rgb, acc.a + (1.0 - acc.a) * seg.a);
         if (acc.a >= OPAQUE) {
             break;
         }

@@ -16,6 +16,7 @@ mod specialize;
 pub(crate) mod texture;
 mod view_layers;
 pub mod volume_raycast;
+mod volume_resources;
 
 pub use composite::Compositor;
 pub use mask_image::MaskImageRenderer;
@@ -24,3 +25,4 @@ pub use mesh_single_pass::{CoverBounds, MeshSinglePass, MeshSinglePassOptions, V
 pub use renderer::Renderer;
 pub use view_layers::ViewLayers;
 pub use volume_raycast::{VolumeMethod, VolumeRaycaster, VolumeScene};
+pub use volume_resources::VolumeParams;

@@ -1,0 +1,182 @@
+//! What every volume renderer binds at group 1: the volume texture, a linear sampler, the
+//! pre-integration table (cached per transfer function and sampling distance) and the
+//! per-dispatch [`VolumeParams`] (dynamic offsets).
+
+use bytemuck::{Pod, Zeroable};
+use glam::{Mat3, Mat4, Vec3};
+
+use super::volume_raycast::VolumeScene;
+use crate::error::Result;
+use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
+use crate::volume::{PreintegrationTable, PreintegrationTexture, TransferFunction};
+
+/// Per-dispatch constants. Keep in sync with `struct VolumeParams` in `wgsl/shared/volume.wgsl`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct VolumeParams {
+    tex_from_eye: [[f32; 4]; 4],
+    normal_from_tex: [[f32; 4]; 4],
+    step: f32,
+    fixed_offset: f32,
+    use_mask: u32,
+    max_samples: u32,
+    shade: u32,
+    _pad: [u32; 3],
+}
+const _: () = assert!(std::mem::size_of::<VolumeParams>() == 160);
+
+pub(crate) struct VolumeResources {
+    pub frame: FrameBinding,
+    pub frame_layout: wgpu::BindGroupLayout,
+    pub volume_layout: wgpu::BindGroupLayout,
+    sampler: wgpu::Sampler,
+    params: Option<(wgpu::Buffer, u32)>,
+    pub params_stride: u64,
+    table: Option<(TransferFunction, f32, PreintegrationTexture)>,
+}
+
+impl VolumeResources {
+    /// Layouts for group 1 visible to `stages`.
+    pub fn new(device: &wgpu::Device, stages: wgpu::ShaderStages) -> Self {
+        let entry = |binding, ty| wgpu::BindGroupLayoutEntry {
+            binding,
+            visibility: stages,
+            ty,
+            count: None,
+        };
+        let texture = |dim| wgpu::BindingType::Texture {
+            sample_type: wgpu::TextureSampleType::Float { filterable: true },
+            view_dimension: dim,
+            multisampled: false,
+        };
+        let volume_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("volume"),
+            entries: &[
+                entry(0, texture(wgpu::TextureViewDimension::D3)),
+                entry(
+                    1,
+                    wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+                ),
+                entry(2, texture(wgpu::TextureViewDimension::D2)),
+                entry(
+                    3,
+                    wgpu::BindingType::Buffer {
+                        ty: wgpu::BufferBindingType::Uniform,
+                        has_dynamic_offset: true,
+                        min_binding_size: wgpu::BufferSize::new(
+                            std::mem::size_of::<VolumeParams>() as u64,
+                        ),
+                    },
+                ),
+            ],
+        });
+        let frame_layout = frame_bind_group_layout(device);
+        let align = device.limits().min_uniform_buffer_offset_alignment as u64;
+        Self {
+            frame: FrameBinding::new(device, &frame_layout),
+            frame_layout,
+            volume_layout,
+            sampler: device.create_sampler(&wgpu::SamplerDescriptor {
+                label: Some("volume linear clamp"),
+                mag_filter: wgpu::FilterMode::Linear,
+                min_filter: wgpu::FilterMode::Linear,
+                ..Default::default()
+            }),
+            params: None,
+            params_stride: (std::mem::size_of::<VolumeParams>() as u64).div_ceil(align) * align,
+            table: None,
+        }
+    }
+
+    /// Constants for one dispatch: all K views per pixel (`use_mask`) or one camera at `offset`.
+    pub fn params(
+        scene: &VolumeScene,
+        frame: &Frame,
+        use_mask: bool,
+        fixed_offset: f32,
+    ) -> VolumeParams {
+        let eye_from_model = frame.camera.eye_from_world * scene.model;
+        let tex_from_model =
+            Mat4::from_translation(Vec3::splat(0.5)) * Mat4::from_scale(scene.extent.recip());
+        let normal = Mat3::from_mat4(eye_from_model).inverse().transpose();
+        VolumeParams {
+            tex_from_eye: (tex_from_model * eye_from_model.inverse()).to_cols_array_2d(),
+            normal_from_tex: Mat4::from_mat3(normal).to_cols_array_2d(),
+            step: scene.step,
+            fixed_offset,
+            use_mask: use_mask as u32,
+            max_samples: (scene.extent.length() / scene.step).ceil() as u32 + 2,
+            shade: scene.shade as u32,
+            _pad: [0; 3],
+        }
+    }
+
+    /// Upload the frame and the dispatches' constants; then the group-1 bind group (the
+    /// pre-integration table is rebuilt only when the transfer function or step changed).
+    pub fn prepare(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        scene: &VolumeScene,
+        frame: &Frame,
+        dispatches: &[VolumeParams],
+    ) -> Result<wgpu::BindGroup> {
+        self.frame.write(queue, frame);
+        let count = dispatches.len() as u32;
+        if self.params.as_ref().is_none_or(|(_, c)| *c < count) {
+            let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("volume params"),
+                size: self.params_stride * count as u64,
+                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+            self.params = Some((buffer, count));
+        }
+        let mut bytes = vec![0u8; (self.params_stride * count as u64) as usize];
+        for (i, p) in dispatches.iter().enumerate() {
+            let at = i * self.params_stride as usize;
+            bytes[at..at + std::mem::size_of::<VolumeParams>()]
+                .copy_from_slice(bytemuck::bytes_of(p));
+        }
+        let buffer = &self.params.as_ref().expect("allocated above").0;
+        queue.write_buffer(buffer, 0, &bytes);
+
+        let step_voxels = scene.step / scene.voxel;
+        let fresh = self
+            .table
+            .as_ref()
+            .is_some_and(|(tf, step, _)| *tf == scene.transfer && *step == step_voxels);
+        if !fresh {
+            let table = PreintegrationTable::new(&scene.transfer, step_voxels)?;
+            let texture = PreintegrationTexture::new(device, queue, &table);
+            self.table = Some((scene.transfer.clone(), step_voxels, texture));
+        }
+        let table = &self.table.as_ref().expect("built above").2.view;
+        Ok(device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("volume"),
+            layout: &self.volume_layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: wgpu::BindingResource::TextureView(&scene.texture.view),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: wgpu::BindingResource::Sampler(&self.sampler),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: wgpu::BindingResource::TextureView(table),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 3,
+                    resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+                        buffer,
+                        offset: 0,
+                        size: wgpu::BufferSize::new(std::mem::size_of::<VolumeParams>() as u64),
+                    }),
+                },
+            ],
+        }))
+    }
+}
