@@ -8,7 +8,9 @@ use autostereo::camera::MultiViewCamera;
 use autostereo::display::Display;
 use autostereo::frame::Frame;
 use autostereo::image_io::{compare, RgbImage};
-use autostereo::render::{Renderer, VolumeMethod, VolumeRaycaster, VolumeScene};
+use autostereo::render::{
+    AlphaMode, Renderer, VolumeMethod, VolumeRaycaster, VolumeScene, VolumeSlicer,
+};
 use autostereo::target::SpatialTarget;
 use autostereo::volume::{phantom, TransferFunction, Volume};
 use glam::Mat4;
@@ -47,6 +49,16 @@ fn render(scene: &VolumeScene, frame: &Frame, method: VolumeMethod) -> RgbImage 
     let ctx = common::gpu();
     let target = SpatialTarget::new(&ctx.device, frame.size).unwrap();
     VolumeRaycaster::new(&ctx.device, method)
+        .unwrap()
+        .render(&ctx.device, &ctx.queue, scene, frame, &target)
+        .unwrap();
+    target.read(&ctx.device, &ctx.queue).unwrap()
+}
+
+fn render_slices(scene: &VolumeScene, frame: &Frame, alpha: AlphaMode) -> RgbImage {
+    let ctx = common::gpu();
+    let target = SpatialTarget::new(&ctx.device, frame.size).unwrap();
+    VolumeSlicer::new(&ctx.device, alpha)
         .unwrap()
         .render(&ctx.device, &ctx.queue, scene, frame, &target)
         .unwrap();
@@ -117,5 +129,43 @@ fn tiny_and_flat_volumes_render_without_garbage() {
             compare(&single, &npass).unwrap().psnr_db >= 45.0,
             "{dims:?}"
         );
+    }
+}
+
+/// The paper's proxy-slice path: exact α matches N-pass; the paper's averaged α is measured
+/// and bounded.
+#[test]
+fn slice_path_matches_npass_with_exact_alpha_and_bounds_the_paper_alpha() {
+    let head = phantom::ct_head(40).unwrap();
+    let ml = phantom::marschner_lobb(32).unwrap();
+    let rotate = Mat4::from_rotation_y(-0.5) * Mat4::from_rotation_x(0.3);
+    for (name, volume, tf) in [("head", &head, "ct-skin"), ("ml", &ml, "ml")] {
+        let scene = scene(volume, tf, rotate);
+        for (place, scale) in [("front", 0.75), ("inside", 1.0), ("behind", 1.3)] {
+            for spec in ["hubner8", "lenticular:5"] {
+                let frame = frame(volume, spec, 0.06, scale);
+                let npass = render(&scene, &frame, VolumeMethod::NPass);
+                let exact = render_slices(&scene, &frame, AlphaMode::Exact);
+                let diff = compare(&exact, &npass).unwrap();
+                if diff.psnr_db < 45.0 {
+                    common::save_diff(&format!("slices-{name}-{place}"), &exact, &npass);
+                }
+                assert!(
+                    diff.psnr_db >= 45.0,
+                    "slices exact {name} {place} {spec}: {diff:?}"
+                );
+                let paper =
+                    compare(&render_slices(&scene, &frame, AlphaMode::Paper), &npass).unwrap();
+                eprintln!("paper α {name} {place} {spec}: {paper:?}");
+                assert!(
+                    paper.psnr_db > 20.0,
+                    "paper α {name} {place} {spec}: {paper:?}"
+                );
+                if spec == "lenticular:5" {
+                    // K = 1: the mean of one α is that α.
+                    assert!(paper.psnr_db >= 45.0, "{paper:?}");
+                }
+            }
+        }
     }
 }

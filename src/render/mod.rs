@@ -17,6 +17,7 @@ pub(crate) mod texture;
 mod view_layers;
 pub mod volume_raycast;
 mod volume_resources;
+pub mod volume_slices;
 
 pub use composite::Compositor;
 pub use mask_image::MaskImageRenderer;
@@ -26,3 +27,4 @@ pub use renderer::Renderer;
 pub use view_layers::ViewLayers;
 pub use volume_raycast::{VolumeMethod, VolumeRaycaster, VolumeScene};
 pub use volume_resources::VolumeParams;
+pub use volume_slices::{AlphaMode, VolumeSlicer};

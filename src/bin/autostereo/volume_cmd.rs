@@ -6,7 +6,9 @@ use anyhow::{bail, Context, Result};
 use autostereo::frame::Frame;
 use autostereo::image_io::RgbImage;
 use autostereo::readback::read_texture_rgba8;
-use autostereo::render::{Renderer, VolumeMethod, VolumeRaycaster, VolumeScene};
+use autostereo::render::{
+    AlphaMode, Renderer, VolumeMethod, VolumeRaycaster, VolumeScene, VolumeSlicer,
+};
 use autostereo::views::anaglyph;
 use autostereo::volume::load::{load_any, load_raw, RawSpec, SampleType};
 use autostereo::volume::{phantom, TransferFunction, Volume};
@@ -37,8 +39,16 @@ pub enum Builtin {
 pub enum PathArg {
     /// Compute pass: per-pixel ray marching, exact α per channel.
     Compute,
-    /// The paper's view-aligned proxy slices (not built yet).
+    /// The paper's view-aligned proxy slices, blended back to front.
     Slices,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum AlphaArg {
+    /// One α per channel (dual-source blending).
+    Exact,
+    /// The paper's mean α of the pixel's views.
+    Paper,
 }
 
 #[derive(clap::Args)]
@@ -65,6 +75,9 @@ pub struct VolumeArgs {
     /// Single-pass path.
     #[arg(long, value_enum, default_value = "compute")]
     path: PathArg,
+    /// Slices path: per-channel (exact) or the paper's averaged α.
+    #[arg(long, value_enum, default_value = "exact")]
+    alpha: AlphaArg,
     /// Transfer function: a preset (ct-skin, ct-bone, mri, ml) or a file of `s r g b a` lines.
     #[arg(long)]
     tf: Option<String>,
@@ -211,8 +224,8 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     if args.frames == 0 {
         bail!("--frames must be at least 1");
     }
-    if args.path == PathArg::Slices {
-        bail!("--path slices (the paper's proxy-slice fragment path) is not implemented yet; use --path compute");
+    if args.path == PathArg::Slices && args.method != Method::SinglePass {
+        bail!("--path slices is a single-pass method; N-pass and single view use the ray-marching kernel");
     }
     let display = args.display.display()?;
     let (volume, default_tf) = load(&args)?;
@@ -230,8 +243,17 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     let ctx = gpu()?;
     let mut scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, tf, step, model)?;
     scene.shade = !args.no_shading;
-    let mut renderer = raycaster(&ctx.device, args.method)?;
-    let run = timed(&ctx, &mut renderer, &scene, &frame, args.frames)?;
+    let mut renderer: Box<dyn Renderer<VolumeScene>> = match args.path {
+        PathArg::Compute => Box::new(raycaster(&ctx.device, args.method)?),
+        PathArg::Slices => Box::new(VolumeSlicer::new(
+            &ctx.device,
+            match args.alpha {
+                AlphaArg::Exact => AlphaMode::Exact,
+                AlphaArg::Paper => AlphaMode::Paper,
+            },
+        )?),
+    };
+    let run = timed(&ctx, renderer.as_mut(), &scene, &frame, args.frames)?;
     if let Some(out) = &args.out {
         run.image.save_png(out)?;
     }
@@ -256,7 +278,11 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     };
     let fields = serde_json::json!({
         "method": method,
-        "path": "compute",
+        "path": match args.path { PathArg::Compute => "compute", PathArg::Slices => "slices" },
+        "alpha": match (args.path, args.alpha) {
+            (PathArg::Compute, _) | (PathArg::Slices, AlphaArg::Exact) => "exact",
+            (PathArg::Slices, AlphaArg::Paper) => "paper",
+        },
         "views": frame.camera.views,
         "views_per_pixel": frame.display.views_per_pixel(),
         "display": args.display.display,
