@@ -1,0 +1,99 @@
+//! Volumes: single pass (compute path; slice path with exact and paper α) vs N-pass vs single
+//! view, side by side in one process on one adapter, 512², N = 8 and 64, on the built-in head
+//! (96³) and VolPack's brainsmall.den (128×128×84, from `data/fetch`).
+//!
+//! `data/fetch && cargo bench --bench volume`   (report: `python3 docs/tools/bench_table.py volume`)
+
+use std::path::Path;
+use std::time::Duration;
+
+use autostereo::camera::MultiViewCamera;
+use autostereo::display::Display;
+use autostereo::frame::Frame;
+use autostereo::gpu::GpuContext;
+use autostereo::render::{
+    AlphaMode, Renderer, VolumeMethod, VolumeRaycaster, VolumeScene, VolumeSlicer,
+};
+use autostereo::target::SpatialTarget;
+use autostereo::timing::FrameTimer;
+use autostereo::volume::{load, phantom, TransferFunction, Volume};
+use criterion::{criterion_group, criterion_main, Criterion};
+use glam::Mat4;
+
+const SIZE: [u32; 2] = [512, 512];
+
+fn data_sets() -> Vec<(&'static str, Volume, &'static str)> {
+    let brain = Path::new(env!("CARGO_MANIFEST_DIR")).join("data/fetched/brainsmall.den");
+    let brain = load::load_den(&brain)
+        .unwrap_or_else(|e| panic!("{e}\nrun data/fetch first to get brainsmall.den"));
+    let brain = Volume::new(brain.dims, [1.0, 1.0, 1.5], brain.data).unwrap();
+    vec![
+        ("head", phantom::ct_head(96).unwrap(), "ct-skin"),
+        ("brainsmall", brain, "mri"),
+    ]
+}
+
+fn bench(c: &mut Criterion) {
+    let ctx = GpuContext::new(&Default::default()).expect("GPU adapter");
+    let (device, queue) = (&ctx.device, &ctx.queue);
+    let target = SpatialTarget::new(device, SIZE).unwrap();
+    let timer = FrameTimer::new(device, queue);
+    let mut methods: Vec<(&str, Box<dyn Renderer<VolumeScene>>)> = vec![
+        (
+            "single-pass (compute)",
+            Box::new(VolumeRaycaster::new(device, VolumeMethod::SinglePass).unwrap()),
+        ),
+        (
+            "single-pass (slices, exact α)",
+            Box::new(VolumeSlicer::new(device, AlphaMode::Exact).unwrap()),
+        ),
+        (
+            "single-pass (slices, paper α)",
+            Box::new(VolumeSlicer::new(device, AlphaMode::Paper).unwrap()),
+        ),
+        (
+            "n-pass",
+            Box::new(VolumeRaycaster::new(device, VolumeMethod::NPass).unwrap()),
+        ),
+        (
+            "single-view",
+            Box::new(VolumeRaycaster::new(device, VolumeMethod::SingleView).unwrap()),
+        ),
+    ];
+    for (name, volume, tf) in data_sets() {
+        let transfer = TransferFunction::preset(tf).unwrap();
+        let rotation = Mat4::from_rotation_x(-90f32.to_radians());
+        let scene = VolumeScene::new(device, queue, &volume, transfer, None, rotation).unwrap();
+        for views in [8u32, 64] {
+            let display = Display::parse(&format!("slanted:{views},8,2/3,7/6")).unwrap();
+            let camera =
+                MultiViewCamera::framing(volume.bounds(), views, None, 30f32.to_radians(), 1.0)
+                    .unwrap();
+            let frame = Frame::new(camera, display, SIZE).unwrap();
+            let mut group = c.benchmark_group(format!("volume/{name}/N{views}"));
+            group
+                .sample_size(10)
+                .warm_up_time(Duration::from_millis(1))
+                .measurement_time(Duration::from_secs(1));
+            for (method, renderer) in &mut methods {
+                group.bench_function(*method, |b| {
+                    b.iter_custom(|iters| {
+                        let mut total_ms = 0.0;
+                        for _ in 0..iters {
+                            total_ms += timer
+                                .time_frame(device, queue, |e| {
+                                    renderer.encode(device, queue, e, &scene, &frame, &target)
+                                })
+                                .unwrap();
+                        }
+                        Duration::from_secs_f64(total_ms / 1e3)
+                    })
+                });
+            }
+            group.finish();
+        }
+    }
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
