@@ -111,6 +111,11 @@ fn zero_separation_equals_single_view() {
     let single = render(&scene, &frame, VolumeMethod::SinglePass);
     let mono = render(&scene, &frame, VolumeMethod::SingleView);
     assert_eq!(single, mono);
+    for alpha in [AlphaMode::Exact, AlphaMode::Paper] {
+        let slices = render_slices(&scene, &frame, alpha);
+        let diff = compare(&slices, &mono).unwrap();
+        assert!(diff.psnr_db >= 45.0, "slices {alpha:?}: {diff:?}");
+    }
 }
 
 #[test]

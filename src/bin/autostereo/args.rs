@@ -128,3 +128,25 @@ impl CameraArgs {
         Ok(camera)
     }
 }
+
+/// Rendering method of the render commands.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Method {
+    /// One pass: every (sub)pixel evaluates its own view directly.
+    SinglePass,
+    /// One render per view + mask compositing (the oracle), same sampling and shading.
+    NPass,
+    /// The centre view only.
+    SingleView,
+}
+
+impl Method {
+    /// Name as the CLI spells it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::SinglePass => "single-pass",
+            Method::NPass => "n-pass",
+            Method::SingleView => "single-view",
+        }
+    }
+}

@@ -10,22 +10,12 @@ use autostereo::render::{
     Visibility,
 };
 
-use crate::args::{check_output, gpu, parse_size, CameraArgs, DisplayArgs};
+use crate::args::{check_output, gpu, parse_size, CameraArgs, DisplayArgs, Method};
 use crate::run::{compare_with, report, timed};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Method {
-    /// One pass: covering quads, per-subpixel ray-triangle tests.
-    SinglePass,
-    /// One render per view + mask compositing (the oracle).
-    NPass,
-    /// The centre view only.
-    SingleView,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum VisibilityArg {
-    /// The fastest exact mode the adapter supports (atomic, else exact).
+    /// The fastest exact mode the adapter supports (compute, else exact).
     Auto,
     /// Per-subpixel depth by subpixel-resolution rasterisation (any adapter).
     Exact,
@@ -114,11 +104,7 @@ pub fn run(args: MeshArgs) -> Result<()> {
     } else {
         None
     };
-    let method_name = match args.method {
-        Method::NPass => "n-pass",
-        Method::SingleView => "single-view",
-        Method::SinglePass => "single-pass",
-    };
+    let method_name = args.method.name();
     let mut fields = serde_json::json!({
         "method": method_name,
         "views": frame.camera.views,

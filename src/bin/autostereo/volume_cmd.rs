@@ -14,18 +14,8 @@ use autostereo::volume::load::{load_any, load_raw, RawSpec, SampleType};
 use autostereo::volume::{phantom, TransferFunction, Volume};
 use glam::Mat4;
 
-use crate::args::{check_output, gpu, parse_size, CameraArgs, DisplayArgs};
+use crate::args::{check_output, gpu, parse_size, CameraArgs, DisplayArgs, Method};
 use crate::run::{compare_with, report, timed};
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Method {
-    /// One pass: each pixel marches the rays of its K views.
-    SinglePass,
-    /// One render per view + mask compositing (the oracle), same sampling.
-    NPass,
-    /// The centre view only.
-    SingleView,
-}
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum Builtin {
@@ -271,11 +261,7 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     } else {
         None
     };
-    let method = match args.method {
-        Method::SinglePass => "single-pass",
-        Method::NPass => "n-pass",
-        Method::SingleView => "single-view",
-    };
+    let method = args.method.name();
     let fields = serde_json::json!({
         "method": method,
         "path": match args.path { PathArg::Compute => "compute", PathArg::Slices => "slices" },
