@@ -184,6 +184,29 @@ fn cli_reports_bad_input_without_panicking() {
             "views",
         ),
         (vec!["mesh", "--frames", "0"], "at least 1"),
+        (vec!["volume", "missing.nrrd"], "missing.nrrd"),
+        (
+            vec!["volume", "--tf", "nope", "--size", "8x8"],
+            "unknown preset",
+        ),
+        (
+            vec!["volume", "--step", "0", "--size", "8x8"],
+            "sampling step",
+        ),
+        (vec!["volume", "x.raw", "--raw-dims", "4,4,4"], "--raw-type"),
+        (vec!["volume", "--rotate", "1,2"], "three comma-separated"),
+        (
+            vec![
+                "volume",
+                "--builtin-size",
+                "8",
+                "--path",
+                "slices",
+                "--method",
+                "n-pass",
+            ],
+            "single-pass",
+        ),
         (vec!["mesh", "--visibility", "bogus"], "invalid value"),
         (
             vec!["views", "nonexistent.png", "--view", "0", "--out", out],
