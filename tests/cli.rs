@@ -111,3 +111,63 @@ fn mask_cpu_and_gpu_images_agree_and_views_extracts() {
         assert_eq!(image::open(&out).unwrap().width(), 64);
     }
 }
+
+#[test]
+fn volume_main_job_writes_spatial_views_and_anaglyph() {
+    let spatial = out_path("cli_volume.png");
+    let anaglyph = out_path("cli_volume_anaglyph.png");
+    let views = out_path("cli_volume_views");
+    let stdout = run(&[
+        "volume",
+        "--builtin-size",
+        "24",
+        "--size",
+        "64x48",
+        "--rotate",
+        "20,30,0",
+        "--json",
+        "--compare",
+        "--out",
+        spatial.to_str().unwrap(),
+        "--anaglyph",
+        anaglyph.to_str().unwrap(),
+        "--views-out",
+        views.to_str().unwrap(),
+    ]);
+    let json: serde_json::Value = serde_json::from_str(stdout.trim()).unwrap();
+    assert_eq!(json["method"], "single-pass");
+    assert_eq!(json["volume_dims"], serde_json::json!([24, 24, 19]));
+    assert!(json["psnr_db"].as_f64().unwrap() >= 45.0, "{json}");
+    for path in [
+        spatial,
+        anaglyph,
+        views.join("view_00.png"),
+        views.join("view_07.png"),
+    ] {
+        assert_eq!(
+            image::open(&path).unwrap().width(),
+            64,
+            "{}",
+            path.display()
+        );
+    }
+    let slices = run(&[
+        "volume",
+        "--builtin",
+        "ml",
+        "--builtin-size",
+        "16",
+        "--size",
+        "48x40",
+        "--path",
+        "slices",
+        "--alpha",
+        "paper",
+        "--json",
+    ]);
+    let json: serde_json::Value = serde_json::from_str(slices.trim()).unwrap();
+    assert_eq!(
+        (json["path"].as_str(), json["alpha"].as_str()),
+        (Some("slices"), Some("paper"))
+    );
+}
