@@ -89,8 +89,12 @@ pub fn check_output(path: &std::path::Path) -> Result<()> {
 #[derive(clap::Args, Clone, Debug)]
 pub struct CameraArgs {
     /// Separation of adjacent views, scene units (default: 5 % of the bounding radius).
-    #[arg(long)]
+    #[arg(long, conflicts_with = "baseline")]
     separation: Option<f32>,
+    /// Distance between the outermost views instead (separation = B / (N − 1)): keeps the
+    /// views' span fixed when N changes, as on a display whose views share one viewing cone.
+    #[arg(long)]
+    baseline: Option<f32>,
     /// Focal distance (default: camera to the bounding-box centre).
     #[arg(long, conflicts_with = "focal_scale")]
     focal: Option<f32>,
@@ -111,10 +115,15 @@ impl CameraArgs {
         size: [u32; 2],
     ) -> Result<MultiViewCamera> {
         let aspect = size[0] as f32 / size[1] as f32;
+        let separation = match self.baseline {
+            Some(b) if views > 1 => Some(b / (views - 1) as f32),
+            Some(_) => Some(0.0),
+            None => self.separation,
+        };
         let mut camera = MultiViewCamera::framing(
             bounds,
             views,
-            self.separation,
+            separation,
             self.fov.to_radians(),
             aspect,
         )?;
