@@ -120,13 +120,8 @@ impl CameraArgs {
             Some(_) => Some(0.0),
             None => self.separation,
         };
-        let mut camera = MultiViewCamera::framing(
-            bounds,
-            views,
-            separation,
-            self.fov.to_radians(),
-            aspect,
-        )?;
+        let mut camera =
+            MultiViewCamera::framing(bounds, views, separation, self.fov.to_radians(), aspect)?;
         if let Some(fd) = self.focal {
             camera.focal_distance = fd;
         }
