@@ -190,5 +190,18 @@ mod tests {
         assert_eq!(size_of("DisplayMask"), rs::<crate::display::MaskUniform>());
         assert_eq!(size_of("Light"), rs::<crate::frame::LightUniform>());
         assert_eq!(size_of("Frame"), rs::<crate::frame::FrameUniform>());
+
+        let module = validate("volume_raycast.wgsl").unwrap();
+        let mut layouter = naga::proc::Layouter::default();
+        layouter.update(module.to_ctx()).unwrap();
+        let (handle, _) = module
+            .types
+            .iter()
+            .find(|(_, t)| t.name.as_deref() == Some("VolumeParams"))
+            .expect("VolumeParams");
+        assert_eq!(
+            layouter[handle].size as usize,
+            rs::<crate::render::VolumeParams>()
+        );
     }
 }
