@@ -173,34 +173,31 @@ mod tests {
     /// Struct sizes seen by naga equal the Rust `#[repr(C)]` sizes.
     #[test]
     fn gpu_struct_layouts_match_rust() {
-        let module = validate("mesh_view.wgsl").unwrap();
-        let mut layouter = naga::proc::Layouter::default();
-        layouter.update(module.to_ctx()).unwrap();
-        let size_of = |name: &str| {
+        /// Size naga computes for struct `name` of stage `stage`.
+        fn wgsl_size(stage: &str, name: &str) -> usize {
+            let module = validate(stage).unwrap();
+            let mut layouter = naga::proc::Layouter::default();
+            layouter.update(module.to_ctx()).unwrap();
             let (handle, _) = module
                 .types
                 .iter()
                 .find(|(_, t)| t.name.as_deref() == Some(name))
-                .unwrap_or_else(|| panic!("type {name}"));
+                .unwrap_or_else(|| panic!("type {name} in {stage}"));
             layouter[handle].size as usize
-        };
+        }
         use std::mem::size_of as rs;
-        assert_eq!(size_of("Camera"), rs::<crate::camera::CameraUniform>());
-        assert_eq!(size_of("View"), rs::<crate::camera::ViewUniform>());
-        assert_eq!(size_of("DisplayMask"), rs::<crate::display::MaskUniform>());
-        assert_eq!(size_of("Light"), rs::<crate::frame::LightUniform>());
-        assert_eq!(size_of("Frame"), rs::<crate::frame::FrameUniform>());
-
-        let module = validate("volume_raycast.wgsl").unwrap();
-        let mut layouter = naga::proc::Layouter::default();
-        layouter.update(module.to_ctx()).unwrap();
-        let (handle, _) = module
-            .types
-            .iter()
-            .find(|(_, t)| t.name.as_deref() == Some("VolumeParams"))
-            .expect("VolumeParams");
+        let mesh = |name| wgsl_size("mesh_view.wgsl", name);
+        assert_eq!(mesh("Camera"), rs::<crate::camera::CameraUniform>());
+        assert_eq!(mesh("View"), rs::<crate::camera::ViewUniform>());
+        assert_eq!(mesh("DisplayMask"), rs::<crate::display::MaskUniform>());
+        assert_eq!(mesh("Light"), rs::<crate::frame::LightUniform>());
+        assert_eq!(mesh("Frame"), rs::<crate::frame::FrameUniform>());
         assert_eq!(
-            layouter[handle].size as usize,
+            wgsl_size("mesh_single_pass_compute.wgsl", "MeshVertex"),
+            rs::<crate::mesh::GpuVertex>()
+        );
+        assert_eq!(
+            wgsl_size("volume_raycast.wgsl", "VolumeParams"),
             rs::<crate::render::VolumeParams>()
         );
     }
