@@ -1,8 +1,11 @@
 //! Flags shared by several subcommands, and their parsers.
 
 use anyhow::{bail, Context, Result};
+use std::path::PathBuf;
+
 use autostereo::camera::MultiViewCamera;
 use autostereo::display::Display;
+use autostereo::frame::Frame;
 
 /// `WxH` → [w, h], both ≥ 1.
 pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
@@ -152,5 +155,52 @@ impl Method {
             Method::NPass => "n-pass",
             Method::SingleView => "single-view",
         }
+    }
+}
+
+/// Flags every render command shares (extend, don't break: tools and benchmarks use them).
+#[derive(clap::Args)]
+pub struct RenderArgs {
+    #[command(flatten)]
+    pub display: DisplayArgs,
+    #[command(flatten)]
+    pub camera: CameraArgs,
+    /// Image size WxH in pixels.
+    #[arg(long, value_parser = parse_size, default_value = "512x512")]
+    pub size: [u32; 2],
+    /// Rendering method.
+    #[arg(long, value_enum, default_value = "single-pass")]
+    pub method: Method,
+    /// Also render N-pass and report psnr_db, max_abs_err, frac_off_2 against it.
+    #[arg(long)]
+    pub compare: bool,
+    /// Timed frames (after two warm-up frames); the median is reported.
+    #[arg(long, default_value_t = 1)]
+    pub frames: u32,
+    /// Output PNG of the spatial image.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Print one JSON object with the run's parameters and timing on stdout.
+    #[arg(long)]
+    pub json: bool,
+}
+
+impl RenderArgs {
+    /// Fail early on what can be checked before loading anything.
+    pub fn check(&self) -> Result<()> {
+        if let Some(out) = &self.out {
+            check_output(out)?;
+        }
+        if self.frames == 0 {
+            bail!("--frames must be at least 1");
+        }
+        Ok(())
+    }
+
+    /// The frame for a scene within `bounds`: display, camera framing, size.
+    pub fn frame(&self, bounds: autostereo::camera::Bounds) -> Result<Frame> {
+        let display = self.display.display()?;
+        let camera = self.camera.camera(bounds, display.views(), self.size)?;
+        Ok(Frame::new(camera, display, self.size)?)
     }
 }

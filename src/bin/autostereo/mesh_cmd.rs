@@ -2,15 +2,14 @@
 
 use std::path::PathBuf;
 
-use anyhow::{bail, Context, Result};
-use autostereo::frame::Frame;
+use anyhow::{Context, Result};
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::{
     CoverBounds, MeshBaseline, MeshBaselineMethod, MeshSinglePass, MeshSinglePassOptions, Renderer,
     Visibility,
 };
 
-use crate::args::{check_output, gpu, parse_size, CameraArgs, DisplayArgs, Method};
+use crate::args::{gpu, Method, RenderArgs};
 use crate::run::{compare_with, report, timed};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -38,15 +37,7 @@ pub struct MeshArgs {
     /// OBJ file; a generated torus scene when omitted.
     obj: Option<PathBuf>,
     #[command(flatten)]
-    display: DisplayArgs,
-    #[command(flatten)]
-    camera: CameraArgs,
-    /// Image size WxH in pixels.
-    #[arg(long, value_parser = parse_size, default_value = "512x512")]
-    size: [u32; 2],
-    /// Rendering method.
-    #[arg(long, value_enum, default_value = "single-pass")]
-    method: Method,
+    common: RenderArgs,
     /// Single-pass visibility: auto | exact | atomic (per-subpixel depth) | fast (the paper's).
     #[arg(long, value_enum, default_value = "auto")]
     visibility: VisibilityArg,
@@ -56,28 +47,10 @@ pub struct MeshArgs {
     /// Reorder triangles along a Morton curve before rendering (locality; every method).
     #[arg(long)]
     sort_triangles: bool,
-    /// Also render N-pass and report psnr_db, max_abs_err, frac_off_2 against it.
-    #[arg(long)]
-    compare: bool,
-    /// Timed frames (after two warm-up frames); the median is reported.
-    #[arg(long, default_value_t = 1)]
-    frames: u32,
-    /// Output PNG of the spatial image.
-    #[arg(long)]
-    out: Option<PathBuf>,
-    /// Print one JSON object with the run's parameters and timing on stdout.
-    #[arg(long)]
-    json: bool,
 }
 
 pub fn run(args: MeshArgs) -> Result<()> {
-    if let Some(out) = &args.out {
-        check_output(out)?;
-    }
-    if args.frames == 0 {
-        bail!("--frames must be at least 1");
-    }
-    let display = args.display.display()?;
+    args.common.check()?;
     let mut mesh = match &args.obj {
         Some(path) => Mesh::load_obj(path)?,
         None => Mesh::torus_scene(),
@@ -86,17 +59,22 @@ pub fn run(args: MeshArgs) -> Result<()> {
         mesh.sort_triangles_spatially();
     }
     let bounds = mesh.bounds().context("the mesh has no vertices")?;
-    let camera = args.camera.camera(bounds, display.views(), args.size)?;
-    let frame = Frame::new(camera, display, args.size)?;
+    let frame = args.common.frame(bounds)?;
     let ctx = gpu()?;
     let device = &ctx.device;
     let buffers = MeshBuffers::new(device, &mesh)?;
     let mut renderer = renderer(device, &args)?;
-    let run = timed(&ctx, renderer.as_mut(), &buffers, &frame, args.frames)?;
-    if let Some(out) = &args.out {
+    let run = timed(
+        &ctx,
+        renderer.as_mut(),
+        &buffers,
+        &frame,
+        args.common.frames,
+    )?;
+    if let Some(out) = &args.common.out {
         run.image.save_png(out)?;
     }
-    let diff = if args.compare {
+    let diff = if args.common.compare {
         let mut npass = MeshBaseline::new(device, MeshBaselineMethod::NPass)?;
         Some(compare_with(
             &ctx, &mut npass, &buffers, &frame, &run.image,
@@ -104,22 +82,22 @@ pub fn run(args: MeshArgs) -> Result<()> {
     } else {
         None
     };
-    let method_name = args.method.name();
+    let method_name = args.common.method.name();
     let mut fields = serde_json::json!({
         "method": method_name,
         "views": frame.camera.views,
         "views_per_pixel": frame.display.views_per_pixel(),
-        "display": args.display.display,
-        "size": args.size,
+        "display": args.common.display.display,
+        "size": args.common.size,
         "adapter": ctx.adapter_label(),
         "ms": run.ms,
-        "frames": args.frames,
+        "frames": args.common.frames,
         "timing": run.timing,
         "triangles": mesh.triangle_count(),
         "focal_distance": frame.camera.focal_distance,
         "separation": frame.camera.separation,
     });
-    if args.method == Method::SinglePass {
+    if args.common.method == Method::SinglePass {
         fields["visibility"] = single_pass_options(device, &args).visibility.name().into();
         fields["bounds"] = format!("{:?}", args.bounds).to_lowercase().into();
     }
@@ -127,20 +105,20 @@ pub fn run(args: MeshArgs) -> Result<()> {
         "{method_name}: {} triangles, {} views, {}x{}, {:.2} ms/frame (median of {}, {:?}) on {}",
         mesh.triangle_count(),
         frame.camera.views,
-        args.size[0],
-        args.size[1],
+        args.common.size[0],
+        args.common.size[1],
         run.ms,
-        args.frames,
+        args.common.frames,
         run.timing,
         ctx.adapter_label()
     );
-    report(args.json, fields, diff, &summary);
+    report(args.common.json, fields, diff, &summary);
     Ok(())
 }
 
 /// The renderer a `--method` selects.
 fn renderer(device: &wgpu::Device, args: &MeshArgs) -> Result<Box<dyn Renderer<MeshBuffers>>> {
-    Ok(match args.method {
+    Ok(match args.common.method {
         Method::NPass => Box::new(MeshBaseline::new(device, MeshBaselineMethod::NPass)?),
         Method::SingleView => Box::new(MeshBaseline::new(device, MeshBaselineMethod::SingleView)?),
         Method::SinglePass => Box::new(MeshSinglePass::new(

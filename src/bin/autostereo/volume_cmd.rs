@@ -14,7 +14,7 @@ use autostereo::volume::load::{load_any, load_raw, RawSpec, SampleType};
 use autostereo::volume::{phantom, TransferFunction, Volume};
 use glam::Mat4;
 
-use crate::args::{check_output, gpu, parse_size, CameraArgs, DisplayArgs, Method};
+use crate::args::{check_output, gpu, Method, RenderArgs};
 use crate::run::{compare_with, report, timed};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -53,15 +53,7 @@ pub struct VolumeArgs {
     #[arg(long, default_value_t = 96)]
     builtin_size: u32,
     #[command(flatten)]
-    display: DisplayArgs,
-    #[command(flatten)]
-    camera: CameraArgs,
-    /// Image size WxH in pixels.
-    #[arg(long, value_parser = parse_size, default_value = "512x512")]
-    size: [u32; 2],
-    /// Rendering method.
-    #[arg(long, value_enum, default_value = "single-pass")]
-    method: Method,
+    common: RenderArgs,
     /// Single-pass path.
     #[arg(long, value_enum, default_value = "compute")]
     path: PathArg,
@@ -101,24 +93,12 @@ pub struct VolumeArgs {
     /// Average blocks of F³ voxels first (for volumes over the adapter's 3D texture limit).
     #[arg(long, default_value_t = 1)]
     downsample: u32,
-    /// Timed frames (after two warm-up frames); the median is reported.
-    #[arg(long, default_value_t = 1)]
-    frames: u32,
-    /// Output PNG of the spatial image.
-    #[arg(long)]
-    out: Option<PathBuf>,
     /// Also write every view as DIR/view_NN.png.
     #[arg(long)]
     views_out: Option<PathBuf>,
     /// Also write a red/cyan anaglyph of the two views around the centre.
     #[arg(long)]
     anaglyph: Option<PathBuf>,
-    /// Also render N-pass and report psnr_db, max_abs_err, frac_off_2 against it.
-    #[arg(long)]
-    compare: bool,
-    /// Print one JSON object with the run's parameters and timing on stdout.
-    #[arg(long)]
-    json: bool,
 }
 
 fn parse_triple<T: std::str::FromStr>(s: &str) -> Result<[T; 3], String> {
@@ -208,16 +188,13 @@ fn raycaster(device: &wgpu::Device, method: Method) -> Result<VolumeRaycaster> {
 }
 
 pub fn run(args: VolumeArgs) -> Result<()> {
-    for path in [&args.out, &args.anaglyph].into_iter().flatten() {
+    args.common.check()?;
+    if let Some(path) = &args.anaglyph {
         check_output(path)?;
     }
-    if args.frames == 0 {
-        bail!("--frames must be at least 1");
-    }
-    if args.path == PathArg::Slices && args.method != Method::SinglePass {
+    if args.path == PathArg::Slices && args.common.method != Method::SinglePass {
         bail!("--path slices is a single-pass method; N-pass and single view use the ray-marching kernel");
     }
-    let display = args.display.display()?;
     let (volume, default_tf) = load(&args)?;
     let tf = transfer(&args, &default_tf)?;
     let step = match (args.slices, args.step) {
@@ -228,13 +205,12 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     let [ax, ay, az] = args.rotate.map(f32::to_radians);
     let model = Mat4::from_rotation_z(az) * Mat4::from_rotation_y(ay) * Mat4::from_rotation_x(ax);
     let bounds = volume.bounds();
-    let camera = args.camera.camera(bounds, display.views(), args.size)?;
-    let frame = Frame::new(camera, display, args.size)?;
+    let frame = args.common.frame(bounds)?;
     let ctx = gpu()?;
     let mut scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, tf, step, model)?;
     scene.shade = !args.no_shading;
     let mut renderer: Box<dyn Renderer<VolumeScene>> = match args.path {
-        PathArg::Compute => Box::new(raycaster(&ctx.device, args.method)?),
+        PathArg::Compute => Box::new(raycaster(&ctx.device, args.common.method)?),
         PathArg::Slices => Box::new(VolumeSlicer::new(
             &ctx.device,
             match args.alpha {
@@ -243,8 +219,8 @@ pub fn run(args: VolumeArgs) -> Result<()> {
             },
         )?),
     };
-    let run = timed(&ctx, renderer.as_mut(), &scene, &frame, args.frames)?;
-    if let Some(out) = &args.out {
+    let run = timed(&ctx, renderer.as_mut(), &scene, &frame, args.common.frames)?;
+    if let Some(out) = &args.common.out {
         run.image.save_png(out)?;
     }
     if let Some(path) = &args.anaglyph {
@@ -255,13 +231,13 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     if let Some(dir) = &args.views_out {
         write_views(&ctx, &scene, &frame, dir)?;
     }
-    let diff = if args.compare {
+    let diff = if args.common.compare {
         let mut npass = raycaster(&ctx.device, Method::NPass)?;
         Some(compare_with(&ctx, &mut npass, &scene, &frame, &run.image)?)
     } else {
         None
     };
-    let method = args.method.name();
+    let method = args.common.method.name();
     let fields = serde_json::json!({
         "method": method,
         "path": match args.path { PathArg::Compute => "compute", PathArg::Slices => "slices" },
@@ -271,11 +247,11 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         },
         "views": frame.camera.views,
         "views_per_pixel": frame.display.views_per_pixel(),
-        "display": args.display.display,
-        "size": args.size,
+        "display": args.common.display.display,
+        "size": args.common.size,
         "adapter": ctx.adapter_label(),
         "ms": run.ms,
-        "frames": args.frames,
+        "frames": args.common.frames,
         "timing": run.timing,
         "volume_dims": volume.dims,
         "spacing": volume.spacing,
@@ -288,14 +264,14 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         "{method}: volume {:?}, {} views, {}x{}, {:.2} ms/frame (median of {}, {:?}) on {}",
         volume.dims,
         frame.camera.views,
-        args.size[0],
-        args.size[1],
+        args.common.size[0],
+        args.common.size[1],
         run.ms,
-        args.frames,
+        args.common.frames,
         run.timing,
         ctx.adapter_label()
     );
-    report(args.json, fields, diff, &summary);
+    report(args.common.json, fields, diff, &summary);
     Ok(())
 }
 
