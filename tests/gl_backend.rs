@@ -12,6 +12,22 @@ use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::{MaskImageRenderer, MeshBaseline, MeshBaselineMethod, Renderer};
 use autostereo::target::SpatialTarget;
 
+/// One GL context per process, shared by the tests (PLATFORM.md: a second device from the same
+/// GL adapter makes the first render zeros).
+fn gl() -> std::sync::MutexGuard<'static, GpuContext> {
+    static GL: std::sync::OnceLock<std::sync::Mutex<GpuContext>> = std::sync::OnceLock::new();
+    GL.get_or_init(|| {
+        let gl = GpuContext::new(&GpuOptions {
+            backends: Some(wgpu::Backends::GL),
+            adapter_name: None,
+        })
+        .expect("the GL backend (llvmpipe) must be available");
+        std::sync::Mutex::new(gl)
+    })
+    .lock()
+    .unwrap_or_else(|poisoned| poisoned.into_inner())
+}
+
 fn render_npass(ctx: &GpuContext, frame: &Frame, mesh: &Mesh) -> RgbImage {
     let buffers = MeshBuffers::new(&ctx.device, mesh).unwrap();
     let target = SpatialTarget::new(&ctx.device, frame.size).unwrap();
@@ -24,11 +40,7 @@ fn render_npass(ctx: &GpuContext, frame: &Frame, mesh: &Mesh) -> RgbImage {
 
 #[test]
 fn gl_backend_renders_masks_and_meshes() {
-    let gl = GpuContext::new(&GpuOptions {
-        backends: Some(wgpu::Backends::GL),
-        adapter_name: None,
-    })
-    .expect("the GL backend (llvmpipe) must be available");
+    let gl = gl();
     assert_eq!(gl.info().backend, wgpu::Backend::Gl);
 
     let display = Display::new(DisplayKind::Hubner8)
@@ -67,5 +79,71 @@ fn gl_backend_renders_masks_and_meshes() {
             "GL vs default adapter {diff:?}: {}",
             common::save_diff("gl", &on_gl, &reference).display()
         );
+    }
+}
+
+/// Every single-pass renderer runs on GL too (meshes pick the atomic-free exact mode there) and
+/// matches its N-pass oracle on the same adapter.
+#[test]
+fn gl_backend_runs_the_single_pass_renderers() {
+    use autostereo::render::{
+        AlphaMode, MeshSinglePass, MeshSinglePassOptions, Visibility, VolumeMethod,
+        VolumeRaycaster, VolumeScene, VolumeSlicer,
+    };
+    use autostereo::volume::{phantom, TransferFunction};
+
+    let gl = gl();
+    let (device, queue) = (&gl.device, &gl.queue);
+    let read = |target: &SpatialTarget| target.read(device, queue).unwrap();
+
+    let mesh = Mesh::torus_scene();
+    let camera = MultiViewCamera::framing(mesh.bounds().unwrap(), 8, None, 0.5, 1.0).unwrap();
+    let frame = Frame::new(camera, Display::parse("hubner8").unwrap(), [96, 96]).unwrap();
+    let visibility = Visibility::best_exact(device);
+    assert_eq!(visibility, Visibility::Exact, "GL has no 64-bit atomics");
+    let buffers = MeshBuffers::new(device, &mesh).unwrap();
+    let target = SpatialTarget::new(device, frame.size).unwrap();
+    let options = MeshSinglePassOptions {
+        visibility,
+        ..Default::default()
+    };
+    MeshSinglePass::new(device, options)
+        .unwrap()
+        .render(device, queue, &buffers, &frame, &target)
+        .unwrap();
+    let single = read(&target);
+    let diff = compare(&single, &render_npass(&gl, &frame, &mesh)).unwrap();
+    assert!(diff.frac_off_2 <= 0.001, "GL mesh single pass: {diff:?}");
+
+    let volume = phantom::ct_head(32).unwrap();
+    let tf = TransferFunction::preset("ct-skin").unwrap();
+    let scene = VolumeScene::new(
+        device,
+        queue,
+        &volume,
+        tf,
+        None,
+        glam::Mat4::from_rotation_y(0.5),
+    )
+    .unwrap();
+    let camera = MultiViewCamera::framing(volume.bounds(), 8, None, 0.5, 1.0).unwrap();
+    let frame = Frame::new(camera, Display::parse("hubner8").unwrap(), [96, 96]).unwrap();
+    let render = |renderer: &mut dyn Renderer<VolumeScene>| {
+        let target = SpatialTarget::new(device, frame.size).unwrap();
+        renderer
+            .render(device, queue, &scene, &frame, &target)
+            .unwrap();
+        read(&target)
+    };
+    let npass = render(&mut VolumeRaycaster::new(device, VolumeMethod::NPass).unwrap());
+    let compute = render(&mut VolumeRaycaster::new(device, VolumeMethod::SinglePass).unwrap());
+    let slices = render(&mut VolumeSlicer::new(device, AlphaMode::Exact).unwrap());
+    assert!(
+        npass.data.iter().filter(|&&v| v > 8).count() > 1000,
+        "GL volume is empty"
+    );
+    for (name, image) in [("compute", compute), ("slices", slices)] {
+        let diff = compare(&image, &npass).unwrap();
+        assert!(diff.psnr_db >= 45.0, "GL volume {name}: {diff:?}");
     }
 }
