@@ -33,8 +33,10 @@ enum Command {
 }
 
 fn main() -> std::process::ExitCode {
+    // wgpu probes EGL displays and logs their failures as errors even when Vulkan is used.
     env_logger::Builder::from_env(
-        env_logger::Env::default().default_filter_or("warn,autostereo=info"),
+        env_logger::Env::default()
+            .default_filter_or("warn,autostereo=info,wgpu_hal::gles::egl=off"),
     )
     .format_timestamp(None)
     .init();
