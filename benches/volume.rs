@@ -1,6 +1,6 @@
 //! Volumes: single pass (compute path; slice path with exact and paper α) vs N-pass vs single
-//! view, side by side in one process on one adapter, 512², N = 8 and 64, on the built-in head
-//! (96³) and VolPack's brainsmall.den (128×128×84, from `data/fetch`).
+//! view, side by side in one process on one adapter, 512², N = 8 and 64 over the same baseline,
+//! on the built-in head (96³) and VolPack's brainsmall.den (128×128×84, from `data/fetch`).
 //!
 //! `data/fetch && cargo bench --bench volume`   (report: `python3 docs/tools/bench_table.py volume`)
 
