@@ -66,9 +66,12 @@ fn bench(c: &mut Criterion) {
         let scene = VolumeScene::new(device, queue, &volume, transfer, None, rotation).unwrap();
         for views in [8u32, 64] {
             let display = Display::parse(&format!("slanted:{views},8,2/3,7/6")).unwrap();
-            let camera =
+            // The views span a fixed baseline (that of the default 8-view camera), as a display's
+            // views share one viewing cone: more views are denser, not wider.
+            let mut camera =
                 MultiViewCamera::framing(volume.bounds(), views, None, 30f32.to_radians(), 1.0)
                     .unwrap();
+            camera.separation *= 7.0 / (views - 1) as f32;
             let frame = Frame::new(camera, display, SIZE).unwrap();
             let mut group = c.benchmark_group(format!("volume/{name}/N{views}"));
             group
