@@ -5,7 +5,7 @@
 use super::pipeline::cleared;
 use super::renderer::Renderer;
 use super::texture::{cached_texture_2d, Texture2d};
-use super::view_layers::DEPTH_FORMAT;
+use super::view_layers::{nearest_depth_test, DEPTH_FORMAT};
 use super::{Compositor, ViewLayers};
 use crate::camera::ViewUniform;
 use crate::error::Result;
@@ -71,13 +71,7 @@ impl MeshBaseline {
             },
             // No culling: OBJ winding is not reliable; shading is two-sided.
             primitive: wgpu::PrimitiveState::default(),
-            depth_stencil: Some(wgpu::DepthStencilState {
-                format: DEPTH_FORMAT,
-                depth_write_enabled: Some(true),
-                depth_compare: Some(wgpu::CompareFunction::Less),
-                stencil: Default::default(),
-                bias: Default::default(),
-            }),
+            depth_stencil: Some(nearest_depth_test()),
             multisample: Default::default(),
             fragment: Some(wgpu::FragmentState {
                 module: &module,

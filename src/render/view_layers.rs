@@ -19,6 +19,18 @@ pub struct ViewLayers {
 /// Depth format of every mesh pass.
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 
+/// The depth test every mesh pass uses: keep the nearest, write it. Equal depths keep the
+/// first drawn, which the single-pass modes reproduce by preferring the lower triangle id.
+pub(crate) fn nearest_depth_test() -> wgpu::DepthStencilState {
+    wgpu::DepthStencilState {
+        format: DEPTH_FORMAT,
+        depth_write_enabled: Some(true),
+        depth_compare: Some(wgpu::CompareFunction::Less),
+        stencil: Default::default(),
+        bias: Default::default(),
+    }
+}
+
 impl ViewLayers {
     /// Allocate `views` layers of `size`, after checking the limits.
     pub fn new(device: &wgpu::Device, size: [u32; 2], views: u32) -> Result<Self> {

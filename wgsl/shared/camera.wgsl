@@ -21,11 +21,6 @@ struct View {
     origin: vec4<f32>, // eye-space camera origin (vd, 0, 0, 1)
 }
 
-// Eye-space offset vd_i of view i.
-fn camera_view_offset(cam: Camera, i: u32) -> f32 {
-    return (f32(i) - 0.5 * f32(cam.views - 1u)) * cam.separation;
-}
-
 // Eye-space point on the focal plane under the pixel position `frag` (framebuffer coordinates,
 // y top-down; pixel centres at +0.5).
 fn camera_focal_point(cam: Camera, frag: vec2<f32>) -> vec3<f32> {

@@ -5,7 +5,7 @@ use crate::error::Result;
 use crate::frame::frame_bind_group_layout;
 use crate::render::pipeline::fullscreen_pipeline_with;
 use crate::render::specialize::Specialization;
-use crate::render::view_layers::DEPTH_FORMAT;
+use crate::render::view_layers::nearest_depth_test;
 use crate::target::SPATIAL_FORMAT;
 
 /// Invocations per workgroup of `mesh_cover.wgsl`.
@@ -224,13 +224,7 @@ pub(super) fn build(
                         buffers: &[],
                     },
                     primitive: wgpu::PrimitiveState::default(),
-                    depth_stencil: depth_test.then(|| wgpu::DepthStencilState {
-                        format: DEPTH_FORMAT,
-                        depth_write_enabled: Some(true),
-                        depth_compare: Some(wgpu::CompareFunction::Less),
-                        stencil: Default::default(),
-                        bias: Default::default(),
-                    }),
+                    depth_stencil: depth_test.then(nearest_depth_test),
                     multisample: Default::default(),
                     fragment: Some(wgpu::FragmentState {
                         module: &module,
