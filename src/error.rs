@@ -74,6 +74,14 @@ pub enum Error {
         /// What is wrong with it.
         reason: String,
     },
+    /// A point-cloud file is malformed, truncated or of an unsupported kind.
+    #[error("point cloud {path}: {reason}")]
+    Points {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong with it.
+        reason: String,
+    },
     /// A volume file is malformed, truncated or of an unsupported kind.
     #[error("volume {path}: {reason}")]
     Volume {

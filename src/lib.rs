@@ -20,6 +20,7 @@ pub mod frame;
 pub mod gpu;
 pub mod image_io;
 pub mod mesh;
+pub mod points;
 pub mod readback;
 pub mod render;
 pub mod shader;

@@ -30,6 +30,8 @@ const SHARED: &[(&str, &str)] = &[
     wgsl!("shared/cover.wgsl"),
     wgsl!("shared/resolve.wgsl"),
     wgsl!("shared/volume.wgsl"),
+    wgsl!("shared/splat.wgsl"),
+    wgsl!("shared/splat_quad.wgsl"),
 ];
 
 /// One WGSL file per pipeline stage, by file name.
@@ -47,6 +49,10 @@ pub const STAGES: &[(&str, &str)] = &[
     wgsl!("volume_raycast.wgsl"),
     wgsl!("volume_slices.wgsl"),
     wgsl!("volume_slices_resolve.wgsl"),
+    wgsl!("splat_cover.wgsl"),
+    wgsl!("splat_pixel.wgsl"),
+    wgsl!("splat_subpixel.wgsl"),
+    wgsl!("splat_composite.wgsl"),
 ];
 
 fn lookup(table: &[(&str, &'static str)], name: &str) -> Option<&'static str> {

@@ -34,11 +34,32 @@ pub(crate) fn nearest_depth_test() -> wgpu::DepthStencilState {
 impl ViewLayers {
     /// Allocate `views` layers of `size`, after checking the limits.
     pub fn new(device: &wgpu::Device, size: [u32; 2], views: u32) -> Result<Self> {
+        Self::with_format(
+            device,
+            "view layers",
+            size,
+            views,
+            SPATIAL_FORMAT,
+            wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC,
+        )
+    }
+
+    /// `layers` render-attachment layers of `format` (also sampled, plus `usage`) named
+    /// `what` in errors, and a depth buffer, after checking the limits.
+    pub fn with_format(
+        device: &wgpu::Device,
+        what: &str,
+        size: [u32; 2],
+        layers: u32,
+        format: wgpu::TextureFormat,
+        usage: wgpu::TextureUsages,
+    ) -> Result<Self> {
+        let views = layers;
         check_size_2d(device, size[0], size[1])?;
         let limit = device.limits().max_texture_array_layers;
         if views > limit {
             return Err(Error::LimitExceeded {
-                what: "views (texture array layers)".into(),
+                what: format!("{what} (texture array layers)"),
                 value: views.into(),
                 limit: limit.into(),
             });
@@ -50,16 +71,15 @@ impl ViewLayers {
         };
         let scope = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
         let texture = device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("view layers"),
+            label: Some(what),
             size: extent(views),
             mip_level_count: 1,
             sample_count: 1,
             dimension: wgpu::TextureDimension::D2,
-            format: SPATIAL_FORMAT,
+            format,
             usage: wgpu::TextureUsages::RENDER_ATTACHMENT
-                | wgpu::TextureUsages::STORAGE_BINDING
                 | wgpu::TextureUsages::TEXTURE_BINDING
-                | wgpu::TextureUsages::COPY_SRC,
+                | usage,
             view_formats: &[],
         });
         let depth = device.create_texture(&wgpu::TextureDescriptor {
@@ -74,7 +94,7 @@ impl ViewLayers {
         });
         if let Some(e) = pollster::block_on(scope.pop()) {
             return Err(Error::Gpu {
-                operation: format!("allocating {views} view layers of {}x{}", size[0], size[1]),
+                operation: format!("allocating {views} {what} of {}x{}", size[0], size[1]),
                 message: e.to_string(),
             });
         }

@@ -219,7 +219,7 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
                         resource: wgpu::BindingResource::TextureView(output),
                     }],
                 });
-                let offset = (i as u64 * self.resources.params_stride) as u32;
+                let offset = self.resources.params.offset(i);
                 pass.set_bind_group(1, &volume_group, &[offset]);
                 pass.set_bind_group(2, &output_group, &[]);
                 pass.dispatch_workgroups(frame.size[0].div_ceil(8), frame.size[1].div_ceil(8), 1);

@@ -5,6 +5,7 @@
 use bytemuck::{Pod, Zeroable};
 use glam::{Mat3, Mat4, Vec3};
 
+use super::pass_params::PassParams;
 use super::volume_raycast::VolumeScene;
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
@@ -30,8 +31,7 @@ pub(crate) struct VolumeResources {
     pub frame_layout: wgpu::BindGroupLayout,
     pub volume_layout: wgpu::BindGroupLayout,
     sampler: wgpu::Sampler,
-    params: Option<(wgpu::Buffer, u32)>,
-    pub params_stride: u64,
+    pub params: PassParams<VolumeParams>,
     table: Option<(TransferFunction, f32, PreintegrationTexture)>,
 }
 
@@ -58,20 +58,10 @@ impl VolumeResources {
                     wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
                 ),
                 entry(2, texture(wgpu::TextureViewDimension::D2)),
-                entry(
-                    3,
-                    wgpu::BindingType::Buffer {
-                        ty: wgpu::BufferBindingType::Uniform,
-                        has_dynamic_offset: true,
-                        min_binding_size: wgpu::BufferSize::new(
-                            std::mem::size_of::<VolumeParams>() as u64,
-                        ),
-                    },
-                ),
+                PassParams::<VolumeParams>::layout_entry(3, stages),
             ],
         });
         let frame_layout = frame_bind_group_layout(device);
-        let align = device.limits().min_uniform_buffer_offset_alignment as u64;
         Self {
             frame: FrameBinding::new(device, &frame_layout),
             frame_layout,
@@ -82,8 +72,7 @@ impl VolumeResources {
                 min_filter: wgpu::FilterMode::Linear,
                 ..Default::default()
             }),
-            params: None,
-            params_stride: (std::mem::size_of::<VolumeParams>() as u64).div_ceil(align) * align,
+            params: PassParams::new(device, "volume params"),
             table: None,
         }
     }
@@ -122,24 +111,7 @@ impl VolumeResources {
         dispatches: &[VolumeParams],
     ) -> Result<wgpu::BindGroup> {
         self.frame.write(queue, frame);
-        let count = dispatches.len() as u32;
-        if self.params.as_ref().is_none_or(|(_, c)| *c < count) {
-            let buffer = device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some("volume params"),
-                size: self.params_stride * count as u64,
-                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-                mapped_at_creation: false,
-            });
-            self.params = Some((buffer, count));
-        }
-        let mut bytes = vec![0u8; (self.params_stride * count as u64) as usize];
-        for (i, p) in dispatches.iter().enumerate() {
-            let at = i * self.params_stride as usize;
-            bytes[at..at + std::mem::size_of::<VolumeParams>()]
-                .copy_from_slice(bytemuck::bytes_of(p));
-        }
-        let buffer = &self.params.as_ref().expect("allocated above").0;
-        queue.write_buffer(buffer, 0, &bytes);
+        self.params.write(device, queue, dispatches);
 
         let step_voxels = scene.step / scene.voxel;
         let fresh = self
@@ -170,11 +142,7 @@ impl VolumeResources {
                 },
                 wgpu::BindGroupEntry {
                     binding: 3,
-                    resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
-                        buffer,
-                        offset: 0,
-                        size: wgpu::BufferSize::new(std::mem::size_of::<VolumeParams>() as u64),
-                    }),
+                    resource: self.params.binding(),
                 },
             ],
         }))

@@ -3,6 +3,7 @@
 mod args;
 mod mask_cmd;
 mod mesh_cmd;
+mod points_cmd;
 mod run;
 mod views_cmd;
 mod volume_cmd;
@@ -26,6 +27,8 @@ enum Command {
     Mask(mask_cmd::MaskArgs),
     /// Render a triangle mesh (OBJ; a generated torus scene when no file is given).
     Mesh(mesh_cmd::MeshArgs),
+    /// Render a point cloud as splats (PLY / OBJ vertices; a generated scene when no file is given).
+    Points(points_cmd::PointsArgs),
     /// Render a volume (a built-in CT-like head when no file is given).
     Volume(volume_cmd::VolumeArgs),
     /// Extract what one view zone sees from a spatial image, or a red/cyan anaglyph.
@@ -44,6 +47,7 @@ fn main() -> std::process::ExitCode {
     let result = match cli.command {
         Command::Mask(a) => mask_cmd::run(a),
         Command::Mesh(a) => mesh_cmd::run(a),
+        Command::Points(a) => points_cmd::run(a),
         Command::Views(a) => views_cmd::run(a),
         Command::Volume(a) => volume_cmd::run(a),
     };

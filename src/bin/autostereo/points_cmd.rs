@@ -1,0 +1,148 @@
+//! `autostereo points`: render a point cloud as splats (a generated torus scene when no file is
+//! given).
+
+use std::path::PathBuf;
+use std::time::Instant;
+
+use anyhow::{bail, Result};
+use autostereo::points::{GroupCount, PointCloud, SplatScene};
+use autostereo::render::{PointSplatter, SplatDepth, SplatMethod, SplatOptions};
+
+use crate::args::{gpu, Method, RenderArgs};
+use crate::run::{compare_with, report, timed};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum DepthArg {
+    /// One depth per subpixel (subpixel-resolution geometry pass).
+    Exact,
+    /// The paper's mean depth per pixel.
+    Paper,
+}
+
+#[derive(clap::Args)]
+pub struct PointsArgs {
+    /// PLY (ASCII or binary) or OBJ (its vertices); a generated torus scene when omitted.
+    file: Option<PathBuf>,
+    #[command(flatten)]
+    common: RenderArgs,
+    /// ε of the ε-z compositing, as a fraction of the scene's depth extent (bounding diameter).
+    #[arg(long, default_value_t = autostereo::render::splat::DEFAULT_EPSILON_FRACTION)]
+    epsilon: f32,
+    /// Splat groups: `auto` (no overlap inside a group) or a fixed count K.
+    #[arg(long, default_value = "auto", value_parser = parse_groups)]
+    groups: GroupCount,
+    /// Multiply every splat radius (given or estimated) by S.
+    #[arg(long, default_value_t = 1.0)]
+    radius_scale: f32,
+    /// Single-pass depth per group image: exact (per subpixel) or the paper's (per pixel).
+    #[arg(long, value_enum, default_value = "exact")]
+    depth: DepthArg,
+}
+
+fn parse_groups(s: &str) -> Result<GroupCount, String> {
+    if s == "auto" {
+        return Ok(GroupCount::Auto);
+    }
+    match s.parse::<u32>() {
+        Ok(k) if k >= 1 => Ok(GroupCount::Fixed(k)),
+        _ => Err(format!("'{s}' is neither 'auto' nor a group count ≥ 1")),
+    }
+}
+
+pub fn run(args: PointsArgs) -> Result<()> {
+    args.common.check()?;
+    if !(args.epsilon.is_finite() && args.epsilon >= 0.0) {
+        bail!("--epsilon {}: must be finite and ≥ 0", args.epsilon);
+    }
+    let start = Instant::now();
+    let cloud = match &args.file {
+        Some(path) => PointCloud::load(path)?,
+        None => PointCloud::torus_scene(),
+    };
+    let load_ms = start.elapsed().as_secs_f64() * 1e3;
+    let (splats, completion) = cloud.complete(args.radius_scale)?;
+    drop(cloud);
+    let bounds = splats.bounds().expect("complete() rejects empty clouds");
+    let frame = args.common.frame(bounds)?;
+    let ctx = gpu()?;
+    let device = &ctx.device;
+    let scene = SplatScene::new(device, &splats, args.groups)?;
+    let options = SplatOptions {
+        depth: match args.depth {
+            DepthArg::Exact => SplatDepth::Exact,
+            DepthArg::Paper => SplatDepth::Paper,
+        },
+        epsilon: SplatOptions::epsilon_for(&scene, args.epsilon),
+    };
+    let method = |m: Method| match m {
+        Method::SinglePass => SplatMethod::SinglePass,
+        Method::NPass => SplatMethod::NPass,
+        Method::SingleView => SplatMethod::SingleView,
+    };
+    let mut renderer = PointSplatter::new(device, method(args.common.method), options)?;
+    let run = timed(&ctx, &mut renderer, &scene, &frame, args.common.frames)?;
+    if let Some(out) = &args.common.out {
+        run.image.save_png(out)?;
+    }
+    let diff = if args.common.compare {
+        let mut npass = PointSplatter::new(device, SplatMethod::NPass, options)?;
+        Some(compare_with(&ctx, &mut npass, &scene, &frame, &run.image)?)
+    } else {
+        None
+    };
+    let gpu_bytes = scene.buffer_bytes() + renderer.allocated_bytes();
+    let method_name = args.common.method.name();
+    let fields = serde_json::json!({
+        "method": method_name,
+        "depth": options.depth.name(),
+        "views": frame.camera.views,
+        "views_per_pixel": frame.display.views_per_pixel(),
+        "display": args.common.display.display,
+        "size": args.common.size,
+        "adapter": ctx.adapter_label(),
+        "ms": run.ms,
+        "frames": args.common.frames,
+        "timing": run.timing,
+        "points": splats.len(),
+        "load_ms": load_ms,
+        "normals_estimated": completion.normals_estimated,
+        "radii_estimated": completion.radii_estimated,
+        "estimate_ms": completion.estimate_ms,
+        "groups": scene.groups(),
+        "group_conflicts": scene.conflicts,
+        "grouping_ms": scene.grouping_ms,
+        "epsilon": options.epsilon,
+        "median_radius": scene.median_radius,
+        "gpu_bytes": gpu_bytes,
+        "focal_distance": frame.camera.focal_distance,
+        "separation": frame.camera.separation,
+    });
+    let estimated = match (completion.normals_estimated, completion.radii_estimated) {
+        (false, false) => String::new(),
+        (n, r) => format!(
+            " ({}{}{} estimated in {:.0} ms)",
+            if n { "normals" } else { "" },
+            if n && r { " + " } else { "" },
+            if r { "radii" } else { "" },
+            completion.estimate_ms
+        ),
+    };
+    let summary = format!(
+        "{method_name} ({} depth): {} points{estimated}, {} groups ({} conflicts, {:.0} ms), {} views, {}x{}, {:.2} ms/frame (median of {}, {:?}), GPU memory {:.1} MiB, on {}",
+        options.depth.name(),
+        splats.len(),
+        scene.groups(),
+        scene.conflicts,
+        scene.grouping_ms,
+        frame.camera.views,
+        args.common.size[0],
+        args.common.size[1],
+        run.ms,
+        args.common.frames,
+        run.timing,
+        gpu_bytes as f64 / (1u64 << 20) as f64,
+        ctx.adapter_label()
+    );
+    report(args.common.json, fields, diff, &summary);
+    Ok(())
+}
