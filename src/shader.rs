@@ -206,5 +206,13 @@ mod tests {
             wgsl_size("volume_raycast.wgsl", "VolumeParams"),
             rs::<crate::render::VolumeParams>()
         );
+        assert_eq!(
+            wgsl_size("splat_cover.wgsl", "Splat"),
+            rs::<crate::points::GpuSplat>()
+        );
+        assert_eq!(
+            wgsl_size("splat_composite.wgsl", "SplatParams"),
+            rs::<crate::render::splat::SplatParams>()
+        );
     }
 }

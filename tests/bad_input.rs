@@ -147,6 +147,10 @@ fn cli(args: &[&str]) -> (bool, String) {
 #[test]
 fn cli_reports_bad_input_without_panicking() {
     let bad_obj = temp_file("cli_bad.obj", "v 1 2 x\nf 1 2 3\n");
+    let bad_ply = temp_file(
+        "cli_bad.ply",
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n1 1\n",
+    );
     let calibration = temp_file("cli_calibration.json", r#"{"pitch": {"value": 50}}"#);
     let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/test-input/cli_out.png");
     let out = out.to_str().unwrap();
@@ -185,6 +189,18 @@ fn cli_reports_bad_input_without_panicking() {
         ),
         (vec!["mesh", "--frames", "0"], "at least 1"),
         (vec!["volume", "missing.nrrd"], "missing.nrrd"),
+        (vec!["points", "missing.ply"], "missing.ply"),
+        (vec!["points", bad_ply.to_str().unwrap()], "truncated"),
+        (vec!["points", "cloud.xyz"], "unknown extension"),
+        (
+            vec!["points", "--groups", "0", "--size", "8x8"],
+            "group count",
+        ),
+        (vec!["points", "--epsilon=-1", "--size", "8x8"], "--epsilon"),
+        (
+            vec!["points", "--radius-scale", "NaN", "--size", "8x8"],
+            "radius scale",
+        ),
         (
             vec!["volume", "--tf", "nope", "--size", "8x8"],
             "unknown preset",
@@ -226,4 +242,38 @@ fn cli_reports_bad_input_without_panicking() {
             "{args:?}: stderr lacks '{expect}': {stderr}"
         );
     }
+}
+
+#[test]
+fn bad_point_clouds_and_splat_settings_are_errors() {
+    use autostereo::points::PointCloud;
+    use autostereo::render::{PointSplatter, SplatDepth, SplatMethod, SplatOptions};
+    let missing = PointCloud::load("no/such/cloud.ply".as_ref()).unwrap_err();
+    assert!(matches!(missing, Error::Io { .. }), "{missing}");
+    let ply = temp_file("not_ply.ply", "hello\n");
+    let err = PointCloud::load(&ply).unwrap_err();
+    assert!(
+        matches!(err, Error::Points { .. }) && err.to_string().contains("not a PLY"),
+        "{err}"
+    );
+    let mut cloud = PointCloud::sphere(10, glam::Vec3::ZERO, 1.0, Some(1.0));
+    cloud.radii.as_mut().unwrap()[3] = -1.0;
+    assert!(cloud
+        .complete(1.0)
+        .unwrap_err()
+        .to_string()
+        .contains("point 3"));
+    cloud.radii = None;
+    cloud.normals.as_mut().unwrap().pop();
+    assert!(cloud.complete(1.0).is_err());
+    assert!(PointCloud::default().complete(1.0).is_err());
+    let ctx = autostereo::gpu::GpuContext::new(&Default::default()).unwrap();
+    let options = SplatOptions {
+        depth: SplatDepth::Exact,
+        epsilon: f32::NAN,
+    };
+    let err = PointSplatter::new(&ctx.device, SplatMethod::SinglePass, options)
+        .err()
+        .unwrap();
+    assert!(err.to_string().contains("epsilon"), "{err}");
 }

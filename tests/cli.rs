@@ -171,3 +171,53 @@ fn volume_main_job_writes_spatial_views_and_anaglyph() {
         (Some("slices"), Some("paper"))
     );
 }
+
+#[test]
+fn points_json_reports_preprocessing_memory_and_compares_with_npass() {
+    let ply = out_path("cli_points.ply");
+    // A binary little-endian PLY of a sphere without normals or radii: both get estimated.
+    let n = 3000;
+    let mut bytes = format!("ply\nformat binary_little_endian 1.0\nelement vertex {n}\nproperty float x\nproperty float y\nproperty float z\nend_header\n").into_bytes();
+    let cloud = autostereo::points::PointCloud::sphere(n, glam::Vec3::ZERO, 1.0, None);
+    for p in &cloud.positions {
+        for v in p.to_array() {
+            bytes.extend(v.to_le_bytes());
+        }
+    }
+    std::fs::write(&ply, bytes).unwrap();
+    for depth in ["exact", "paper"] {
+        let stdout = run(&[
+            "points",
+            ply.to_str().unwrap(),
+            "--size",
+            "96x64",
+            "--frames",
+            "1",
+            "--depth",
+            depth,
+            "--json",
+            "--compare",
+        ]);
+        let json: serde_json::Value = serde_json::from_str(stdout.trim()).unwrap();
+        assert_eq!(json["points"], n);
+        assert_eq!(json["normals_estimated"], true);
+        assert_eq!(json["radii_estimated"], true);
+        assert_eq!(json["depth"], depth);
+        assert!(json["groups"].as_u64().unwrap() >= 2, "{json}");
+        assert!(json["gpu_bytes"].as_u64().unwrap() > 0);
+        let psnr = json["psnr_db"].as_f64().unwrap();
+        assert!(
+            if depth == "exact" {
+                psnr >= 45.0
+            } else {
+                psnr >= 20.0
+            },
+            "{json}"
+        );
+    }
+    for method in ["n-pass", "single-view"] {
+        run(&[
+            "points", "--size", "64x48", "--frames", "1", "--method", method, "--groups", "3",
+        ]);
+    }
+}

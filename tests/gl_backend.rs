@@ -147,3 +147,39 @@ fn gl_backend_runs_the_single_pass_renderers() {
         assert!(diff.psnr_db >= 45.0, "GL volume {name}: {diff:?}");
     }
 }
+
+/// Splats on GL: both depth modes' pipelines build and the exact single pass equals the GL
+/// N-pass.
+#[test]
+fn gl_backend_splats_points() {
+    use autostereo::points::{GroupCount, PointCloud, SplatScene};
+    use autostereo::render::{PointSplatter, SplatDepth, SplatMethod, SplatOptions};
+
+    let gl = gl();
+    let (device, queue) = (&gl.device, &gl.queue);
+    let (splats, _) = PointCloud::torus_scene().complete(1.0).unwrap();
+    let scene = SplatScene::new(device, &splats, GroupCount::Auto).unwrap();
+    let camera = MultiViewCamera::framing(splats.bounds().unwrap(), 8, None, 0.5, 1.0).unwrap();
+    let frame = Frame::new(camera, Display::parse("hubner8").unwrap(), [96, 96]).unwrap();
+    let render = |method, depth| {
+        let options = SplatOptions {
+            depth,
+            ..SplatOptions::for_scene(&scene, 0.01)
+        };
+        let target = SpatialTarget::new(device, frame.size).unwrap();
+        PointSplatter::new(device, method, options)
+            .unwrap()
+            .render(device, queue, &scene, &frame, &target)
+            .unwrap();
+        target.read(device, queue).unwrap()
+    };
+    let npass = render(SplatMethod::NPass, SplatDepth::Exact);
+    assert!(
+        npass.data.iter().filter(|&&v| v > 8).count() > 1000,
+        "GL splats are empty"
+    );
+    let exact = compare(&render(SplatMethod::SinglePass, SplatDepth::Exact), &npass).unwrap();
+    assert!(exact.psnr_db >= 45.0, "GL splats exact: {exact:?}");
+    let paper = compare(&render(SplatMethod::SinglePass, SplatDepth::Paper), &npass).unwrap();
+    assert!(paper.psnr_db >= 20.0, "GL splats paper: {paper:?}");
+}
