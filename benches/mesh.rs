@@ -5,8 +5,9 @@
 //!
 //! `data/fetch && cargo bench --bench mesh`   (report: `python3 docs/tools/bench_table.py mesh`)
 
+mod common;
+
 use std::path::Path;
-use std::time::Duration;
 
 use autostereo::camera::MultiViewCamera;
 use autostereo::display::Display;
@@ -20,7 +21,7 @@ use autostereo::target::SpatialTarget;
 use autostereo::timing::FrameTimer;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 
-const SIZE: [u32; 2] = [512, 512];
+use common::{configure, gpu_iter, SIZE};
 
 fn load(name: &str) -> Mesh {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -74,10 +75,7 @@ fn bench(c: &mut Criterion) {
             .unwrap();
             let frame = Frame::new(camera, display, SIZE).unwrap();
             let mut group = c.benchmark_group(format!("mesh/{mesh_name}/N{views}"));
-            group
-                .sample_size(10)
-                .warm_up_time(Duration::from_millis(1))
-                .measurement_time(Duration::from_secs(1));
+            configure(&mut group);
             for (name, renderer) in &mut single_pass {
                 group.bench_function(BenchmarkId::new("single-pass", *name), |b| {
                     gpu_iter(b, &timer, device, queue, |e| {
@@ -98,23 +96,6 @@ fn bench(c: &mut Criterion) {
             group.finish();
         }
     }
-}
-
-/// Criterion iterations timed on the GPU (timestamps) rather than by the CPU clock.
-fn gpu_iter(
-    b: &mut criterion::Bencher,
-    timer: &FrameTimer,
-    device: &wgpu::Device,
-    queue: &wgpu::Queue,
-    mut encode: impl FnMut(&mut wgpu::CommandEncoder) -> autostereo::Result<()>,
-) {
-    b.iter_custom(|iters| {
-        let mut total_ms = 0.0;
-        for _ in 0..iters {
-            total_ms += timer.time_frame(device, queue, &mut encode).unwrap();
-        }
-        Duration::from_secs_f64(total_ms / 1e3)
-    })
 }
 
 criterion_group!(benches, bench);

@@ -4,8 +4,9 @@
 //!
 //! `data/fetch && cargo bench --bench volume`   (report: `python3 docs/tools/bench_table.py volume`)
 
+mod common;
+
 use std::path::Path;
-use std::time::Duration;
 
 use autostereo::camera::MultiViewCamera;
 use autostereo::display::Display;
@@ -20,7 +21,7 @@ use autostereo::volume::{load, phantom, TransferFunction, Volume};
 use criterion::{criterion_group, criterion_main, Criterion};
 use glam::Mat4;
 
-const SIZE: [u32; 2] = [512, 512];
+use common::{configure, gpu_iter, SIZE};
 
 fn data_sets() -> Vec<(&'static str, Volume, &'static str)> {
     let brain = Path::new(env!("CARGO_MANIFEST_DIR")).join("data/fetched/brainsmall.den");
@@ -74,22 +75,11 @@ fn bench(c: &mut Criterion) {
             camera.separation *= 7.0 / (views - 1) as f32;
             let frame = Frame::new(camera, display, SIZE).unwrap();
             let mut group = c.benchmark_group(format!("volume/{name}/N{views}"));
-            group
-                .sample_size(10)
-                .warm_up_time(Duration::from_millis(1))
-                .measurement_time(Duration::from_secs(1));
+            configure(&mut group);
             for (method, renderer) in &mut methods {
                 group.bench_function(*method, |b| {
-                    b.iter_custom(|iters| {
-                        let mut total_ms = 0.0;
-                        for _ in 0..iters {
-                            total_ms += timer
-                                .time_frame(device, queue, |e| {
-                                    renderer.encode(device, queue, e, &scene, &frame, &target)
-                                })
-                                .unwrap();
-                        }
-                        Duration::from_secs_f64(total_ms / 1e3)
+                    gpu_iter(b, &timer, device, queue, |e| {
+                        renderer.encode(device, queue, e, &scene, &frame, &target)
                     })
                 });
             }
