@@ -95,3 +95,21 @@ pub(crate) fn draw_fullscreen(
     }
     pass.draw(0..3, 0..1);
 }
+
+/// A storage-buffer entry of a bind group layout.
+pub(crate) fn storage_entry(
+    binding: u32,
+    read_only: bool,
+    stages: wgpu::ShaderStages,
+) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: stages,
+        ty: wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Storage { read_only },
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        },
+        count: None,
+    }
+}

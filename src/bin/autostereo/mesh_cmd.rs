@@ -10,7 +10,7 @@ use autostereo::render::{
 };
 
 use crate::args::{gpu, Method, RenderArgs};
-use crate::run::{compare_with, report, timed};
+use crate::run::{compare_with, report, run_fields, timed};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum VisibilityArg {
@@ -83,20 +83,13 @@ pub fn run(args: MeshArgs) -> Result<()> {
         None
     };
     let method_name = args.common.method.name();
-    let mut fields = serde_json::json!({
-        "method": method_name,
-        "views": frame.camera.views,
-        "views_per_pixel": frame.display.views_per_pixel(),
-        "display": args.common.display.display,
-        "size": args.common.size,
-        "adapter": ctx.adapter_label(),
-        "ms": run.ms,
-        "frames": args.common.frames,
-        "timing": run.timing,
-        "triangles": mesh.triangle_count(),
-        "focal_distance": frame.camera.focal_distance,
-        "separation": frame.camera.separation,
-    });
+    let mut fields = run_fields(
+        &ctx,
+        &args.common,
+        &frame,
+        &run,
+        serde_json::json!({ "triangles": mesh.triangle_count() }),
+    );
     if args.common.method == Method::SinglePass {
         fields["visibility"] = single_pass_options(device, &args).visibility.name().into();
         fields["bounds"] = format!("{:?}", args.bounds).to_lowercase().into();

@@ -9,7 +9,7 @@ use autostereo::points::{GroupCount, PointCloud, SplatScene};
 use autostereo::render::{PointSplatter, SplatDepth, SplatMethod, SplatOptions};
 
 use crate::args::{gpu, Method, RenderArgs};
-use crate::run::{compare_with, report, timed};
+use crate::run::{compare_with, report, run_fields, timed};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum DepthArg {
@@ -92,17 +92,8 @@ pub fn run(args: PointsArgs) -> Result<()> {
     };
     let gpu_bytes = scene.buffer_bytes() + renderer.allocated_bytes();
     let method_name = args.common.method.name();
-    let fields = serde_json::json!({
-        "method": method_name,
+    let extra = serde_json::json!({
         "depth": options.depth.name(),
-        "views": frame.camera.views,
-        "views_per_pixel": frame.display.views_per_pixel(),
-        "display": args.common.display.display,
-        "size": args.common.size,
-        "adapter": ctx.adapter_label(),
-        "ms": run.ms,
-        "frames": args.common.frames,
-        "timing": run.timing,
         "points": splats.len(),
         "load_ms": load_ms,
         "normals_estimated": completion.normals_estimated,
@@ -114,9 +105,8 @@ pub fn run(args: PointsArgs) -> Result<()> {
         "epsilon": options.epsilon,
         "median_radius": scene.median_radius,
         "gpu_bytes": gpu_bytes,
-        "focal_distance": frame.camera.focal_distance,
-        "separation": frame.camera.separation,
     });
+    let fields = run_fields(&ctx, &args.common, &frame, &run, extra);
     let estimated = match (completion.normals_estimated, completion.radii_estimated) {
         (false, false) => String::new(),
         (n, r) => format!(

@@ -79,3 +79,31 @@ pub fn report(json: bool, mut fields: serde_json::Value, diff: Option<ImageDiff>
         }
     }
 }
+
+/// The `--json` fields every render command reports (what ran, where, how fast) plus the
+/// command's own `extra` object.
+pub fn run_fields(
+    ctx: &GpuContext,
+    common: &crate::args::RenderArgs,
+    frame: &Frame,
+    run: &Timed,
+    extra: serde_json::Value,
+) -> serde_json::Value {
+    let mut fields = serde_json::json!({
+        "method": common.method.name(),
+        "views": frame.camera.views,
+        "views_per_pixel": frame.display.views_per_pixel(),
+        "display": common.display.display,
+        "size": common.size,
+        "adapter": ctx.adapter_label(),
+        "ms": run.ms,
+        "frames": common.frames,
+        "timing": run.timing,
+        "focal_distance": frame.camera.focal_distance,
+        "separation": frame.camera.separation,
+    });
+    for (k, v) in extra.as_object().into_iter().flatten() {
+        fields[k] = v.clone();
+    }
+    fields
+}

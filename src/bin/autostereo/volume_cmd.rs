@@ -15,7 +15,7 @@ use autostereo::volume::{phantom, TransferFunction, Volume};
 use glam::Mat4;
 
 use crate::args::{check_output, gpu, Method, RenderArgs};
-use crate::run::{compare_with, report, timed};
+use crate::run::{compare_with, report, run_fields, timed};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum Builtin {
@@ -238,28 +238,18 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         None
     };
     let method = args.common.method.name();
-    let fields = serde_json::json!({
-        "method": method,
+    let extra = serde_json::json!({
         "path": match args.path { PathArg::Compute => "compute", PathArg::Slices => "slices" },
         "alpha": match (args.path, args.alpha) {
             (PathArg::Compute, _) | (PathArg::Slices, AlphaArg::Exact) => "exact",
             (PathArg::Slices, AlphaArg::Paper) => "paper",
         },
-        "views": frame.camera.views,
-        "views_per_pixel": frame.display.views_per_pixel(),
-        "display": args.common.display.display,
-        "size": args.common.size,
-        "adapter": ctx.adapter_label(),
-        "ms": run.ms,
-        "frames": args.common.frames,
-        "timing": run.timing,
         "volume_dims": volume.dims,
         "spacing": volume.spacing,
         "step": scene.step,
         "samples_per_ray_max": (scene.extent.length() / scene.step).ceil(),
-        "focal_distance": frame.camera.focal_distance,
-        "separation": frame.camera.separation,
     });
+    let fields = run_fields(&ctx, &args.common, &frame, &run, extra);
     let summary = format!(
         "{method}: volume {:?}, {} views, {}x{}, {:.2} ms/frame (median of {}, {:?}) on {}",
         volume.dims,

@@ -3,7 +3,7 @@
 use super::{CoverBounds, MeshSinglePassOptions, Visibility};
 use crate::error::Result;
 use crate::frame::frame_bind_group_layout;
-use crate::render::pipeline::fullscreen_pipeline_with;
+use crate::render::pipeline::{fullscreen_pipeline_with, storage_entry};
 use crate::render::specialize::Specialization;
 use crate::render::view_layers::nearest_depth_test;
 use crate::target::SPATIAL_FORMAT;
@@ -27,23 +27,6 @@ pub(super) struct Layouts {
     pub triangle_ids: wgpu::BindGroupLayout,
 }
 
-fn storage(
-    binding: u32,
-    read_only: bool,
-    stages: wgpu::ShaderStages,
-) -> wgpu::BindGroupLayoutEntry {
-    wgpu::BindGroupLayoutEntry {
-        binding,
-        visibility: stages,
-        ty: wgpu::BindingType::Buffer {
-            ty: wgpu::BufferBindingType::Storage { read_only },
-            has_dynamic_offset: false,
-            min_binding_size: None,
-        },
-        count: None,
-    }
-}
-
 impl Layouts {
     pub fn new(device: &wgpu::Device) -> Self {
         let vf = wgpu::ShaderStages::VERTEX_FRAGMENT;
@@ -60,26 +43,26 @@ impl Layouts {
             mesh: layout(
                 "mesh + cover data",
                 &[
-                    storage(0, true, vf),
-                    storage(1, true, vf),
-                    storage(2, true, vf),
-                    storage(3, true, vf),
+                    storage_entry(0, true, vf),
+                    storage_entry(1, true, vf),
+                    storage_entry(2, true, vf),
+                    storage_entry(3, true, vf),
                 ],
             ),
             cover_compute: layout(
                 "mesh cover compute",
                 &[
-                    storage(0, true, cs),
-                    storage(1, true, cs),
-                    storage(2, false, cs),
-                    storage(3, false, cs),
+                    storage_entry(0, true, cs),
+                    storage_entry(1, true, cs),
+                    storage_entry(2, false, cs),
+                    storage_entry(3, false, cs),
                 ],
             ),
             keys_write: layout(
                 "nearest keys (write)",
-                &[storage(0, false, fs | wgpu::ShaderStages::COMPUTE)],
+                &[storage_entry(0, false, fs | wgpu::ShaderStages::COMPUTE)],
             ),
-            keys_read: layout("nearest keys (read)", &[storage(0, true, fs)]),
+            keys_read: layout("nearest keys (read)", &[storage_entry(0, true, fs)]),
             triangle_ids: layout(
                 "subpixel triangle ids",
                 &[wgpu::BindGroupLayoutEntry {

@@ -5,7 +5,7 @@ use bytemuck::{Pod, Zeroable};
 use crate::error::Result;
 use crate::frame::frame_bind_group_layout;
 use crate::render::pass_params::PassParams;
-use crate::render::pipeline::fullscreen_pipeline_with;
+use crate::render::pipeline::{fullscreen_pipeline_with, storage_entry};
 use crate::render::specialize::Specialization;
 use crate::render::view_layers::nearest_depth_test;
 use crate::target::SPATIAL_FORMAT;
@@ -47,23 +47,6 @@ pub(super) struct Layouts {
     pub params: wgpu::BindGroupLayout,
 }
 
-fn storage(
-    binding: u32,
-    read_only: bool,
-    stages: wgpu::ShaderStages,
-) -> wgpu::BindGroupLayoutEntry {
-    wgpu::BindGroupLayoutEntry {
-        binding,
-        visibility: stages,
-        ty: wgpu::BindingType::Buffer {
-            ty: wgpu::BufferBindingType::Storage { read_only },
-            has_dynamic_offset: false,
-            min_binding_size: None,
-        },
-        count: None,
-    }
-}
-
 impl Layouts {
     pub fn new(device: &wgpu::Device) -> Self {
         let cs = wgpu::ShaderStages::COMPUTE;
@@ -79,12 +62,15 @@ impl Layouts {
             cover: layout(
                 "splat cover",
                 &[
-                    storage(0, true, cs),
-                    storage(1, false, cs),
-                    storage(2, false, cs),
+                    storage_entry(0, true, cs),
+                    storage_entry(1, false, cs),
+                    storage_entry(2, false, cs),
                 ],
             ),
-            quad: layout("splat quads", &[storage(0, true, vf), storage(1, true, vf)]),
+            quad: layout(
+                "splat quads",
+                &[storage_entry(0, true, vf), storage_entry(1, true, vf)],
+            ),
             groups: layout(
                 "splat group images",
                 &[wgpu::BindGroupLayoutEntry {
