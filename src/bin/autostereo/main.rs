@@ -1,6 +1,7 @@
 //! `autostereo`: command-line front end of the library.
 
 mod args;
+mod bench;
 mod mask_cmd;
 mod mesh_cmd;
 mod points_cmd;
@@ -29,6 +30,8 @@ enum Command {
     Mesh(mesh_cmd::MeshArgs),
     /// Render a point cloud as splats (PLY / OBJ vertices; a generated scene when no file is given).
     Points(points_cmd::PointsArgs),
+    /// Benchmark every renderer side by side, with speed/accuracy trade-offs (`--report DIR`).
+    Bench(bench::BenchArgs),
     /// Render a volume (a built-in CT-like head when no file is given).
     Volume(volume_cmd::VolumeArgs),
     /// Extract what one view zone sees from a spatial image, or a red/cyan anaglyph.
@@ -45,6 +48,7 @@ fn main() -> std::process::ExitCode {
     .init();
     let cli = Cli::parse();
     let result = match cli.command {
+        Command::Bench(a) => bench::run(a),
         Command::Mask(a) => mask_cmd::run(a),
         Command::Mesh(a) => mesh_cmd::run(a),
         Command::Points(a) => points_cmd::run(a),

@@ -1,0 +1,361 @@
+//! `autostereo bench`: single pass (every path and mode), N-pass and single view side by side in
+//! one process on one adapter, for volumes, point splats and meshes; speed/accuracy trade-offs
+//! against the N-pass high-quality render; what a scene that skips a feature saves. `--report
+//! DIR` writes DIR/BENCHMARKS.md (+ PNG plots with `--features plots`).
+
+mod plot;
+mod report;
+mod scenes;
+mod tradeoffs;
+
+use std::path::PathBuf;
+use std::time::Instant;
+
+use anyhow::{Context, Result};
+use autostereo::target::SpatialTarget;
+use autostereo::timing::{median, FrameTimer};
+use serde::{Deserialize, Serialize};
+
+use crate::args::gpu;
+use scenes::{BenchScene, Kind, MethodEntry};
+
+#[derive(clap::Args)]
+pub struct BenchArgs {
+    /// A smaller matrix (256², N = 2, 8, 64, the smaller data sets) that finishes in minutes.
+    #[arg(long)]
+    quick: bool,
+    /// Print all results as one JSON object on stdout.
+    #[arg(long)]
+    json: bool,
+    /// Write DIR/BENCHMARKS.md (and DIR/images/bench_*.png when built with `--features plots`).
+    #[arg(long)]
+    report: Option<PathBuf>,
+    /// Write the report from a saved `--json` output instead of measuring (re-plotting).
+    #[arg(long, requires = "report")]
+    from_json: Option<PathBuf>,
+    /// Timed frames per measurement (after 2 warm-up frames).
+    #[arg(long, default_value_t = 20)]
+    frames: u32,
+}
+
+/// What a run measures.
+pub struct Plan {
+    pub quick: bool,
+    pub size: [u32; 2],
+    pub views: Vec<u32>,
+    /// N-pass is measured up to this N (it grows linearly).
+    pub npass_max_views: u32,
+    /// Sizes measured on the paper's display only (the 1920×1080 subset).
+    pub extra_sizes: Vec<[u32; 2]>,
+    pub frames: u32,
+}
+
+impl Plan {
+    fn new(args: &BenchArgs) -> Self {
+        if args.quick {
+            Self {
+                quick: true,
+                size: [256, 256],
+                views: vec![2, 8, 64],
+                npass_max_views: 8,
+                extra_sizes: vec![],
+                frames: args.frames,
+            }
+        } else {
+            Self {
+                quick: false,
+                size: [512, 512],
+                views: vec![1, 2, 4, 8, 16, 32, 64],
+                npass_max_views: 64,
+                extra_sizes: vec![[1920, 1080]],
+                frames: args.frames,
+            }
+        }
+    }
+
+    /// (display spec, size) of every configuration; N-pass runs on the N sweep.
+    fn configs(&self) -> Vec<(String, [u32; 2])> {
+        let mut c: Vec<(String, [u32; 2])> = self
+            .views
+            .iter()
+            .map(|&n| (sweep_display(n), self.size))
+            .collect();
+        c.push(("lenticular:8".into(), self.size));
+        for size in &self.extra_sizes {
+            c.push(("hubner8".into(), *size));
+        }
+        c
+    }
+}
+
+/// The K = 3 display with N views of the N sweep: the slanted lens of the paper's display
+/// (`hubner8` is exactly `slanted:8,8,2/3,7/6`, DESIGN §1).
+pub fn sweep_display(n: u32) -> String {
+    if n == 8 {
+        "hubner8".into()
+    } else {
+        format!("slanted:{n},8,2/3,7/6")
+    }
+}
+
+/// Whether `display` is one of the N sweep's.
+pub fn in_sweep(display: &str) -> bool {
+    display.starts_with("slanted") || display == "hubner8"
+}
+
+/// One timed measurement.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Row {
+    pub primitive: String,
+    pub scene: String,
+    pub display: String,
+    pub views: u32,
+    pub views_per_pixel: u32,
+    pub size: [u32; 2],
+    pub method: String,
+    pub kind: Kind,
+    pub ms: f64,
+    pub frames: u32,
+}
+
+#[derive(Serialize, Deserialize)]
+pub struct Results {
+    pub adapter: String,
+    pub cpu: String,
+    pub command: String,
+    pub quick: bool,
+    pub frames: u32,
+    pub timing: String,
+    pub seconds: f64,
+    pub scenes: Vec<(String, String, String)>,
+    pub rows: Vec<Row>,
+    pub tradeoffs: Vec<tradeoffs::Tradeoff>,
+    pub economy: Vec<tradeoffs::Economy>,
+}
+
+fn cpu_name() -> String {
+    std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("model name"))
+                .and_then(|l| l.split(':').nth(1))
+                .map(|m| m.trim().to_string())
+        })
+        .map(|m| {
+            format!(
+                "{m}, {} threads",
+                std::thread::available_parallelism().map_or(1, |n| n.get())
+            )
+        })
+        .unwrap_or_else(|| "unknown CPU".into())
+}
+
+pub fn run(args: BenchArgs) -> Result<()> {
+    if args.frames == 0 {
+        anyhow::bail!("--frames must be at least 1");
+    }
+    if let Some(dir) = &args.report {
+        std::fs::create_dir_all(dir.join("images"))?;
+        if let Some(json) = &args.from_json {
+            let text = std::fs::read_to_string(json)
+                .with_context(|| format!("reading {}", json.display()))?;
+            let results: Results = serde_json::from_str(&text)
+                .with_context(|| format!("{} is not a `bench --json` output", json.display()))?;
+            report::write(dir, &results)?;
+            eprintln!("wrote {}", dir.join("BENCHMARKS.md").display());
+            return Ok(());
+        }
+    }
+    let start = Instant::now();
+    let plan = Plan::new(&args);
+    let ctx = gpu()?;
+    let timer = FrameTimer::new(&ctx.device, &ctx.queue);
+    eprintln!("loading scenes…");
+    let mut scenes = scenes::scenes(&ctx, plan.quick)?;
+    // Probe: one single-view frame per scene, for the duration estimate.
+    let mut probe_ms = Vec::new();
+    for scene in &scenes {
+        let mut methods = scenes::methods(&ctx.device, scene)?;
+        let sv = methods
+            .iter_mut()
+            .find(|m| m.kind == Kind::SingleView)
+            .expect("sv");
+        probe_ms.push(time(&ctx, &timer, scene, sv, "hubner8", plan.size, 1)?);
+    }
+    let estimate = estimate_seconds(&plan, &scenes, &probe_ms);
+    eprintln!(
+        "{} run: {} scenes, about {:.0} min on this adapter ({})",
+        if plan.quick { "quick" } else { "full" },
+        scenes.len(),
+        estimate / 60.0,
+        ctx.adapter_label()
+    );
+    let mut rows = Vec::new();
+    let total = count_measurements(&plan, &scenes);
+    for scene in &scenes {
+        let mut methods = scenes::methods(&ctx.device, scene)?;
+        for (display, size) in plan.configs() {
+            let frame = scenes::frame(scene.bounds, &display, size)?;
+            let n = frame.camera.views;
+            for (i, m) in methods.iter_mut().enumerate() {
+                if !measured(&plan, m.kind, i == 0, &display, n, size) {
+                    continue;
+                }
+                let ms = time(&ctx, &timer, scene, m, &display, size, plan.frames)?;
+                rows.push(Row {
+                    primitive: scene.primitive.into(),
+                    scene: scene.name.clone(),
+                    display: display.clone(),
+                    views: n,
+                    views_per_pixel: frame.display.views_per_pixel(),
+                    size,
+                    method: m.name.clone(),
+                    kind: m.kind,
+                    ms,
+                    frames: plan.frames,
+                });
+                eprintln!(
+                    "[{}/{total}] {} {} {display} {}x{}: {} {ms:.1} ms ({:.0} s elapsed)",
+                    rows.len(),
+                    scene.primitive,
+                    scene.name,
+                    size[0],
+                    size[1],
+                    m.name,
+                    start.elapsed().as_secs_f64()
+                );
+            }
+        }
+    }
+    eprintln!("speed/accuracy trade-offs…");
+    let tradeoffs = tradeoffs::measure(&ctx, &timer, &mut scenes, &plan)?;
+    let economy = tradeoffs::economy(&ctx, &timer, &mut scenes, &plan)?;
+    let results = Results {
+        adapter: ctx.adapter_label(),
+        cpu: cpu_name(),
+        command: std::env::args().collect::<Vec<_>>().join(" "),
+        quick: plan.quick,
+        frames: plan.frames,
+        timing: format!("{:?}", timer.source()),
+        seconds: start.elapsed().as_secs_f64(),
+        scenes: scenes
+            .iter()
+            .map(|s| (s.primitive.to_string(), s.name.clone(), s.detail.clone()))
+            .collect(),
+        rows,
+        tradeoffs,
+        economy,
+    };
+    if let Some(dir) = &args.report {
+        report::write(dir, &results)?;
+        eprintln!("wrote {}", dir.join("BENCHMARKS.md").display());
+    }
+    if args.json {
+        println!("{}", serde_json::to_string(&results)?);
+    }
+    eprintln!("done in {:.0} s", results.seconds);
+    Ok(())
+}
+
+/// Whether `kind` is measured for this configuration: N-pass on the slanted displays up to the
+/// plan's limit (and on the extra sizes), single view once per size (it has no views). The quick
+/// run sweeps N with each primitive's `primary` single pass only; the others at N = 8.
+fn measured(plan: &Plan, kind: Kind, primary: bool, display: &str, n: u32, size: [u32; 2]) -> bool {
+    let extra = size != plan.size;
+    match kind {
+        Kind::SinglePass => primary || !plan.quick || n == 8,
+        Kind::NPass => extra || (in_sweep(display) && n <= plan.npass_max_views),
+        Kind::SingleView => extra || display == "hubner8",
+    }
+}
+
+fn count_measurements(plan: &Plan, scenes: &[BenchScene]) -> usize {
+    let per_kind = |kind, primary| {
+        plan.configs()
+            .iter()
+            .filter(|(d, s)| {
+                let n = autostereo::display::Display::parse(d).map_or(0, |d| d.views());
+                measured(plan, kind, primary, d, n, *s)
+            })
+            .count()
+    };
+    scenes
+        .iter()
+        .map(|s| {
+            let single = match s.primitive {
+                "volume" => 3,
+                "points" => 2,
+                _ => 4,
+            };
+            per_kind(Kind::SinglePass, true)
+                + (single - 1) * per_kind(Kind::SinglePass, false)
+                + per_kind(Kind::NPass, false)
+                + per_kind(Kind::SingleView, false)
+        })
+        .sum()
+}
+
+/// Seconds the run should take: single view ≈ `probe`, single pass ≈ 2.5 × probe, N-pass ≈ N ×
+/// probe, scaled by pixels; plus ~20 % for the trade-offs.
+fn estimate_seconds(plan: &Plan, scenes: &[BenchScene], probe_ms: &[f64]) -> f64 {
+    let frames = (plan.frames + 2) as f64;
+    let mut ms = 0.0;
+    for (scene, probe) in scenes.iter().zip(probe_ms) {
+        let singles = match scene.primitive {
+            "volume" => 3.0,
+            "points" => 2.0,
+            _ => 4.0,
+        };
+        for (display, size) in plan.configs() {
+            let n = autostereo::display::Display::parse(&display).map_or(1, |d| d.views());
+            let scale = (size[0] * size[1]) as f64 / (plan.size[0] * plan.size[1]) as f64;
+            ms += 2.5 * probe * scale * frames;
+            if measured(plan, Kind::SinglePass, false, &display, n, size) {
+                ms += (singles - 1.0) * 2.5 * probe * scale * frames;
+            }
+            if measured(plan, Kind::NPass, false, &display, n, size) {
+                ms += n as f64 * probe * scale * frames;
+            }
+            if measured(plan, Kind::SingleView, false, &display, n, size) {
+                ms += probe * scale * frames;
+            }
+        }
+    }
+    ms * 1.2 / 1e3
+}
+
+/// Median GPU ms of `frames` frames of `method` on `scene` (after 2 warm-up frames).
+fn time(
+    ctx: &autostereo::gpu::GpuContext,
+    timer: &FrameTimer,
+    scene: &BenchScene,
+    method: &mut MethodEntry,
+    display: &str,
+    size: [u32; 2],
+    frames: u32,
+) -> Result<f64> {
+    let frame = scenes::frame(scene.bounds, display, size)?;
+    time_frame(ctx, timer, scene, &mut method.renderer, &frame, frames)
+}
+
+pub(crate) fn time_frame(
+    ctx: &autostereo::gpu::GpuContext,
+    timer: &FrameTimer,
+    scene: &BenchScene,
+    renderer: &mut scenes::AnyRenderer,
+    frame: &autostereo::frame::Frame,
+    frames: u32,
+) -> Result<f64> {
+    let target = SpatialTarget::new(&ctx.device, frame.size)?;
+    let mut samples = Vec::new();
+    for i in 0..frames + 2 {
+        let ms = timer.time_frame(&ctx.device, &ctx.queue, |e| {
+            renderer.encode(ctx, e, &scene.data, frame, &target)
+        })?;
+        if i >= 2 {
+            samples.push(ms);
+        }
+    }
+    Ok(median(&samples))
+}

@@ -1,0 +1,316 @@
+//! The benchmark's scenes (one per primitive and data set) and the renderers measured on them.
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context, Result};
+use autostereo::camera::{Bounds, MultiViewCamera};
+use autostereo::display::Display;
+use autostereo::frame::Frame;
+use autostereo::mesh::{Mesh, MeshBuffers};
+use autostereo::points::{GroupCount, PointCloud, SplatScene};
+use autostereo::render::{
+    AlphaMode, MeshBaseline, MeshBaselineMethod, MeshSinglePass, MeshSinglePassOptions,
+    PointSplatter, Renderer, SplatDepth, SplatMethod, SplatOptions, Visibility, VolumeMethod,
+    VolumeRaycaster, VolumeScene, VolumeSlicer,
+};
+use autostereo::target::SpatialTarget;
+use autostereo::volume::{load, phantom, TransferFunction, Volume};
+use glam::Mat4;
+
+/// A scene on the GPU, of any primitive.
+pub enum SceneData {
+    Volume(VolumeScene),
+    Points(SplatScene),
+    Mesh(MeshBuffers),
+}
+
+pub struct BenchScene {
+    /// volume | points | mesh
+    pub primitive: &'static str,
+    pub name: String,
+    pub detail: String,
+    pub bounds: Bounds,
+    pub data: SceneData,
+    /// The splats of a point scene (regrouped by the trade-off studies).
+    pub splats: Option<autostereo::points::Splats>,
+}
+
+/// Which family a measured method belongs to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Kind {
+    SinglePass,
+    NPass,
+    SingleView,
+}
+
+/// A renderer for one primitive, behind one interface.
+pub enum AnyRenderer {
+    Volume(Box<dyn Renderer<VolumeScene>>),
+    Points(Box<PointSplatter>),
+    Mesh(Box<dyn Renderer<MeshBuffers>>),
+}
+
+impl AnyRenderer {
+    pub fn points(splatter: PointSplatter) -> Self {
+        Self::Points(Box::new(splatter))
+    }
+
+    pub fn encode(
+        &mut self,
+        ctx: &autostereo::gpu::GpuContext,
+        encoder: &mut wgpu::CommandEncoder,
+        scene: &SceneData,
+        frame: &Frame,
+        target: &SpatialTarget,
+    ) -> autostereo::Result<()> {
+        let (d, q) = (&ctx.device, &ctx.queue);
+        match (self, scene) {
+            (Self::Volume(r), SceneData::Volume(s)) => r.encode(d, q, encoder, s, frame, target),
+            (Self::Points(r), SceneData::Points(s)) => r.encode(d, q, encoder, s, frame, target),
+            (Self::Mesh(r), SceneData::Mesh(s)) => r.encode(d, q, encoder, s, frame, target),
+            _ => unreachable!("renderers are made per primitive"),
+        }
+    }
+
+    pub fn render(
+        &mut self,
+        ctx: &autostereo::gpu::GpuContext,
+        scene: &SceneData,
+        frame: &Frame,
+        target: &SpatialTarget,
+    ) -> autostereo::Result<()> {
+        let mut encoder = ctx.device.create_command_encoder(&Default::default());
+        self.encode(ctx, &mut encoder, scene, frame, target)?;
+        ctx.queue.submit([encoder.finish()]);
+        autostereo::readback::wait_idle(&ctx.device)
+    }
+}
+
+pub struct MethodEntry {
+    pub name: String,
+    pub kind: Kind,
+    pub renderer: AnyRenderer,
+}
+
+fn fetched(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("data/fetched")
+        .join(name)
+}
+
+/// The scenes of a run: real data where `data/fetch` got it, generated stand-ins otherwise.
+pub fn scenes(ctx: &autostereo::gpu::GpuContext, quick: bool) -> Result<Vec<BenchScene>> {
+    let (device, queue) = (&ctx.device, &ctx.queue);
+    let mut out = Vec::new();
+    let rotation = Mat4::from_rotation_x(-90f32.to_radians());
+    let mut volumes = vec![(
+        "head (built-in)".to_string(),
+        phantom::ct_head(if quick { 64 } else { 96 })?,
+        "ct-skin",
+    )];
+    let brain = fetched("brainsmall.den");
+    if !quick && brain.is_file() {
+        let v = load::load_den(&brain)?;
+        volumes.push((
+            "brainsmall.den".into(),
+            Volume::new(v.dims, [1.0, 1.0, 1.5], v.data)?,
+            "mri",
+        ));
+    }
+    for (name, volume, tf) in volumes {
+        let tf = TransferFunction::preset(tf)?;
+        let scene = VolumeScene::new(device, queue, &volume, tf, None, rotation)?;
+        out.push(BenchScene {
+            primitive: "volume",
+            detail: format!("{:?} voxels", volume.dims),
+            name,
+            bounds: volume.bounds(),
+            data: SceneData::Volume(scene),
+            splats: None,
+        });
+    }
+    let dragon = if quick {
+        "dragon_vrip_res2.ply"
+    } else {
+        "dragon_vrip.ply"
+    };
+    let (name, cloud) = match PointCloud::load(&fetched(dragon)) {
+        Ok(c) => (format!("{dragon} vertices"), c),
+        Err(_) => (
+            "torus scene (generated)".to_string(),
+            PointCloud::torus_scene(),
+        ),
+    };
+    let (splats, completion) = cloud.complete(1.0)?;
+    let scene = SplatScene::new(device, &splats, GroupCount::Auto)?;
+    out.push(BenchScene {
+        primitive: "points",
+        detail: format!(
+            "{} points, {} groups (normals/radii estimated: {}/{})",
+            splats.len(),
+            scene.groups(),
+            completion.normals_estimated,
+            completion.radii_estimated
+        ),
+        name,
+        bounds: splats.bounds().context("empty cloud")?,
+        data: SceneData::Points(scene),
+        splats: Some(splats),
+    });
+    let meshes: &[&str] = if quick {
+        &["dragon_vrip_res2.obj"]
+    } else {
+        &["dragon_vrip_res2.obj", "dragon_vrip.obj"]
+    };
+    let mut any_mesh = false;
+    for file in meshes {
+        if let Ok(mesh) = Mesh::load_obj(&fetched(file)) {
+            out.push(mesh_scene(device, file.to_string(), &mesh)?);
+            any_mesh = true;
+        }
+    }
+    if !any_mesh {
+        out.push(mesh_scene(
+            device,
+            "torus scene (generated)".into(),
+            &Mesh::torus_scene(),
+        )?);
+    }
+    Ok(out)
+}
+
+fn mesh_scene(device: &wgpu::Device, name: String, mesh: &Mesh) -> Result<BenchScene> {
+    Ok(BenchScene {
+        primitive: "mesh",
+        detail: format!("{} triangles", mesh.triangle_count()),
+        name,
+        bounds: mesh.bounds().context("empty mesh")?,
+        data: SceneData::Mesh(MeshBuffers::new(device, mesh)?),
+        splats: None,
+    })
+}
+
+/// Every method measured on `scene`: each single-pass path/mode, N-pass, single view.
+pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEntry>> {
+    let entry = |name: &str, kind, renderer| MethodEntry {
+        name: name.to_string(),
+        kind,
+        renderer,
+    };
+    Ok(match &scene.data {
+        SceneData::Volume(_) => {
+            let ray = |m| -> Result<AnyRenderer> {
+                Ok(AnyRenderer::Volume(Box::new(VolumeRaycaster::new(
+                    device, m,
+                )?)))
+            };
+            let slices = |a| -> Result<AnyRenderer> {
+                Ok(AnyRenderer::Volume(Box::new(VolumeSlicer::new(device, a)?)))
+            };
+            vec![
+                entry(
+                    "single-pass (compute)",
+                    Kind::SinglePass,
+                    ray(VolumeMethod::SinglePass)?,
+                ),
+                entry(
+                    "single-pass (slices, exact α)",
+                    Kind::SinglePass,
+                    slices(AlphaMode::Exact)?,
+                ),
+                entry(
+                    "single-pass (slices, paper α)",
+                    Kind::SinglePass,
+                    slices(AlphaMode::Paper)?,
+                ),
+                entry("n-pass", Kind::NPass, ray(VolumeMethod::NPass)?),
+                entry(
+                    "single-view",
+                    Kind::SingleView,
+                    ray(VolumeMethod::SingleView)?,
+                ),
+            ]
+        }
+        SceneData::Points(s) => {
+            let splat = |m, depth| -> Result<AnyRenderer> {
+                let options = SplatOptions {
+                    depth,
+                    ..SplatOptions::for_scene(s, 0.01)
+                };
+                Ok(AnyRenderer::points(PointSplatter::new(device, m, options)?))
+            };
+            vec![
+                entry(
+                    "single-pass (exact depth)",
+                    Kind::SinglePass,
+                    splat(SplatMethod::SinglePass, SplatDepth::Exact)?,
+                ),
+                entry(
+                    "single-pass (paper depth)",
+                    Kind::SinglePass,
+                    splat(SplatMethod::SinglePass, SplatDepth::Paper)?,
+                ),
+                entry(
+                    "n-pass",
+                    Kind::NPass,
+                    splat(SplatMethod::NPass, SplatDepth::Exact)?,
+                ),
+                entry(
+                    "single-view",
+                    Kind::SingleView,
+                    splat(SplatMethod::SingleView, SplatDepth::Exact)?,
+                ),
+            ]
+        }
+        SceneData::Mesh(_) => {
+            let mut v = Vec::new();
+            for visibility in [
+                Visibility::Compute,
+                Visibility::ExactAtomic,
+                Visibility::Exact,
+                Visibility::Fast,
+            ] {
+                if !device.features().contains(visibility.required_features()) {
+                    continue;
+                }
+                let options = MeshSinglePassOptions {
+                    visibility,
+                    ..Default::default()
+                };
+                v.push(entry(
+                    &format!("single-pass ({})", visibility.name()),
+                    Kind::SinglePass,
+                    AnyRenderer::Mesh(Box::new(MeshSinglePass::new(device, options)?)),
+                ));
+            }
+            let base = |m| -> Result<AnyRenderer> {
+                Ok(AnyRenderer::Mesh(Box::new(MeshBaseline::new(device, m)?)))
+            };
+            v.push(entry(
+                "n-pass",
+                Kind::NPass,
+                base(MeshBaselineMethod::NPass)?,
+            ));
+            v.push(entry(
+                "single-view",
+                Kind::SingleView,
+                base(MeshBaselineMethod::SingleView)?,
+            ));
+            v
+        }
+    })
+}
+
+/// The frame of a measurement: `display` with N views over the fixed baseline of the default
+/// 8-view camera (a display's views share one viewing cone: more views are denser, not wider).
+pub fn frame(bounds: Bounds, display: &str, size: [u32; 2]) -> Result<Frame> {
+    let display = Display::parse(display)?;
+    let views = display.views();
+    let aspect = size[0] as f32 / size[1] as f32;
+    let mut camera = MultiViewCamera::framing(bounds, views, None, 30f32.to_radians(), aspect)?;
+    if views > 1 {
+        camera.separation *= 7.0 / (views - 1) as f32;
+    }
+    Ok(Frame::new(camera, display, size)?)
+}
