@@ -45,263 +45,233 @@ fn image(ctx: &Ctx, scene: &BenchScene, r: &mut AnyRenderer, frame: &Frame) -> R
     Ok(target.read(&ctx.device, &ctx.queue)?)
 }
 
-/// Time `r` and compare its image with `reference`.
-#[allow(clippy::too_many_arguments)]
-fn point(
-    ctx: &Ctx,
-    timer: &FrameTimer,
-    scene: &BenchScene,
-    r: &mut AnyRenderer,
-    frame: &Frame,
+/// One study's fixed parts: where, how long, against what.
+struct Probe<'a> {
+    ctx: &'a Ctx,
+    timer: &'a FrameTimer,
+    frame: Frame,
     frames: u32,
-    reference: &RgbImage,
+    reference: RgbImage,
     study: &'static str,
-    setting: String,
-) -> Result<Tradeoff> {
-    let ms = time_frame(ctx, timer, scene, r, frame, frames)?;
-    let d = compare(&image(ctx, scene, r, frame)?, reference)?;
-    eprintln!(
-        "  {study} / {}: {setting}: {ms:.1} ms, {:.1} dB",
-        scene.name, d.psnr_db
-    );
-    Ok(Tradeoff {
-        study: study.into(),
-        scene: scene.name.clone(),
-        setting,
-        ms,
-        psnr_db: d.psnr_db,
-        frac_off_2: d.frac_off_2,
-    })
 }
 
-/// Every study on the paper's display (8 views, K = 3) at the plan's size.
+impl Probe<'_> {
+    /// Time `r` on `scene` and compare its image with the reference.
+    fn run(&self, scene: &BenchScene, mut r: AnyRenderer, setting: String) -> Result<Tradeoff> {
+        let (ctx, frame) = (self.ctx, &self.frame);
+        let ms = time_frame(ctx, self.timer, scene, &mut r, frame, self.frames)?;
+        let d = compare(&image(ctx, scene, &mut r, frame)?, &self.reference)?;
+        eprintln!(
+            "  {} / {}: {setting}: {ms:.1} ms, {:.1} dB",
+            self.study, scene.name, d.psnr_db
+        );
+        Ok(Tradeoff {
+            study: self.study.into(),
+            scene: scene.name.clone(),
+            setting,
+            ms,
+            psnr_db: d.psnr_db,
+            frac_off_2: d.frac_off_2,
+        })
+    }
+}
+
+/// Every study on the paper's display (8 views, K = 3) at the plan's size, on the first scene
+/// of each primitive.
 pub fn measure(
     ctx: &Ctx,
     timer: &FrameTimer,
     scenes: &mut [BenchScene],
     plan: &Plan,
 ) -> Result<Vec<Tradeoff>> {
-    let frames = if plan.quick { 3 } else { 5 };
-    let device = &ctx.device;
     let mut out = Vec::new();
     let mut done = std::collections::HashSet::new();
     for scene in scenes.iter_mut() {
-        // One study set per primitive (the first scene of each).
-        if !done.insert(scene.primitive) {
-            continue;
-        }
-        let frame = scenes::frame(scene.bounds, "hubner8", plan.size)?;
-        match scene.primitive {
-            "volume" => {
-                let SceneData::Volume(v) = &mut scene.data else {
-                    unreachable!()
-                };
-                let voxel = v.voxel;
-                let default_step = v.step;
-                v.step = 0.25 * voxel;
-                let mut npass = AnyRenderer::Volume(Box::new(VolumeRaycaster::new(
-                    device,
-                    VolumeMethod::NPass,
-                )?));
-                let reference = image(ctx, scene, &mut npass, &frame)?;
-                let steps: &[f32] = if plan.quick {
-                    &[0.5, 1.0, 2.0]
-                } else {
-                    &[0.25, 0.5, 1.0, 2.0, 4.0]
-                };
-                for &step in steps {
-                    if let SceneData::Volume(v) = &mut scene.data {
-                        v.step = step * voxel;
-                    }
-                    let paths: [(&str, AnyRenderer); 3] = [
-                        (
-                            "compute",
-                            AnyRenderer::Volume(Box::new(VolumeRaycaster::new(
-                                device,
-                                VolumeMethod::SinglePass,
-                            )?)),
-                        ),
-                        (
-                            "slices, exact α",
-                            AnyRenderer::Volume(Box::new(VolumeSlicer::new(
-                                device,
-                                AlphaMode::Exact,
-                            )?)),
-                        ),
-                        (
-                            "slices, paper α",
-                            AnyRenderer::Volume(Box::new(VolumeSlicer::new(
-                                device,
-                                AlphaMode::Paper,
-                            )?)),
-                        ),
-                    ];
-                    for (path, mut r) in paths {
-                        out.push(
-                            point(
-                                ctx,
-                                timer,
-                                scene,
-                                &mut r,
-                                &frame,
-                                frames,
-                                &reference,
-                                "volume sampling",
-                                format!("{path}, step {step} voxel"),
-                            )
-                            .map(|mut t| {
-                                t.setting = format!("{path}|{step}");
-                                t
-                            })?,
-                        );
-                    }
-                }
-                if let SceneData::Volume(v) = &mut scene.data {
-                    v.step = default_step;
-                }
-            }
-            "points" => {
-                let SceneData::Points(s) = &scene.data else {
-                    unreachable!()
-                };
-                let depth_extent = SplatOptions::epsilon_for(s, 1.0);
-                let auto_groups = s.groups();
-                let options = move |depth, f: f32| SplatOptions {
-                    depth,
-                    epsilon: f * depth_extent,
-                };
-                let mut npass = AnyRenderer::points(PointSplatter::new(
-                    device,
-                    SplatMethod::NPass,
-                    options(SplatDepth::Exact, 0.01),
-                )?);
-                let reference = image(ctx, scene, &mut npass, &frame)?;
-                for depth in [SplatDepth::Exact, SplatDepth::Paper] {
-                    let mut r = AnyRenderer::points(PointSplatter::new(
-                        device,
-                        SplatMethod::SinglePass,
-                        options(depth, 0.01),
-                    )?);
-                    out.push(point(
-                        ctx,
-                        timer,
-                        scene,
-                        &mut r,
-                        &frame,
-                        frames,
-                        &reference,
-                        "splat depth",
-                        depth.name().into(),
-                    )?);
-                }
-                let epsilons: &[f32] = if plan.quick {
-                    &[0.001, 0.01, 0.1]
-                } else {
-                    &[0.001, 0.003, 0.01, 0.03, 0.1]
-                };
-                for &f in epsilons {
-                    let mut r = AnyRenderer::points(PointSplatter::new(
-                        device,
-                        SplatMethod::SinglePass,
-                        options(SplatDepth::Exact, f),
-                    )?);
-                    out.push(point(
-                        ctx,
-                        timer,
-                        scene,
-                        &mut r,
-                        &frame,
-                        frames,
-                        &reference,
-                        "splat epsilon",
-                        format!("{f}"),
-                    )?);
-                }
-                let splats = scene.splats.take().expect("point scenes keep their splats");
-                let counts: &[u32] = if plan.quick { &[1, 4] } else { &[1, 2, 4, 8] };
-                let original = std::mem::replace(
-                    &mut scene.data,
-                    SceneData::Points(SplatScene::new(device, &splats, GroupCount::Fixed(1))?),
-                );
-                for &k in counts {
-                    scene.data =
-                        SceneData::Points(SplatScene::new(device, &splats, GroupCount::Fixed(k))?);
-                    let mut r = AnyRenderer::points(PointSplatter::new(
-                        device,
-                        SplatMethod::SinglePass,
-                        options(SplatDepth::Exact, 0.01),
-                    )?);
-                    out.push(point(
-                        ctx,
-                        timer,
-                        scene,
-                        &mut r,
-                        &frame,
-                        frames,
-                        &reference,
-                        "splat groups",
-                        format!("{k}"),
-                    )?);
-                }
-                scene.data = original;
-                let mut r = AnyRenderer::points(PointSplatter::new(
-                    device,
-                    SplatMethod::SinglePass,
-                    options(SplatDepth::Exact, 0.01),
-                )?);
-                out.push(point(
-                    ctx,
-                    timer,
-                    scene,
-                    &mut r,
-                    &frame,
-                    frames,
-                    &reference,
-                    "splat groups",
-                    format!("auto ({auto_groups})"),
-                )?);
-                scene.splats = Some(splats);
-            }
-            _ => {
-                let mut npass = AnyRenderer::Mesh(Box::new(MeshBaseline::new(
-                    device,
-                    MeshBaselineMethod::NPass,
-                )?));
-                let reference = image(ctx, scene, &mut npass, &frame)?;
-                let modes = [
-                    (Visibility::Compute, CoverBounds::Exact),
-                    (Visibility::ExactAtomic, CoverBounds::Exact),
-                    (Visibility::Exact, CoverBounds::Exact),
-                    (Visibility::Fast, CoverBounds::Exact),
-                    (Visibility::Compute, CoverBounds::Paper),
-                ];
-                for (visibility, bounds) in modes {
-                    if !device.features().contains(visibility.required_features()) {
-                        continue;
-                    }
-                    let options = MeshSinglePassOptions { visibility, bounds };
-                    let mut r = AnyRenderer::Mesh(Box::new(MeshSinglePass::new(device, options)?));
-                    let bounds = if bounds == CoverBounds::Paper {
-                        ", paper bounds"
-                    } else {
-                        ""
-                    };
-                    out.push(point(
-                        ctx,
-                        timer,
-                        scene,
-                        &mut r,
-                        &frame,
-                        frames,
-                        &reference,
-                        "mesh visibility",
-                        format!("{}{bounds}", visibility.name()),
-                    )?);
-                }
+        if done.insert(scene.primitive) {
+            match scene.primitive {
+                "volume" => volume_studies(ctx, timer, scene, plan, &mut out)?,
+                "points" => splat_studies(ctx, timer, scene, plan, &mut out)?,
+                _ => mesh_studies(ctx, timer, scene, plan, &mut out)?,
             }
         }
     }
     Ok(out)
+}
+
+/// A probe of `study` on `scene` with the reference rendered by `reference`.
+fn probe<'a>(
+    ctx: &'a Ctx,
+    timer: &'a FrameTimer,
+    scene: &BenchScene,
+    plan: &Plan,
+    study: &'static str,
+    mut reference: AnyRenderer,
+) -> Result<Probe<'a>> {
+    let frame = scenes::frame(scene.bounds, "hubner8", plan.size)?;
+    Ok(Probe {
+        ctx,
+        timer,
+        reference: image(ctx, scene, &mut reference, &frame)?,
+        frame,
+        frames: if plan.quick { 3 } else { 5 },
+        study,
+    })
+}
+
+/// Sampling step × path (compute, slices with exact and paper α) against N-pass at ¼ voxel.
+fn volume_studies(
+    ctx: &Ctx,
+    timer: &FrameTimer,
+    scene: &mut BenchScene,
+    plan: &Plan,
+    out: &mut Vec<Tradeoff>,
+) -> Result<()> {
+    let device = &ctx.device;
+    let step_of = |scene: &mut BenchScene, step: Option<f32>| -> f32 {
+        let SceneData::Volume(v) = &mut scene.data else {
+            unreachable!()
+        };
+        let old = v.step;
+        if let Some(s) = step {
+            v.step = s * v.voxel;
+        }
+        old
+    };
+    let default_step = step_of(scene, Some(0.25));
+    let npass = AnyRenderer::Volume(Box::new(VolumeRaycaster::new(device, VolumeMethod::NPass)?));
+    let p = probe(ctx, timer, scene, plan, "volume sampling", npass)?;
+    let steps: &[f32] = if plan.quick {
+        &[0.5, 1.0, 2.0]
+    } else {
+        &[0.25, 0.5, 1.0, 2.0, 4.0]
+    };
+    for &step in steps {
+        step_of(scene, Some(step));
+        let paths: [(&str, AnyRenderer); 3] = [
+            (
+                "compute",
+                AnyRenderer::Volume(Box::new(VolumeRaycaster::new(
+                    device,
+                    VolumeMethod::SinglePass,
+                )?)),
+            ),
+            (
+                "slices, exact α",
+                AnyRenderer::Volume(Box::new(VolumeSlicer::new(device, AlphaMode::Exact)?)),
+            ),
+            (
+                "slices, paper α",
+                AnyRenderer::Volume(Box::new(VolumeSlicer::new(device, AlphaMode::Paper)?)),
+            ),
+        ];
+        for (path, r) in paths {
+            out.push(p.run(scene, r, format!("{path}|{step}"))?);
+        }
+    }
+    let SceneData::Volume(v) = &mut scene.data else {
+        unreachable!()
+    };
+    v.step = default_step;
+    Ok(())
+}
+
+/// Depth mode, ε and group count against N-pass with automatic groups and ε = 0.01.
+fn splat_studies(
+    ctx: &Ctx,
+    timer: &FrameTimer,
+    scene: &mut BenchScene,
+    plan: &Plan,
+    out: &mut Vec<Tradeoff>,
+) -> Result<()> {
+    let device = &ctx.device;
+    let SceneData::Points(s) = &scene.data else {
+        unreachable!()
+    };
+    let depth_extent = SplatOptions::epsilon_for(s, 1.0);
+    let auto_groups = s.groups();
+    let splatter = |method, depth, fraction: f32| -> Result<AnyRenderer> {
+        let options = SplatOptions {
+            depth,
+            epsilon: fraction * depth_extent,
+        };
+        Ok(AnyRenderer::points(PointSplatter::new(
+            device, method, options,
+        )?))
+    };
+    let exact = |fraction| splatter(SplatMethod::SinglePass, SplatDepth::Exact, fraction);
+    let reference = splatter(SplatMethod::NPass, SplatDepth::Exact, 0.01)?;
+    let mut p = probe(ctx, timer, scene, plan, "splat depth", reference)?;
+    for depth in [SplatDepth::Exact, SplatDepth::Paper] {
+        out.push(p.run(
+            scene,
+            splatter(SplatMethod::SinglePass, depth, 0.01)?,
+            depth.name().into(),
+        )?);
+    }
+    p.study = "splat epsilon";
+    let epsilons: &[f32] = if plan.quick {
+        &[0.001, 0.01, 0.1]
+    } else {
+        &[0.001, 0.003, 0.01, 0.03, 0.1]
+    };
+    for &f in epsilons {
+        out.push(p.run(scene, exact(f)?, format!("{f}"))?);
+    }
+    p.study = "splat groups";
+    let splats = scene.splats.take().expect("point scenes keep their splats");
+    let counts: &[u32] = if plan.quick { &[1, 4] } else { &[1, 2, 4, 8] };
+    let mut original = None;
+    for &k in counts {
+        let regrouped = SceneData::Points(SplatScene::new(device, &splats, GroupCount::Fixed(k))?);
+        let previous = std::mem::replace(&mut scene.data, regrouped);
+        original.get_or_insert(previous);
+        out.push(p.run(scene, exact(0.01)?, format!("{k}"))?);
+    }
+    if let Some(original) = original {
+        scene.data = original;
+    }
+    scene.splats = Some(splats);
+    out.push(p.run(scene, exact(0.01)?, format!("auto ({auto_groups})"))?);
+    Ok(())
+}
+
+/// Every visibility mode (and the paper's bounds) against N-pass.
+fn mesh_studies(
+    ctx: &Ctx,
+    timer: &FrameTimer,
+    scene: &mut BenchScene,
+    plan: &Plan,
+    out: &mut Vec<Tradeoff>,
+) -> Result<()> {
+    let device = &ctx.device;
+    let npass = AnyRenderer::Mesh(Box::new(MeshBaseline::new(
+        device,
+        MeshBaselineMethod::NPass,
+    )?));
+    let p = probe(ctx, timer, scene, plan, "mesh visibility", npass)?;
+    let modes = [
+        (Visibility::Compute, CoverBounds::Exact),
+        (Visibility::ExactAtomic, CoverBounds::Exact),
+        (Visibility::Exact, CoverBounds::Exact),
+        (Visibility::Fast, CoverBounds::Exact),
+        (Visibility::Compute, CoverBounds::Paper),
+    ];
+    for (visibility, bounds) in modes {
+        if !device.features().contains(visibility.required_features()) {
+            continue;
+        }
+        let r = AnyRenderer::Mesh(Box::new(MeshSinglePass::new(
+            device,
+            MeshSinglePassOptions { visibility, bounds },
+        )?));
+        let note = if bounds == CoverBounds::Paper {
+            ", paper bounds"
+        } else {
+            ""
+        };
+        out.push(p.run(scene, r, format!("{}{note}", visibility.name()))?);
+    }
+    Ok(())
 }
 
 /// What a scene saves by not using a feature: volume shading (the K = 3 → 1 saving comes from
