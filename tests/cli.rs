@@ -221,3 +221,49 @@ fn points_json_reports_preprocessing_memory_and_compares_with_npass() {
         ]);
     }
 }
+
+/// The report is regenerated from saved results: every section and every renderer target.
+#[test]
+fn bench_report_regenerates_from_saved_results() {
+    let dir = out_path("bench_report");
+    let json = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("docs/bench_quick.json");
+    run(&[
+        "bench",
+        "--report",
+        dir.to_str().unwrap(),
+        "--from-json",
+        json.to_str().unwrap(),
+    ]);
+    let md = std::fs::read_to_string(dir.join("BENCHMARKS.md")).unwrap();
+    for section in [
+        "## The paper's charts",
+        "## Time against the number of views",
+        "## Targets of the renderer issues",
+        "## Speed/accuracy trade-offs",
+        "## Model only what a scene requires",
+        "## Numerical stability",
+    ] {
+        assert!(md.contains(section), "missing {section}");
+    }
+    for target in [
+        "N-pass / SP ≥ 5 at N = 8",
+        "N-pass / SP ≥ 3 at N = 8",
+        "N-pass / SP ≥ 2 at N = 8",
+    ] {
+        assert!(md.contains(target), "missing target {target}");
+    }
+    let (ok, _) = {
+        let out = Command::new(env!("CARGO_BIN_EXE_autostereo"))
+            .args([
+                "bench",
+                "--report",
+                dir.to_str().unwrap(),
+                "--from-json",
+                "Cargo.toml",
+            ])
+            .output()
+            .unwrap();
+        (out.status.success(), ())
+    };
+    assert!(!ok, "a file that is not bench output must be an error");
+}
