@@ -199,7 +199,7 @@ pub fn run(args: BenchArgs) -> Result<()> {
             let frame = scenes::frame(scene.bounds, &display, size)?;
             let n = frame.camera.views;
             for (i, m) in methods.iter_mut().enumerate() {
-                if !measured(&plan, m.kind, i == 0, &display, n, size) {
+                if !measured(&plan, scene.primitive, m.kind, i == 0, &display, n, size) {
                     continue;
                 }
                 let ms = time(&ctx, &timer, scene, m, &display, size, plan.frames)?;
@@ -258,31 +258,42 @@ pub fn run(args: BenchArgs) -> Result<()> {
     Ok(())
 }
 
-/// Whether `kind` is measured for this configuration: N-pass on the slanted displays up to the
-/// plan's limit (and on the extra sizes), single view once per size (it has no views). The quick
-/// run sweeps N with each primitive's `primary` single pass only; the others at N = 8.
-fn measured(plan: &Plan, kind: Kind, primary: bool, display: &str, n: u32, size: [u32; 2]) -> bool {
+/// Whether `kind` is measured for this configuration: N-pass on the N sweep up to the plan's
+/// limit (always for volumes, whose targets are stated at N = 64) and on the extra sizes, single
+/// view once per size (it has no views). The quick run sweeps N with each primitive's `primary`
+/// single pass only; the others at N = 8.
+fn measured(
+    plan: &Plan,
+    primitive: &str,
+    kind: Kind,
+    primary: bool,
+    display: &str,
+    n: u32,
+    size: [u32; 2],
+) -> bool {
     let extra = size != plan.size;
     match kind {
         Kind::SinglePass => primary || !plan.quick || n == 8,
-        Kind::NPass => extra || (in_sweep(display) && n <= plan.npass_max_views),
+        Kind::NPass => {
+            extra || (in_sweep(display) && (n <= plan.npass_max_views || primitive == "volume"))
+        }
         Kind::SingleView => extra || display == "hubner8",
     }
 }
 
 fn count_measurements(plan: &Plan, scenes: &[BenchScene]) -> usize {
-    let per_kind = |kind, primary| {
-        plan.configs()
-            .iter()
-            .filter(|(d, s)| {
-                let n = autostereo::display::Display::parse(d).map_or(0, |d| d.views());
-                measured(plan, kind, primary, d, n, *s)
-            })
-            .count()
-    };
     scenes
         .iter()
         .map(|s| {
+            let per_kind = |kind, primary| {
+                plan.configs()
+                    .iter()
+                    .filter(|(d, size)| {
+                        let n = autostereo::display::Display::parse(d).map_or(0, |d| d.views());
+                        measured(plan, s.primitive, kind, primary, d, n, *size)
+                    })
+                    .count()
+            };
             let single = match s.primitive {
                 "volume" => 3,
                 "points" => 2,
@@ -311,13 +322,29 @@ fn estimate_seconds(plan: &Plan, scenes: &[BenchScene], probe_ms: &[f64]) -> f64
             let n = autostereo::display::Display::parse(&display).map_or(1, |d| d.views());
             let scale = (size[0] * size[1]) as f64 / (plan.size[0] * plan.size[1]) as f64;
             ms += 2.5 * probe * scale * frames;
-            if measured(plan, Kind::SinglePass, false, &display, n, size) {
+            if measured(
+                plan,
+                scene.primitive,
+                Kind::SinglePass,
+                false,
+                &display,
+                n,
+                size,
+            ) {
                 ms += (singles - 1.0) * 2.5 * probe * scale * frames;
             }
-            if measured(plan, Kind::NPass, false, &display, n, size) {
+            if measured(plan, scene.primitive, Kind::NPass, false, &display, n, size) {
                 ms += n as f64 * probe * scale * frames;
             }
-            if measured(plan, Kind::SingleView, false, &display, n, size) {
+            if measured(
+                plan,
+                scene.primitive,
+                Kind::SingleView,
+                false,
+                &display,
+                n,
+                size,
+            ) {
                 ms += probe * scale * frames;
             }
         }

@@ -106,7 +106,7 @@ pub fn scenes(ctx: &autostereo::gpu::GpuContext, quick: bool) -> Result<Vec<Benc
     let rotation = Mat4::from_rotation_x(-90f32.to_radians());
     let mut volumes = vec![(
         "head (built-in)".to_string(),
-        phantom::ct_head(if quick { 64 } else { 96 })?,
+        phantom::ct_head(if quick { 48 } else { 96 })?,
         "ct-skin",
     )];
     let brain = fetched("brainsmall.den");
@@ -131,7 +131,7 @@ pub fn scenes(ctx: &autostereo::gpu::GpuContext, quick: bool) -> Result<Vec<Benc
         });
     }
     let dragon = if quick {
-        "dragon_vrip_res2.ply"
+        "dragon_vrip_res3.ply"
     } else {
         "dragon_vrip.ply"
     };
