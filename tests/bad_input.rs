@@ -267,6 +267,23 @@ fn bad_point_clouds_and_splat_settings_are_errors() {
     cloud.normals.as_mut().unwrap().pop();
     assert!(cloud.complete(1.0).is_err());
     assert!(PointCloud::default().complete(1.0).is_err());
+    let huge = PointCloud::sphere(10, glam::Vec3::ZERO, 1.0, Some(1e30));
+    assert!(huge
+        .complete(1e30)
+        .unwrap_err()
+        .to_string()
+        .contains("splat"));
+    // OBJ: vertices only (faces ignored), colours when every vertex has them; bad numbers.
+    let obj = temp_file(
+        "points.obj",
+        "v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nf 1 2 2\nv 0 1 0 0 0 1\n",
+    );
+    let cloud = PointCloud::load(&obj).unwrap();
+    assert_eq!(cloud.len(), 3);
+    assert_eq!(cloud.colors.unwrap()[2], [0.0, 0.0, 1.0]);
+    let bad = temp_file("bad_points.obj", "v 0 0 0\nv 1 nan_x 0\n");
+    let err = PointCloud::load(&bad).unwrap_err().to_string();
+    assert!(err.contains("line 2") && err.contains("nan_x"), "{err}");
     let ctx = autostereo::gpu::GpuContext::new(&Default::default()).unwrap();
     let options = SplatOptions {
         depth: SplatDepth::Exact,
@@ -276,4 +293,13 @@ fn bad_point_clouds_and_splat_settings_are_errors() {
         .err()
         .unwrap();
     assert!(err.to_string().contains("epsilon"), "{err}");
+    // More groups than texture-array layers: refused before any grouping work.
+    let (splats, _) = PointCloud::sphere(50, glam::Vec3::ZERO, 1.0, Some(1.0))
+        .complete(1.0)
+        .unwrap();
+    let groups = autostereo::points::GroupCount::Fixed(1_000_000_000);
+    let err = autostereo::points::SplatScene::new(&ctx.device, &splats, groups)
+        .err()
+        .unwrap();
+    assert!(matches!(err, Error::LimitExceeded { .. }), "{err}");
 }

@@ -115,7 +115,8 @@ fn exact_single_pass_matches_npass_with_normals_given_and_estimated() {
                 lit(&npass) > single.data.len() / 10,
                 "{tag}: scene not in view"
             );
-            if d.psnr_db < 35.0 {
+            // Same rays, kernel, groups and ε: identical up to the odd rounding difference.
+            if d.psnr_db < 35.0 || d.frac_off_2 > 1e-4 {
                 panic!(
                     "{tag}: {:.1} dB < 35 ({})",
                     d.psnr_db,

@@ -4,7 +4,7 @@
 //! 10⁶, degenerate primitives. Each single-pass image is compared with its N-pass oracle; a
 //! non-black background makes any NaN/Inf (written as 0) show up as an error.
 //!
-//! `cargo test --test stability -- --nocapture` prints the table of docs/BENCHMARKS.md.
+//! `cargo test --test stability -- --nocapture` prints the table of docs/STABILITY.md.
 
 mod common;
 
@@ -280,6 +280,20 @@ fn check(
         d.max_abs_err,
         100.0 * d.frac_off_2
     ));
+    // Every renderer here writes background (51, 102, 153) or a lit colour ≥ 1/255 per channel:
+    // a 0 is a NaN/Inf that reached the target, even one the two methods share.
+    let zeros = single
+        .data
+        .iter()
+        .chain(&npass.data)
+        .filter(|&&v| v == 0)
+        .count();
+    if zeros > 0 {
+        failures.push(format!(
+            "{} / {case}: {zeros} zero subpixels (NaN/Inf?)",
+            p.name
+        ));
+    }
     if d.frac_off_2 > bound(p.name, case) {
         let path = common::save_diff(
             &format!(

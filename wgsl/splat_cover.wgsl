@@ -30,7 +30,7 @@ fn cs_main(@builtin(workgroup_id) group: vec3<u32>, @builtin(num_workgroups) gro
     let len = length(normal);
     normal = select(vec3<f32>(0.0, 0.0, 1.0), normal / len, len > 0.0);
     eye_splats[id] = Splat(centre, s.radius, normal, s.color);
-    if (!(s.radius > 0.0) || any(centre != centre)) {
+    if (!valid_radius(s.radius) || any(centre != centre)) {
         cover_rects[id] = EMPTY;
         return;
     }

@@ -7,10 +7,15 @@ use super::grid::Grid;
 
 /// Neighbours per point (the point itself excluded).
 pub const NEIGHBOURS: usize = 8;
-/// Radius = this × distance to the k-th neighbour. On a regular surface sampling of spacing h the
-/// 8th neighbour is ≈ 1.7 h away, so radii come out ≈ h: neighbouring disks overlap and close
-/// the surface without blurring it.
+/// Radius = this × distance to the k-th neighbour. On a hexagonal surface sampling of spacing h
+/// the 8th neighbour is √3 h away (radius ≈ 1.04 h), on a square one √2 h (≈ 0.85 h):
+/// neighbouring disks overlap and close the surface without blurring it.
 pub const RADIUS_PER_KTH_DISTANCE: f32 = 0.6;
+/// Estimated radii are capped at this × their median: an isolated outlier (its 8th neighbour
+/// far away) must not become a disk over the whole scene.
+pub const MAX_RADIUS_PER_MEDIAN: f32 = 8.0;
+/// Shells searched on the grid before a point's neighbours are found by brute force (outliers).
+const MAX_SHELLS: i32 = 8;
 
 /// Normals (unit, unoriented) and radii of `points` from their neighbourhoods.
 pub(crate) fn normals_and_radii(points: &[Vec3]) -> (Vec<Vec3>, Vec<f32>) {
@@ -40,6 +45,13 @@ pub(crate) fn normals_and_radii(points: &[Vec3]) -> (Vec<Vec3>, Vec<f32>) {
             });
         }
     });
+    let mut sorted = radii.clone();
+    let mid = sorted.len() / 2;
+    let median = *sorted.select_nth_unstable_by(mid, f32::total_cmp).1;
+    if median > 0.0 {
+        let cap = MAX_RADIUS_PER_MEDIAN * median;
+        radii.iter_mut().for_each(|r| *r = r.min(cap));
+    }
     (normals, radii)
 }
 
@@ -72,20 +84,29 @@ fn nearest(grid: &Grid, points: &[Vec3], i: usize, near: &mut Vec<(f32, u32)>) {
     near.clear();
     let p = points[i];
     let home = grid.cell_of(p);
+    let consider = |near: &mut Vec<(f32, u32)>, j: u32| {
+        if j as usize == i {
+            return;
+        }
+        let d2 = p.distance_squared(points[j as usize]);
+        if near.len() < NEIGHBOURS {
+            near.push((d2, j));
+            near.sort_by(|a, b| a.0.total_cmp(&b.0));
+        } else if d2 < near[NEIGHBOURS - 1].0 {
+            near[NEIGHBOURS - 1] = (d2, j);
+            near.sort_by(|a, b| a.0.total_cmp(&b.0));
+        }
+    };
     for shell in 0..=grid.max_shell() {
+        if shell > MAX_SHELLS {
+            // An outlier: its neighbours are far; one pass over all points is cheaper.
+            near.clear();
+            (0..points.len() as u32).for_each(|j| consider(near, j));
+            return;
+        }
         for cell in grid.shell(home, shell) {
             for &j in grid.points_in(cell) {
-                if j as usize == i {
-                    continue;
-                }
-                let d2 = p.distance_squared(points[j as usize]);
-                if near.len() < NEIGHBOURS {
-                    near.push((d2, j));
-                    near.sort_by(|a, b| a.0.total_cmp(&b.0));
-                } else if d2 < near[NEIGHBOURS - 1].0 {
-                    near[NEIGHBOURS - 1] = (d2, j);
-                    near.sort_by(|a, b| a.0.total_cmp(&b.0));
-                }
+                consider(near, j);
             }
         }
         // Points in later shells are at least shell · cell away.
@@ -180,5 +201,21 @@ mod tests {
             .iter()
             .all(|n| n.is_finite() && n.dot(Vec3::X).abs() < 1e-3));
         assert_eq!(normals_and_radii(&[Vec3::ZERO]).1, vec![0.0]);
+    }
+
+    #[test]
+    fn outliers_get_capped_radii_and_do_not_stall_the_search() {
+        let mut points: Vec<Vec3> = (0..2500)
+            .map(|i| Vec3::new((i % 50) as f32 * 0.01, (i / 50) as f32 * 0.01, 0.0))
+            .collect();
+        points.push(Vec3::splat(1e6));
+        let (normals, radii) = normals_and_radii(&points);
+        let typical = radii[1275];
+        assert!(
+            radii[2500] <= MAX_RADIUS_PER_MEDIAN * typical * 1.01,
+            "{}",
+            radii[2500]
+        );
+        assert!(normals.iter().all(|n| n.is_finite()));
     }
 }

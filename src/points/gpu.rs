@@ -53,11 +53,20 @@ pub struct SplatScene {
 impl SplatScene {
     /// Group `splats` and upload them. Checks the buffer size against the device's limits first.
     pub fn new(device: &wgpu::Device, splats: &Splats, count: GroupCount) -> Result<Self> {
-        if splats.is_empty() {
-            return Err(Error::invalid("point cloud", "no points"));
-        }
-        if count == GroupCount::Fixed(0) {
-            return Err(Error::invalid("groups", "0: need at least one group"));
+        splats.validate()?;
+        if let GroupCount::Fixed(k) = count {
+            // One texture-array layer per group: check before grouping allocates per group.
+            let limit = device.limits().max_texture_array_layers;
+            if k == 0 {
+                return Err(Error::invalid("groups", "0: need at least one group"));
+            }
+            if k > limit {
+                return Err(Error::LimitExceeded {
+                    what: "splat groups (texture array layers)".into(),
+                    value: k.into(),
+                    limit: limit.into(),
+                });
+            }
         }
         let bytes = (splats.len() as u64) * std::mem::size_of::<GpuSplat>() as u64;
         let limits = device.limits();
@@ -77,8 +86,8 @@ impl SplatScene {
         Ok(Self::with_grouping(device, splats, &grouping, grouping_ms))
     }
 
-    /// Upload with a given grouping.
-    pub fn with_grouping(
+    /// Upload with `grouping` (made by [`groups::assign`] for these `splats`).
+    fn with_grouping(
         device: &wgpu::Device,
         splats: &Splats,
         grouping: &Grouping,

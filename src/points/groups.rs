@@ -40,46 +40,65 @@ impl Grouping {
     }
 }
 
+/// Splats larger than this × the median radius are placed last, by brute force, so that one huge
+/// splat does not turn the grid into one cell.
+const LARGE_PER_MEDIAN: f32 = 8.0;
+
 /// Greedy colouring of `splats`: each splat takes the first group none of its overlapping,
-/// already placed neighbours is in.
+/// already placed neighbours is in. `Fixed(k)` must be ≥ 1 and is bounded by the caller.
 pub fn assign(splats: &Splats, count: GroupCount) -> Grouping {
     let n = splats.positions.len();
     let limit = match count {
         GroupCount::Auto => MAX_AUTO_GROUPS,
         GroupCount::Fixed(k) => k.max(1),
     };
-    let max_radius = splats.radii.iter().fold(0.0f32, |m, r| m.max(*r));
-    let grid = Grid::new(&splats.positions, 2.0 * max_radius);
+    let cap = LARGE_PER_MEDIAN * splats.median_radius();
+    let (normal, large): (Vec<usize>, Vec<usize>) = (0..n).partition(|&i| splats.radii[i] <= cap);
+    // Normal splats find every normal neighbour within r_i + r_j ≤ r_i + reach on the grid.
+    let reach = normal.iter().fold(0.0f32, |m, &i| m.max(splats.radii[i]));
+    let grid = Grid::new(&splats.positions, 2.0 * reach);
     const UNASSIGNED: u32 = u32::MAX;
     let mut group_of = vec![UNASSIGNED; n];
     let mut clashes = vec![0u32; limit as usize];
     let mut groups = 0u32;
     let mut conflicts = 0u64;
-    for i in 0..n {
-        let (p, r) = (splats.positions[i], splats.radii[i]);
-        clashes.iter_mut().for_each(|c| *c = 0);
-        for j in grid.near(p, r + max_radius) {
-            let g = group_of[j as usize];
-            if g != UNASSIGNED
-                && p.distance(splats.positions[j as usize]) < r + splats.radii[j as usize]
-            {
-                clashes[g as usize] += 1;
+    let mut place =
+        |i: usize, candidates: &mut dyn Iterator<Item = u32>, group_of: &mut Vec<u32>| {
+            let (p, r) = (splats.positions[i], splats.radii[i]);
+            clashes.iter_mut().for_each(|c| *c = 0);
+            for j in candidates {
+                let g = group_of[j as usize];
+                if g != UNASSIGNED
+                    && p.distance(splats.positions[j as usize]) < r + splats.radii[j as usize]
+                {
+                    clashes[g as usize] += 1;
+                }
             }
-        }
-        let group = match clashes.iter().position(|&c| c == 0) {
-            Some(free) => free as u32,
-            None => {
-                let (least, c) = clashes
-                    .iter()
-                    .enumerate()
-                    .min_by_key(|(_, c)| **c)
-                    .expect("at least one group");
-                conflicts += *c as u64;
-                least as u32
-            }
+            let group = match clashes.iter().position(|&c| c == 0) {
+                Some(free) => free as u32,
+                None => {
+                    let (least, c) = clashes
+                        .iter()
+                        .enumerate()
+                        .min_by_key(|(_, c)| **c)
+                        .expect("at least one group");
+                    conflicts += *c as u64;
+                    least as u32
+                }
+            };
+            group_of[i] = group;
+            groups = groups.max(group + 1);
         };
-        group_of[i] = group;
-        groups = groups.max(group + 1);
+    for &i in &normal {
+        place(
+            i,
+            &mut grid.near(splats.positions[i], splats.radii[i] + reach),
+            &mut group_of,
+        );
+    }
+    // Large splats (outliers, usually few) check every placed splat.
+    for &i in &large {
+        place(i, &mut (0..n as u32), &mut group_of);
     }
     if let GroupCount::Fixed(k) = count {
         groups = k.max(1);
@@ -137,6 +156,22 @@ mod tests {
         assert!(g.group_of.iter().all(|&k| k < 2));
         assert_eq!(g.conflicts, overlapping_pairs_in_groups(&s, &g));
         assert!(g.conflicts > 0);
+    }
+
+    #[test]
+    fn a_huge_splat_is_placed_apart_without_overlap() {
+        let mut s = row(40, 0.5, 1.0);
+        s.positions.push(Vec3::new(10.0, 0.0, 0.0));
+        s.normals.push(Vec3::Z);
+        s.colors.push([1.0; 3]);
+        s.radii.push(1000.0);
+        let g = assign(&s, GroupCount::Auto);
+        assert_eq!(g.conflicts, 0);
+        assert_eq!(overlapping_pairs_in_groups(&s, &g), 0);
+        assert_eq!(
+            g.groups, 5,
+            "the huge splat overlaps all: a group of its own"
+        );
     }
 
     #[test]

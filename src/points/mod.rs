@@ -63,7 +63,8 @@ pub struct Completion {
 }
 
 impl PointCloud {
-    /// Load a `.ply` (vertices) or `.obj` (its vertices, with the normals of its faces).
+    /// Load a `.ply` (its `vertex` element) or `.obj` (its `v` lines, with `v x y z r g b`
+    /// colours when present; faces, normals and texture coordinates are ignored).
     pub fn load(path: &Path) -> Result<Self> {
         match path
             .extension()
@@ -71,15 +72,7 @@ impl PointCloud {
             .map(str::to_ascii_lowercase)
         {
             Some(e) if e == "ply" => ply::load(path),
-            Some(e) if e == "obj" => {
-                let mesh = crate::mesh::Mesh::load_obj(path)?;
-                Ok(Self {
-                    positions: mesh.positions,
-                    normals: Some(mesh.normals),
-                    colors: Some(mesh.colors.iter().map(|c| [c[0], c[1], c[2]]).collect()),
-                    radii: None,
-                })
-            }
+            Some(e) if e == "obj" => obj_vertices(path),
             _ => Err(Error::Points {
                 path: path.into(),
                 reason: "unknown extension (expected .ply or .obj)".into(),
@@ -108,6 +101,19 @@ impl PointCloud {
         let fail = |reason: String| Error::invalid("point cloud", reason);
         if n == 0 {
             return Err(fail("no points".into()));
+        }
+        if n > MAX_POINTS {
+            return Err(fail(format!(
+                "{n} points: at most {MAX_POINTS} are supported"
+            )));
+        }
+        if let Some(i) = self
+            .colors
+            .iter()
+            .flatten()
+            .position(|c| !c.iter().all(|v| v.is_finite()))
+        {
+            return Err(fail(format!("point {i} has a non-finite colour")));
         }
         let lengths = [
             self.normals.as_ref().map(Vec::len),
@@ -149,7 +155,9 @@ impl PointCloud {
                 format!("{radius_scale}: must be finite and ≥ 0"),
             ));
         }
-        let bad_normal = |n: &Vec3| n.length_squared() < 1e-24;
+        // Zero, denormal-short or overflowing normals cannot be normalised: estimate those.
+        let bad_normal =
+            |n: &Vec3| !(n.length_squared() >= 1e-24 && n.length_squared().is_finite());
         let estimate_normals = self
             .normals
             .as_ref()
@@ -189,11 +197,100 @@ impl PointCloud {
                 .unwrap_or_else(|| vec![DEFAULT_COLOR; self.len()]),
             radii: radii.iter().map(|r| r * radius_scale).collect(),
         };
+        splats.validate()?;
         Ok((splats, completion))
     }
 }
 
+/// Most points a cloud may have (GPU indices are u32, six vertices per splat).
+pub const MAX_POINTS: usize = (u32::MAX / 6) as usize;
+
+/// The vertices of a Wavefront OBJ (`v x y z [r g b]`), nothing else.
+fn obj_vertices(path: &Path) -> Result<PointCloud> {
+    let text = std::fs::read_to_string(path).map_err(|e| Error::Io {
+        path: path.into(),
+        source: e,
+    })?;
+    let fail = |line: usize, reason: &str| Error::Points {
+        path: path.into(),
+        reason: format!("line {}: {reason}", line + 1),
+    };
+    let mut cloud = PointCloud::default();
+    let mut colors = Vec::new();
+    for (l, line) in text.lines().enumerate() {
+        let mut words = line.split_whitespace();
+        if words.next() != Some("v") {
+            continue;
+        }
+        let values: Vec<f32> = words
+            .map(|w| {
+                w.parse::<f32>()
+                    .map_err(|_| fail(l, &format!("'{w}' is not a number")))
+            })
+            .collect::<Result<_>>()?;
+        match values.len() {
+            3 | 4 | 6 | 7 => {}
+            k => {
+                return Err(fail(
+                    l,
+                    &format!("a vertex has 3 (or 6 with colour) numbers, not {k}"),
+                ))
+            }
+        }
+        let p = Vec3::new(values[0], values[1], values[2]);
+        if !p.is_finite() {
+            return Err(fail(l, "non-finite position"));
+        }
+        cloud.positions.push(p);
+        if values.len() >= 6 {
+            let c = &values[values.len() - 3..];
+            colors.push([c[0], c[1], c[2]]);
+        }
+    }
+    if cloud.positions.is_empty() {
+        return Err(fail(0, "no vertices ('v x y z' lines)"));
+    }
+    if colors.len() == cloud.positions.len() {
+        cloud.colors = Some(colors);
+    }
+    Ok(cloud)
+}
+
 impl Splats {
+    /// Check lengths, that everything is finite, radii ≥ 0 and the point count.
+    pub fn validate(&self) -> Result<()> {
+        let n = self.positions.len();
+        let fail = |reason: String| Error::invalid("splats", reason);
+        if n == 0 {
+            return Err(fail("no splats".into()));
+        }
+        if n > MAX_POINTS {
+            return Err(fail(format!(
+                "{n} splats: at most {MAX_POINTS} are supported"
+            )));
+        }
+        let lengths = [self.normals.len(), self.colors.len(), self.radii.len()];
+        if lengths.iter().any(|&l| l != n) {
+            return Err(fail(format!(
+                "{n} positions but normals/colours/radii {lengths:?}"
+            )));
+        }
+        let bad = (0..n).find(|&i| {
+            !(self.positions[i].is_finite()
+                && self.normals[i].is_finite()
+                && self.colors[i].iter().all(|c| c.is_finite())
+                && self.radii[i].is_finite()
+                && self.radii[i] >= 0.0)
+        });
+        match bad {
+            Some(i) => Err(fail(format!(
+                "splat {i} has a non-finite value or a negative radius (radius {})",
+                self.radii[i]
+            ))),
+            None => Ok(()),
+        }
+    }
+
     /// Number of splats.
     pub fn len(&self) -> usize {
         self.positions.len()

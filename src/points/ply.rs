@@ -58,9 +58,12 @@ impl Scalar {
     /// Full scale of a colour stored in this type (1 for floats).
     fn color_scale(self) -> f64 {
         match self {
-            Self::U8 | Self::I8 => 255.0,
-            Self::U16 | Self::I16 => 65535.0,
-            Self::U32 | Self::I32 => u32::MAX as f64,
+            Self::U8 => 255.0,
+            Self::I8 => 127.0,
+            Self::U16 => 65535.0,
+            Self::I16 => 32767.0,
+            Self::U32 => u32::MAX as f64,
+            Self::I32 => i32::MAX as f64,
             Self::F32 | Self::F64 => 1.0,
         }
     }
@@ -149,7 +152,8 @@ pub fn parse(bytes: &[u8]) -> std::result::Result<PointCloud, String> {
 
 fn parse_header(bytes: &[u8]) -> std::result::Result<Header, String> {
     let window = &bytes[..bytes.len().min(MAX_HEADER)];
-    let end = find(window, b"end_header").ok_or(if bytes.starts_with(b"ply") {
+    // `end_header` on a line of its own (a comment may contain the words).
+    let end = find_line(window, b"end_header").ok_or(if bytes.starts_with(b"ply") {
         "header has no 'end_header' within 64 KiB"
     } else {
         "not a PLY file (does not start with 'ply')"
@@ -218,8 +222,16 @@ fn scalar(name: &str) -> std::result::Result<Scalar, String> {
     Scalar::parse(name).ok_or_else(|| format!("unknown property type '{name}'"))
 }
 
-fn find(haystack: &[u8], needle: &[u8]) -> Option<usize> {
-    haystack.windows(needle.len()).position(|w| w == needle)
+/// Offset of the line that is exactly `line` (allowing CR LF and surrounding blanks).
+fn find_line(haystack: &[u8], line: &[u8]) -> Option<usize> {
+    let mut start = 0;
+    for text in haystack.split(|&b| b == b'\n') {
+        if text.trim_ascii() == line {
+            return Some(start + (text.len() - text.trim_ascii_start().len()));
+        }
+        start += text.len() + 1;
+    }
+    None
 }
 
 /// Sequential values of the body, ASCII or binary.
@@ -363,6 +375,11 @@ fn read_vertices(
     element: &Element,
 ) -> std::result::Result<PointCloud, String> {
     let slots: Vec<Slot> = element.properties.iter().map(|p| slot(&p.name)).collect();
+    for (i, p) in element.properties.iter().enumerate() {
+        if element.properties[..i].iter().any(|q| q.name == p.name) {
+            return Err(format!("vertex property '{}' appears twice", p.name));
+        }
+    }
     let has = |f: fn(&Slot) -> bool, n: usize| slots.iter().filter(|s| f(s)).count() == n;
     if !has(|s| matches!(s, Slot::Position(_)), 3) {
         return Err("the vertex element needs properties x, y and z".into());
@@ -496,6 +513,19 @@ mod tests {
             (
                 ASCII.replace("end_header", "end_headr").into_bytes(),
                 "end_header",
+            ),
+            (
+                ASCII
+                    .replace("comment test", "comment no end_header here")
+                    .replace("end_header\n0", "end_headr\n0")
+                    .into_bytes(),
+                "end_header",
+            ),
+            (
+                ASCII
+                    .replace("property float z", "property float x")
+                    .into_bytes(),
+                "twice",
             ),
         ];
         for (bytes, expected) in cases {

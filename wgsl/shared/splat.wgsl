@@ -32,6 +32,13 @@ const KERNEL_SHARPNESS: f32 = 2.0;
 // line, and the division in Eq. 2 would amplify rounding into Inf/NaN.
 const GRAZING_COSINE: f32 = 1e-6;
 
+// Radii outside (0, MAX_RADIUS) never hit and get no covering quad: r² must stay finite.
+const MAX_RADIUS: f32 = 1e18;
+
+fn valid_radius(r: f32) -> bool {
+    return r > 0.0 && r < MAX_RADIUS;
+}
+
 struct SplatHit {
     weight: f32, // 0: miss
     depth: f32,  // eye depth of the hit
@@ -43,7 +50,7 @@ struct SplatHit {
 fn splat_hit(ray: Ray, s: Splat) -> SplatHit {
     let miss = SplatHit(0.0, 0.0, vec3<f32>(0.0));
     let denom = dot(s.normal, ray.direction);
-    if (!(abs(denom) > GRAZING_COSINE * length(ray.direction)) || !(s.radius > 0.0)) {
+    if (!(abs(denom) > GRAZING_COSINE * length(ray.direction)) || !valid_radius(s.radius)) {
         return miss;
     }
     let t = dot(s.normal, s.position - ray.origin) / denom;
