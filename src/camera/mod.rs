@@ -15,7 +15,8 @@ use crate::error::{Error, Result};
 /// The centre camera plus the multi-view configuration.
 #[derive(Clone, Debug, PartialEq)]
 pub struct MultiViewCamera {
-    /// World → centre eye space (right-handed, looking down −z).
+    /// World → centre eye space (right-handed, looking down −z). Rigid (rotation +
+    /// translation): splat radii and volume steps are used in eye space unscaled.
     pub eye_from_world: Mat4,
     /// Number of views N.
     pub views: u32,

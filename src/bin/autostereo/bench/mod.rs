@@ -73,6 +73,15 @@ impl Plan {
         }
     }
 
+    /// Frames per trade-off and economy measurement (each setting is a separate render).
+    pub fn study_frames(&self) -> u32 {
+        if self.quick {
+            3
+        } else {
+            5
+        }
+    }
+
     /// (display spec, size) of every configuration; N-pass runs on the N sweep.
     fn configs(&self) -> Vec<(String, [u32; 2])> {
         let mut c: Vec<(String, [u32; 2])> = self
@@ -125,6 +134,11 @@ pub struct Results {
     pub command: String,
     pub quick: bool,
     pub frames: u32,
+    /// Frames per trade-off and economy measurement.
+    pub study_frames: u32,
+    /// The N sweep's image size and the largest N-pass N (volumes: always the sweep's largest).
+    pub size: [u32; 2],
+    pub npass_max_views: u32,
     pub timing: String,
     pub seconds: f64,
     pub scenes: Vec<(String, String, String)>,
@@ -173,17 +187,20 @@ pub fn run(args: BenchArgs) -> Result<()> {
     let timer = FrameTimer::new(&ctx.device, &ctx.queue);
     eprintln!("loading scenes…");
     let mut scenes = scenes::scenes(&ctx, plan.quick)?;
+    let mut all_methods = scenes
+        .iter()
+        .map(|scene| scenes::methods(&ctx.device, scene))
+        .collect::<Result<Vec<_>>>()?;
     // Probe: one single-view frame per scene, for the duration estimate.
     let mut probe_ms = Vec::new();
-    for scene in &scenes {
-        let mut methods = scenes::methods(&ctx.device, scene)?;
+    for (scene, methods) in scenes.iter().zip(&mut all_methods) {
         let sv = methods
             .iter_mut()
             .find(|m| m.kind == Kind::SingleView)
-            .expect("sv");
+            .expect("every primitive has a single view");
         probe_ms.push(time(&ctx, &timer, scene, sv, "hubner8", plan.size, 1)?);
     }
-    let estimate = estimate_seconds(&plan, &scenes, &probe_ms);
+    let estimate = estimate_seconds(&plan, &scenes, &all_methods, &probe_ms);
     eprintln!(
         "{} run: {} scenes, about {:.0} min on this adapter ({})",
         if plan.quick { "quick" } else { "full" },
@@ -192,9 +209,8 @@ pub fn run(args: BenchArgs) -> Result<()> {
         ctx.adapter_label()
     );
     let mut rows = Vec::new();
-    let total = count_measurements(&plan, &scenes);
-    for scene in &scenes {
-        let mut methods = scenes::methods(&ctx.device, scene)?;
+    let total = count_measurements(&plan, &scenes, &all_methods);
+    for (scene, methods) in scenes.iter().zip(&mut all_methods) {
         for (display, size) in plan.configs() {
             let frame = scenes::frame(scene.bounds, &display, size)?;
             let n = frame.camera.views;
@@ -237,6 +253,9 @@ pub fn run(args: BenchArgs) -> Result<()> {
         command: std::env::args().collect::<Vec<_>>().join(" "),
         quick: plan.quick,
         frames: plan.frames,
+        study_frames: plan.study_frames(),
+        size: plan.size,
+        npass_max_views: plan.npass_max_views,
         timing: format!("{:?}", timer.source()),
         seconds: start.elapsed().as_secs_f64(),
         scenes: scenes
@@ -248,6 +267,11 @@ pub fn run(args: BenchArgs) -> Result<()> {
         economy,
     };
     if let Some(dir) = &args.report {
+        let json = dir.join(format!(
+            "bench_{}.json",
+            if plan.quick { "quick" } else { "full" }
+        ));
+        std::fs::write(&json, serde_json::to_string_pretty(&results)?)?;
         report::write(dir, &results)?;
         eprintln!("wrote {}", dir.join("BENCHMARKS.md").display());
     }
@@ -281,43 +305,38 @@ fn measured(
     }
 }
 
-fn count_measurements(plan: &Plan, scenes: &[BenchScene]) -> usize {
-    scenes
-        .iter()
-        .map(|s| {
-            let per_kind = |kind, primary| {
-                plan.configs()
-                    .iter()
-                    .filter(|(d, size)| {
-                        let n = autostereo::display::Display::parse(d).map_or(0, |d| d.views());
-                        measured(plan, s.primitive, kind, primary, d, n, *size)
-                    })
-                    .count()
-            };
-            let single = match s.primitive {
-                "volume" => 3,
-                "points" => 2,
-                _ => 4,
-            };
-            per_kind(Kind::SinglePass, true)
-                + (single - 1) * per_kind(Kind::SinglePass, false)
-                + per_kind(Kind::NPass, false)
-                + per_kind(Kind::SingleView, false)
-        })
-        .sum()
+fn count_measurements(plan: &Plan, scenes: &[BenchScene], methods: &[Vec<MethodEntry>]) -> usize {
+    let mut total = 0;
+    for (scene, methods) in scenes.iter().zip(methods) {
+        for (display, size) in plan.configs() {
+            let n = autostereo::display::Display::parse(&display).map_or(0, |d| d.views());
+            total += methods
+                .iter()
+                .enumerate()
+                .filter(|(i, m)| {
+                    measured(plan, scene.primitive, m.kind, *i == 0, &display, n, size)
+                })
+                .count();
+        }
+    }
+    total
 }
 
 /// Seconds the run should take: single view ≈ `probe`, single pass ≈ 2.5 × probe, N-pass ≈ N ×
 /// probe, scaled by pixels; plus ~20 % for the trade-offs.
-fn estimate_seconds(plan: &Plan, scenes: &[BenchScene], probe_ms: &[f64]) -> f64 {
+fn estimate_seconds(
+    plan: &Plan,
+    scenes: &[BenchScene],
+    methods: &[Vec<MethodEntry>],
+    probe_ms: &[f64],
+) -> f64 {
     let frames = (plan.frames + 2) as f64;
     let mut ms = 0.0;
-    for (scene, probe) in scenes.iter().zip(probe_ms) {
-        let singles = match scene.primitive {
-            "volume" => 3.0,
-            "points" => 2.0,
-            _ => 4.0,
-        };
+    for ((scene, methods), probe) in scenes.iter().zip(methods).zip(probe_ms) {
+        let singles = methods
+            .iter()
+            .filter(|m| m.kind == Kind::SinglePass)
+            .count() as f64;
         for (display, size) in plan.configs() {
             let n = autostereo::display::Display::parse(&display).map_or(1, |d| d.views());
             let scale = (size[0] * size[1]) as f64 / (plan.size[0] * plan.size[1]) as f64;

@@ -135,12 +135,17 @@ pub fn scenes(ctx: &autostereo::gpu::GpuContext, quick: bool) -> Result<Vec<Benc
     } else {
         "dragon_vrip.ply"
     };
-    let (name, cloud) = match PointCloud::load(&fetched(dragon)) {
-        Ok(c) => (format!("{dragon} vertices"), c),
-        Err(_) => (
+    // Generated stand-ins only where data/fetch did not run; a broken file is an error.
+    let (name, cloud) = if fetched(dragon).is_file() {
+        (
+            format!("{dragon} vertices"),
+            PointCloud::load(&fetched(dragon))?,
+        )
+    } else {
+        (
             "torus scene (generated)".to_string(),
             PointCloud::torus_scene(),
-        ),
+        )
     };
     let (splats, completion) = cloud.complete(1.0)?;
     let scene = SplatScene::new(device, &splats, GroupCount::Auto)?;
@@ -165,7 +170,8 @@ pub fn scenes(ctx: &autostereo::gpu::GpuContext, quick: bool) -> Result<Vec<Benc
     };
     let mut any_mesh = false;
     for file in meshes {
-        if let Ok(mesh) = Mesh::load_obj(&fetched(file)) {
+        if fetched(file).is_file() {
+            let mesh = Mesh::load_obj(&fetched(file))?;
             out.push(mesh_scene(device, file.to_string(), &mesh)?);
             any_mesh = true;
         }

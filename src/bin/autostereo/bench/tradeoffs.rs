@@ -113,7 +113,7 @@ fn probe<'a>(
         timer,
         reference: image(ctx, scene, &mut reference, &frame)?,
         frame,
-        frames: if plan.quick { 3 } else { 5 },
+        frames: plan.study_frames(),
         study,
     })
 }
@@ -283,7 +283,7 @@ pub fn economy(
     plan: &Plan,
 ) -> Result<Vec<Economy>> {
     let mut out = Vec::new();
-    let frames = if plan.quick { 3 } else { 5 };
+    let frames = plan.study_frames();
     for scene in scenes.iter_mut() {
         if let SceneData::Volume(_) = &scene.data {
             let frame = scenes::frame(scene.bounds, "hubner8", plan.size)?;
@@ -291,14 +291,17 @@ pub fn economy(
                 &ctx.device,
                 VolumeMethod::SinglePass,
             )?));
+            let shade = |scene: &mut BenchScene, on: bool| {
+                let SceneData::Volume(v) = &mut scene.data else {
+                    unreachable!()
+                };
+                std::mem::replace(&mut v.shade, on)
+            };
+            let before = shade(scene, true);
             let with_ms = time_frame(ctx, timer, scene, &mut r, &frame, frames)?;
-            if let SceneData::Volume(v) = &mut scene.data {
-                v.shade = false;
-            }
+            shade(scene, false);
             let without_ms = time_frame(ctx, timer, scene, &mut r, &frame, frames)?;
-            if let SceneData::Volume(v) = &mut scene.data {
-                v.shade = true;
-            }
+            shade(scene, before);
             out.push(Economy {
                 scene: scene.name.clone(),
                 what: "lighting (gradient shading), single pass (compute)".into(),
