@@ -449,8 +449,14 @@ fn economy(md: &mut String, r: &Results) -> Result<()> {
         (!v.is_empty()).then_some((lo, hi))
     };
     let range = |r: Option<(f64, f64)>| {
+        // round() + 0.0 turns −0 into 0.
         r.map_or("not measured".to_string(), |(lo, hi)| {
-            format!("{lo:.0} to {hi:.0} %")
+            let (lo, hi) = (lo.round() + 0.0, hi.round() + 0.0);
+            if lo == hi {
+                format!("{lo:.0} %")
+            } else {
+                format!("{lo:.0} to {hi:.0} %")
+            }
         })
     };
     writeln!(
