@@ -44,11 +44,15 @@ pub fn write(dir: &Path, r: &Results) -> Result<()> {
     writeln!(md, "# Benchmarks\n")?;
     writeln!(
         md,
-        "Regenerate: `cargo run --release --features plots -- bench{} --report docs` (this run: {:.1} min; \
-         the full run states its expected duration when it starts; without `--features plots` the \
-         report has its tables but no plots). Raw numbers: add `--json`; this run's are in \
-         `docs/bench_{}.json`, and `bench --report docs --from-json FILE` re-plots them.\n",
-        if r.quick { " --quick" } else { "" },
+        "Produced by `cargo run --release --features plots -- {}` in {:.1} min (the full run \
+         states its expected duration when it starts; without `--features plots` the report has \
+         its tables but no plots). The numbers are saved next to this file as `bench_{}.json`; \
+         `bench --report DIR --from-json FILE` re-plots them.\n",
+        r.command
+            .split_whitespace()
+            .skip(1)
+            .collect::<Vec<_>>()
+            .join(" "),
         r.seconds / 60.0,
         if r.quick { "quick" } else { "full" },
     )?;
