@@ -4,8 +4,6 @@
 
 mod common;
 
-use autostereo::camera::MultiViewCamera;
-use autostereo::display::Display;
 use autostereo::frame::Frame;
 use autostereo::image_io::{compare, RgbImage};
 use autostereo::points::{GroupCount, PointCloud, SplatScene, Splats};
@@ -27,18 +25,13 @@ fn scene(splats: &Splats) -> SplatScene {
 /// A frame looking at `splats` with `separation_share` × radius between views and the focal
 /// plane at `focal_scale` × the framing distance.
 fn frame(splats: &Splats, spec: &str, separation_share: f32, focal_scale: f32) -> Frame {
-    let display = Display::parse(spec).unwrap();
-    let bounds = splats.bounds().unwrap();
-    let mut camera = MultiViewCamera::framing(
-        bounds,
-        display.views(),
-        Some(separation_share * bounds.radius()),
-        0.6,
-        SIZE[0] as f32 / SIZE[1] as f32,
+    common::frame(
+        splats.bounds().unwrap(),
+        spec,
+        separation_share,
+        focal_scale,
+        SIZE,
     )
-    .unwrap();
-    camera.focal_distance *= focal_scale;
-    Frame::new(camera, display, SIZE).unwrap()
 }
 
 fn render(scene: &SplatScene, frame: &Frame, method: SplatMethod, depth: SplatDepth) -> RgbImage {

@@ -4,8 +4,6 @@
 
 mod common;
 
-use autostereo::camera::MultiViewCamera;
-use autostereo::display::Display;
 use autostereo::frame::Frame;
 use autostereo::image_io::{compare, RgbImage};
 use autostereo::render::{
@@ -31,18 +29,7 @@ fn scene(volume: &Volume, tf: &str, rotate: Mat4) -> VolumeScene {
 }
 
 fn frame(volume: &Volume, spec: &str, separation_share: f32, focal_scale: f32) -> Frame {
-    let display = Display::parse(spec).unwrap();
-    let bounds = volume.bounds();
-    let mut camera = MultiViewCamera::framing(
-        bounds,
-        display.views(),
-        Some(separation_share * bounds.radius()),
-        0.6,
-        SIZE[0] as f32 / SIZE[1] as f32,
-    )
-    .unwrap();
-    camera.focal_distance *= focal_scale;
-    Frame::new(camera, display, SIZE).unwrap()
+    common::frame(volume.bounds(), spec, separation_share, focal_scale, SIZE)
 }
 
 fn render(scene: &VolumeScene, frame: &Frame, method: VolumeMethod) -> RgbImage {

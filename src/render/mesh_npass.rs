@@ -2,7 +2,7 @@
 //! compositing) and single view (the centre camera straight into the target).
 //! Shading is `wgsl/shared/shading.wgsl`, the same the single-pass path uses.
 
-use super::pipeline::cleared;
+use super::pipeline::{begin_pass, cleared};
 use super::renderer::Renderer;
 use super::texture::{cached_texture_2d, Texture2d};
 use super::view_layers::{nearest_depth_test, DEPTH_FORMAT};
@@ -214,21 +214,12 @@ impl MeshBaseline {
         depth: &wgpu::TextureView,
     ) {
         let (_, view_group, _) = self.view_uniforms.as_ref().expect("written before drawing");
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("mesh view"),
-            color_attachments: &[Some(cleared(color, frame.background))],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: depth,
-                depth_ops: Some(wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(1.0),
-                    store: wgpu::StoreOp::Discard,
-                }),
-                stencil_ops: None,
-            }),
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
+        let mut pass = begin_pass(
+            encoder,
+            "mesh view",
+            cleared(color, frame.background),
+            Some(depth),
+        );
         pass.set_pipeline(&self.pipeline);
         pass.set_bind_group(0, &self.frame.bind_group, &[]);
         pass.set_bind_group(1, view_group, &[(view as u64 * self.view_stride) as u32]);

@@ -73,6 +73,31 @@ pub(crate) fn cleared(
     }
 }
 
+/// Begin a render pass writing `color`, with `depth` (if any) cleared to the far plane and
+/// discarded at the end: the one pass shape every render pass of the crate has.
+pub(crate) fn begin_pass<'e>(
+    encoder: &'e mut wgpu::CommandEncoder,
+    label: &str,
+    color: wgpu::RenderPassColorAttachment<'_>,
+    depth: Option<&wgpu::TextureView>,
+) -> wgpu::RenderPass<'e> {
+    encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        label: Some(label),
+        color_attachments: &[Some(color)],
+        depth_stencil_attachment: depth.map(|view| wgpu::RenderPassDepthStencilAttachment {
+            view,
+            depth_ops: Some(wgpu::Operations {
+                load: wgpu::LoadOp::Clear(1.0),
+                store: wgpu::StoreOp::Discard,
+            }),
+            stencil_ops: None,
+        }),
+        timestamp_writes: None,
+        occlusion_query_set: None,
+        multiview_mask: None,
+    })
+}
+
 /// Draw a full-screen triangle into `target` with `pipeline` and the given bind groups.
 pub(crate) fn draw_fullscreen(
     encoder: &mut wgpu::CommandEncoder,
@@ -81,14 +106,7 @@ pub(crate) fn draw_fullscreen(
     bind_groups: &[&wgpu::BindGroup],
     target: &wgpu::TextureView,
 ) {
-    let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-        label: Some(label),
-        color_attachments: &[Some(cleared(target, [0.0; 4]))],
-        depth_stencil_attachment: None,
-        timestamp_writes: None,
-        occlusion_query_set: None,
-        multiview_mask: None,
-    });
+    let mut pass = begin_pass(encoder, label, cleared(target, [0.0; 4]), None);
     pass.set_pipeline(pipeline);
     for (i, group) in bind_groups.iter().enumerate() {
         pass.set_bind_group(i as u32, *group, &[]);

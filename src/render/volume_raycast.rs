@@ -133,15 +133,9 @@ impl VolumeRaycaster {
             return Ok(());
         }
         let module = crate::shader::module(device, "volume_raycast.wgsl")?;
-        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("volume raycast"),
-            bind_group_layouts: &[
-                Some(&self.resources.frame_layout),
-                Some(&self.resources.volume_layout),
-                Some(&self.output_layout),
-            ],
-            immediate_size: 0,
-        });
+        let layout = self
+            .resources
+            .pipeline_layout(device, "volume raycast", &self.output_layout);
         let constants = spec.constants(&[]);
         let pipeline = crate::gpu::checked(device, "building the volume pipeline", || {
             device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {

@@ -77,6 +77,25 @@ impl VolumeResources {
         }
     }
 
+    /// The layout of a volume pipeline: frame (group 0), volume (group 1), the pipeline's own
+    /// `group2`.
+    pub fn pipeline_layout(
+        &self,
+        device: &wgpu::Device,
+        label: &str,
+        group2: &wgpu::BindGroupLayout,
+    ) -> wgpu::PipelineLayout {
+        device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some(label),
+            bind_group_layouts: &[
+                Some(&self.frame_layout),
+                Some(&self.volume_layout),
+                Some(group2),
+            ],
+            immediate_size: 0,
+        })
+    }
+
     /// Constants for one dispatch: all K views per pixel (`use_mask`) or one camera at `offset`.
     pub fn params(
         scene: &VolumeScene,

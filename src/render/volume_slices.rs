@@ -8,7 +8,7 @@ use std::collections::HashMap;
 use bytemuck::{Pod, Zeroable};
 use glam::{Vec3, Vec4Swizzles};
 
-use super::pipeline::{cleared, draw_fullscreen, fullscreen_pipeline};
+use super::pipeline::{begin_pass, cleared, draw_fullscreen, fullscreen_pipeline};
 use super::renderer::Renderer;
 use super::specialize::Specialization;
 use super::texture::{cached_texture_2d, Texture2d};
@@ -116,15 +116,9 @@ impl VolumeSlicer {
             return Ok(());
         }
         let module = crate::shader::module(device, "volume_slices.wgsl")?;
-        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("volume slices"),
-            bind_group_layouts: &[
-                Some(&self.resources.frame_layout),
-                Some(&self.resources.volume_layout),
-                Some(&self.slices_layout),
-            ],
-            immediate_size: 0,
-        });
+        let layout = self
+            .resources
+            .pipeline_layout(device, "volume slices", &self.slices_layout);
         let exact = (self.alpha == AlphaMode::Exact) as u32 as f64;
         let constants = spec.constants(&[("EXACT_ALPHA", exact)]);
         let options = wgpu::PipelineCompilationOptions {
@@ -289,16 +283,10 @@ impl Renderer<VolumeScene> for VolumeSlicer {
         )
         .clone();
         {
-            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                label: Some("volume slices"),
-                // Cleared to the background: "over" blending then composites every channel
-                // over it with that channel's own α.
-                color_attachments: &[Some(cleared(&accumulation, frame.background))],
-                depth_stencil_attachment: None,
-                timestamp_writes: None,
-                occlusion_query_set: None,
-                multiview_mask: None,
-            });
+            // Cleared to the background: "over" blending then composites every channel over it
+            // with that channel's own α.
+            let color = cleared(&accumulation, frame.background);
+            let mut pass = begin_pass(encoder, "volume slices", color, None);
             pass.set_pipeline(&self.pipelines[&spec]);
             pass.set_bind_group(0, &self.resources.frame.bind_group, &[]);
             pass.set_bind_group(1, &volume_group, &[0]);

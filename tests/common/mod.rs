@@ -43,3 +43,25 @@ pub fn save_diff(name: &str, a: &RgbImage, b: &RgbImage) -> PathBuf {
     diff.save_png(&path).unwrap();
     path
 }
+
+/// A `size` frame looking at `bounds` on display `spec`, with `separation_share` × the bounding
+/// radius between views and the focal plane at `focal_scale` × the framing distance.
+pub fn frame(
+    bounds: autostereo::camera::Bounds,
+    spec: &str,
+    separation_share: f32,
+    focal_scale: f32,
+    size: [u32; 2],
+) -> autostereo::frame::Frame {
+    let display = autostereo::display::Display::parse(spec).unwrap();
+    let mut camera = autostereo::camera::MultiViewCamera::framing(
+        bounds,
+        display.views(),
+        Some(separation_share * bounds.radius()),
+        0.6,
+        size[0] as f32 / size[1] as f32,
+    )
+    .unwrap();
+    camera.focal_distance *= focal_scale;
+    autostereo::frame::Frame::new(camera, display, size).unwrap()
+}

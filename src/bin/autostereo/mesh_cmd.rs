@@ -10,7 +10,7 @@ use autostereo::render::{
 };
 
 use crate::args::{gpu, Method, RenderArgs};
-use crate::run::{compare_with, report, run_fields, timed};
+use crate::run::{compare_with, report, run_fields, run_summary, timed};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum VisibilityArg {
@@ -95,15 +95,9 @@ pub fn run(args: MeshArgs) -> Result<()> {
         fields["bounds"] = format!("{:?}", args.bounds).to_lowercase().into();
     }
     let summary = format!(
-        "{method_name}: {} triangles, {} views, {}x{}, {:.2} ms/frame (median of {}, {:?}) on {}",
+        "{method_name}: {} triangles, {}",
         mesh.triangle_count(),
-        frame.camera.views,
-        args.common.size[0],
-        args.common.size[1],
-        run.ms,
-        args.common.frames,
-        run.timing,
-        ctx.adapter_label()
+        run_summary(&ctx, &args.common, &frame, &run)
     );
     report(args.common.json, fields, diff, &summary);
     Ok(())

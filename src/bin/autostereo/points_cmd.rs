@@ -9,7 +9,7 @@ use autostereo::points::{GroupCount, PointCloud, SplatScene};
 use autostereo::render::{PointSplatter, SplatDepth, SplatMethod, SplatOptions};
 
 use crate::args::{gpu, Method, RenderArgs};
-use crate::run::{compare_with, report, run_fields, timed};
+use crate::run::{compare_with, report, run_fields, run_summary, timed};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum DepthArg {
@@ -118,20 +118,14 @@ pub fn run(args: PointsArgs) -> Result<()> {
         ),
     };
     let summary = format!(
-        "{method_name} ({} depth): {} points{estimated}, {} groups ({} conflicts, {:.0} ms), {} views, {}x{}, {:.2} ms/frame (median of {}, {:?}), GPU memory {:.1} MiB, on {}",
+        "{method_name} ({} depth): {} points{estimated}, {} groups ({} conflicts, {:.0} ms), GPU memory {:.1} MiB, {}",
         options.depth.name(),
         splats.len(),
         scene.groups(),
         scene.conflicts,
         scene.grouping_ms,
-        frame.camera.views,
-        args.common.size[0],
-        args.common.size[1],
-        run.ms,
-        args.common.frames,
-        run.timing,
         gpu_bytes as f64 / (1u64 << 20) as f64,
-        ctx.adapter_label()
+        run_summary(&ctx, &args.common, &frame, &run)
     );
     report(args.common.json, fields, diff, &summary);
     Ok(())

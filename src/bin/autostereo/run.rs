@@ -107,3 +107,22 @@ pub fn run_fields(
     }
     fields
 }
+
+/// The end of every render command's one-line summary: views, size, speed, adapter.
+pub fn run_summary(
+    ctx: &GpuContext,
+    common: &crate::args::RenderArgs,
+    frame: &Frame,
+    run: &Timed,
+) -> String {
+    format!(
+        "{} views, {}x{}, {:.2} ms/frame (median of {}, {:?}) on {}",
+        frame.camera.views,
+        common.size[0],
+        common.size[1],
+        run.ms,
+        common.frames,
+        run.timing,
+        ctx.adapter_label()
+    )
+}

@@ -15,7 +15,7 @@ use autostereo::volume::{phantom, TransferFunction, Volume};
 use glam::Mat4;
 
 use crate::args::{check_output, gpu, Method, RenderArgs};
-use crate::run::{compare_with, report, run_fields, timed};
+use crate::run::{compare_with, report, run_fields, run_summary, timed};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum Builtin {
@@ -251,15 +251,9 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     });
     let fields = run_fields(&ctx, &args.common, &frame, &run, extra);
     let summary = format!(
-        "{method}: volume {:?}, {} views, {}x{}, {:.2} ms/frame (median of {}, {:?}) on {}",
+        "{method}: volume {:?}, {}",
         volume.dims,
-        frame.camera.views,
-        args.common.size[0],
-        args.common.size[1],
-        run.ms,
-        args.common.frames,
-        run.timing,
-        ctx.adapter_label()
+        run_summary(&ctx, &args.common, &frame, &run)
     );
     report(args.common.json, fields, diff, &summary);
     Ok(())

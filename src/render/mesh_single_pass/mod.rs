@@ -21,7 +21,7 @@ mod scratch;
 
 use std::collections::HashMap;
 
-use super::pipeline::{cleared, draw_fullscreen};
+use super::pipeline::{begin_pass, cleared, draw_fullscreen};
 use super::renderer::Renderer;
 use super::specialize::Specialization;
 use crate::error::{Error, Result};
@@ -232,23 +232,7 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
                     "mesh single pass (fast)",
                 ),
             };
-            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                label: Some(label),
-                color_attachments: &[Some(color)],
-                depth_stencil_attachment: depth.map(|view| {
-                    wgpu::RenderPassDepthStencilAttachment {
-                        view,
-                        depth_ops: Some(wgpu::Operations {
-                            load: wgpu::LoadOp::Clear(1.0),
-                            store: wgpu::StoreOp::Discard,
-                        }),
-                        stencil_ops: None,
-                    }
-                }),
-                timestamp_writes: None,
-                occlusion_query_set: None,
-                multiview_mask: None,
-            });
+            let mut pass = begin_pass(encoder, label, color, depth);
             pass.set_pipeline(geometry);
             pass.set_bind_group(0, &self.frame.bind_group, &[]);
             pass.set_bind_group(1, &groups.mesh, &[]);

@@ -17,7 +17,7 @@ pub use pipelines::SplatParams;
 use self::group_images::GroupImages;
 use self::pipelines::{Layouts, Pipelines, COVER_WORKGROUP};
 use super::pass_params::PassParams;
-use super::pipeline::cleared;
+use super::pipeline::{begin_pass, cleared};
 use super::renderer::Renderer;
 use super::specialize::Specialization;
 use super::volume_raycast::check_target;
@@ -319,21 +319,12 @@ impl Renderer<SplatScene> for PointSplatter {
                 pass.dispatch_workgroups(dispatch[0], dispatch[1], 1);
             }
             for (range, layer) in scene.group_ranges.iter().zip(&images.layer_views) {
-                let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                    label: Some("splat group"),
-                    color_attachments: &[Some(cleared(layer, [0.0; 4]))],
-                    depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                        view: &images.depth_view,
-                        depth_ops: Some(wgpu::Operations {
-                            load: wgpu::LoadOp::Clear(1.0),
-                            store: wgpu::StoreOp::Discard,
-                        }),
-                        stencil_ops: None,
-                    }),
-                    timestamp_writes: None,
-                    occlusion_query_set: None,
-                    multiview_mask: None,
-                });
+                let mut pass = begin_pass(
+                    encoder,
+                    "splat group",
+                    cleared(layer, [0.0; 4]),
+                    Some(&images.depth_view),
+                );
                 pass.set_pipeline(&pipelines.geometry);
                 pass.set_bind_group(0, &self.frame.bind_group, &[]);
                 pass.set_bind_group(1, &quad_group, &[]);
@@ -344,14 +335,7 @@ impl Renderer<SplatScene> for PointSplatter {
                 Some(layers) => &layers.layer_views[i],
                 None => &target.view,
             };
-            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                label: Some("splat composite"),
-                color_attachments: &[Some(cleared(output, [0.0; 4]))],
-                depth_stencil_attachment: None,
-                timestamp_writes: None,
-                occlusion_query_set: None,
-                multiview_mask: None,
-            });
+            let mut pass = begin_pass(encoder, "splat composite", cleared(output, [0.0; 4]), None);
             pass.set_pipeline(&pipelines.composite);
             pass.set_bind_group(0, &self.frame.bind_group, &[]);
             pass.set_bind_group(1, &images_group, &[]);
