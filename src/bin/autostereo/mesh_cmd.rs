@@ -38,10 +38,12 @@ pub struct MeshArgs {
     obj: Option<PathBuf>,
     #[command(flatten)]
     common: RenderArgs,
-    /// Single-pass visibility: auto | exact | atomic (per-subpixel depth) | fast (the paper's).
+    /// Single-pass visibility: auto | compute | atomic | exact (per-subpixel depth) | fast (the
+    /// paper's one depth per pixel); auto = compute where 64-bit atomics exist, else exact.
     #[arg(long, value_enum, default_value = "auto")]
     visibility: VisibilityArg,
-    /// Single-pass covering-quad bounds: exact (DESIGN §3) or the paper's printed formula.
+    /// Single-pass covering-quad bounds: exact (vd·|1 − fd/d| per vertex) or the paper's printed
+    /// formula.
     #[arg(long, value_enum, default_value = "exact")]
     bounds: BoundsArg,
     /// Reorder triangles along a Morton curve before rendering (locality; every method).

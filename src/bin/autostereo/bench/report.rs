@@ -403,6 +403,17 @@ fn tradeoffs(md: &mut String, r: &Results, images: &Path) -> Result<()> {
     Ok(())
 }
 
+/// Share of the time a left-out feature saves, percent.
+fn saved_percent(e: &super::tradeoffs::Economy) -> f64 {
+    100.0 * (1.0 - e.without_ms / e.with_ms)
+}
+
+/// Rounded to a whole percent, without printing "-0" (round() keeps the sign of −0.3; + 0.0
+/// turns −0 into 0).
+fn whole_percent(p: f64) -> f64 {
+    p.round() + 0.0
+}
+
 fn economy(md: &mut String, r: &Results) -> Result<()> {
     writeln!(md, "## Model only what a scene requires\n")?;
     writeln!(
@@ -439,23 +450,22 @@ fn economy(md: &mut String, r: &Results) -> Result<()> {
             e.what,
             e.with_ms,
             e.without_ms,
-            100.0 * (1.0 - e.without_ms / e.with_ms)
+            whole_percent(saved_percent(e))
         )?;
     }
     let saved = |filter: &dyn Fn(&super::tradeoffs::Economy) -> bool| {
         let v: Vec<f64> = economy
             .iter()
             .filter(|e| filter(e))
-            .map(|e| 100.0 * (1.0 - e.without_ms / e.with_ms))
+            .map(saved_percent)
             .collect();
         let lo = v.iter().copied().fold(f64::MAX, f64::min);
         let hi = v.iter().copied().fold(f64::MIN, f64::max);
         (!v.is_empty()).then_some((lo, hi))
     };
     let range = |r: Option<(f64, f64)>| {
-        // round() + 0.0 turns −0 into 0.
         r.map_or("not measured".to_string(), |(lo, hi)| {
-            let (lo, hi) = (lo.round() + 0.0, hi.round() + 0.0);
+            let (lo, hi) = (whole_percent(lo), whole_percent(hi));
             if lo == hi {
                 format!("{lo:.0} %")
             } else {
