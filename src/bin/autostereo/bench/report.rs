@@ -480,7 +480,8 @@ fn economy(md: &mut String, r: &Results) -> Result<()> {
          saves {} (two texture fetches per sample dominate the Blinn-Phong arithmetic on a CPU). \
          Differences within ±10 % are noise on a software rasteriser. Not modelled separately: a \
          scene without colour (a vertex colour is 4 of 48 bytes per mesh vertex, 4 of 32 per \
-         splat; not specialised, not measured).\n",
+         splat; not specialised: a trial replacing the mesh resolve's colour loads by one colour \
+         saved ≈ 1 % at 1920×1080, docs/MESHES.md).\n",
         range(saved(&|e| e.what.starts_with("subpixel"))),
         range(saved(&|e| e.what.starts_with("lighting"))),
     )?;
