@@ -15,7 +15,29 @@ pub struct RgbImage {
     pub data: Vec<u8>,
 }
 
+/// Most pixels a CPU image may have (3 bytes each): 2²⁸ (768 MiB); an 8K panel has 33 M.
+pub const MAX_IMAGE_PIXELS: u64 = 1 << 28;
+
 impl RgbImage {
+    /// Check a size before an image of it is allocated: both sides ≥ 1, at most
+    /// [`MAX_IMAGE_PIXELS`] pixels.
+    pub fn check_size(width: u32, height: u32) -> Result<()> {
+        if width == 0 || height == 0 {
+            return Err(Error::invalid(
+                "image size",
+                format!("{width}x{height}: width and height must be at least 1"),
+            ));
+        }
+        let pixels = u64::from(width) * u64::from(height);
+        if pixels > MAX_IMAGE_PIXELS {
+            return Err(Error::invalid(
+                "image size",
+                format!("{width}x{height}: {pixels} pixels, more than {MAX_IMAGE_PIXELS}"),
+            ));
+        }
+        Ok(())
+    }
+
     /// A black image.
     pub fn new(width: u32, height: u32) -> Self {
         Self {

@@ -1,5 +1,7 @@
 //! Bad input is a clear error, never a panic: library calls and the CLI.
 
+mod common;
+
 use std::path::PathBuf;
 use std::process::Command;
 
@@ -18,6 +20,17 @@ fn temp_file(name: &str, contents: &str) -> PathBuf {
     path
 }
 
+/// The sample Looking Glass calibration, as text and as JSON.
+fn sample_calibration() -> (String, serde_json::Value) {
+    let full = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/data/lkg_sample_visual.json"
+    ))
+    .unwrap();
+    let json = serde_json::from_str(&full).unwrap();
+    (full, json)
+}
+
 #[test]
 fn malformed_obj_files_are_mesh_errors() {
     for (name, text, expect) in [
@@ -26,7 +39,11 @@ fn malformed_obj_files_are_mesh_errors() {
             "v 1 2 x\nv 0 0 0\nv 1 0 0\nf 1 2 3\n",
             "malformed",
         ),
-        ("bad_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", ""),
+        (
+            "bad_index.obj",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n",
+            "index out of bounds",
+        ),
         ("no_faces.obj", "v 0 0 0\nv 1 0 0\n", "no triangles"),
         ("empty.obj", "", "no triangles"),
         (
@@ -72,6 +89,95 @@ fn unknown_display_spec_and_bad_view_counts_are_errors() {
         Err(Error::InvalidParameter { .. })
     ));
     assert!(Display::parse("hubner8").unwrap().with_views(9).is_err());
+    // Subnormal, huge or non-finite lens parameters would make the fixed-point phase
+    // meaningless: errors naming the parameter.
+    for (spec, name) in [
+        ("slanted:8,1e-320,1,0", "pitch"),
+        ("slanted:8,8,1e300,0", "slant"),
+        ("slanted:8,8,1,1e300", "phase"),
+    ] {
+        match Display::parse(spec) {
+            Err(Error::InvalidParameter { name: n, .. }) => assert_eq!(n, name, "{spec}"),
+            other => panic!("{spec}: expected an error on {name}, got {other:?}"),
+        }
+    }
+}
+
+#[test]
+fn looking_glass_calibration_giving_an_unusable_lens_is_an_error() {
+    let (full, json) = sample_calibration();
+    for (i, (field, value)) in [("slope", 1e-300), ("slope", -1e-300), ("center", 1e300)]
+        .into_iter()
+        .enumerate()
+    {
+        let mut bad = json.clone();
+        bad[field]["value"] = value.into();
+        let path = temp_file(&format!("lkg_bad_{i}.json"), &bad.to_string());
+        let err = Display::parse(&format!("lkg:{}", path.display())).unwrap_err();
+        assert!(
+            err.to_string().contains("calibration"),
+            "{field} = {value}: {err}"
+        );
+    }
+    let calibration = Calibration::from_json(&full, "v.json".as_ref()).unwrap();
+    assert_eq!(
+        calibration.holoplay_view(0, 3, 4, 1),
+        0,
+        "no views: no panic"
+    );
+}
+
+#[test]
+fn volumes_and_transfer_functions_with_inconsistent_fields_are_errors() {
+    use autostereo::render::VolumeScene;
+    use autostereo::volume::{phantom, PreintegrationTable, TransferFunction};
+    use glam::Mat4;
+    let empty_tf = TransferFunction { points: vec![] };
+    assert_eq!(empty_tf.eval(0.5), [0.0; 4]);
+    assert!(PreintegrationTable::new(&empty_tf, 1.0).is_err());
+    let unsorted = TransferFunction {
+        points: vec![(0.8, [1.0; 4]), (0.2, [0.0; 4])],
+    };
+    assert!(PreintegrationTable::new(&unsorted, 1.0).is_err());
+    let mut volume = phantom::ct_head(8).unwrap();
+    volume.data.truncate(10);
+    assert!(volume.validate().is_err());
+    let ctx = common::gpu();
+    let ct_skin = TransferFunction::preset("ct-skin").unwrap();
+    let head = phantom::ct_head(8).unwrap();
+    for (volume, tf, expect) in [
+        (&volume, ct_skin, "values for dimensions"),
+        (&head, empty_tf, "control point"),
+    ] {
+        let scene = VolumeScene::new(&ctx.device, &ctx.queue, volume, tf, None, Mat4::IDENTITY);
+        let err = scene.err().unwrap().to_string();
+        assert!(err.contains(expect), "{err}");
+    }
+}
+
+#[test]
+fn a_target_of_another_size_than_the_frame_is_an_error_for_every_mesh_renderer() {
+    use autostereo::mesh::MeshBuffers;
+    use autostereo::render::{
+        MeshBaseline, MeshBaselineMethod, MeshSinglePass, MeshSinglePassOptions, Renderer,
+    };
+    use autostereo::target::SpatialTarget;
+    let ctx = common::gpu();
+    let mesh = Mesh::torus_scene();
+    let buffers = MeshBuffers::new(&ctx.device, &mesh).unwrap();
+    let frame = common::frame(mesh.bounds().unwrap(), "hubner8", 0.05, 1.0, [32, 32]);
+    let target = SpatialTarget::new(&ctx.device, [48, 32]).unwrap();
+    let mut renderers: Vec<Box<dyn Renderer<MeshBuffers>>> = vec![
+        Box::new(MeshBaseline::new(&ctx.device, MeshBaselineMethod::NPass).unwrap()),
+        Box::new(MeshBaseline::new(&ctx.device, MeshBaselineMethod::SingleView).unwrap()),
+        Box::new(MeshSinglePass::new(&ctx.device, MeshSinglePassOptions::default()).unwrap()),
+    ];
+    for renderer in &mut renderers {
+        let err = renderer
+            .render(&ctx.device, &ctx.queue, &buffers, &frame, &target)
+            .unwrap_err();
+        assert!(err.to_string().contains("differs from the frame"), "{err}");
+    }
 }
 
 #[test]
@@ -95,12 +201,7 @@ fn zero_size_and_zero_views_are_errors() {
 
 #[test]
 fn calibration_with_missing_or_bad_fields_is_an_error() {
-    let full = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/data/lkg_sample_visual.json"
-    ))
-    .unwrap();
-    let json: serde_json::Value = serde_json::from_str(&full).unwrap();
+    let (_, json) = sample_calibration();
     for field in [
         "pitch",
         "slope",
@@ -152,6 +253,7 @@ fn cli_reports_bad_input_without_panicking() {
         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n1 1\n",
     );
     let calibration = temp_file("cli_calibration.json", r#"{"pitch": {"value": 50}}"#);
+    let tiny_raw = temp_file("cli_tiny.raw", "ab");
     let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/test-input/cli_out.png");
     let out = out.to_str().unwrap();
     let lkg = format!("lkg:{}", calibration.display());
@@ -187,7 +289,27 @@ fn cli_reports_bad_input_without_panicking() {
             ],
             "views",
         ),
-        (vec!["mesh", "--frames", "0"], "at least 1"),
+        (vec!["mesh", "--frames", "0"], "1..=100000"),
+        (vec!["volume", "--frames", "4294967295"], "1..=100000"),
+        (vec!["bench", "--frames", "0"], "1..=100000"),
+        (
+            vec!["mask", "--size", "100000x100000", "--out", out],
+            "more than 268435456",
+        ),
+        (vec!["volume", "--builtin-size", "2000"], "voxels"),
+        (
+            vec![
+                "volume",
+                tiny_raw.to_str().unwrap(),
+                "--raw-dims",
+                "2,1,1",
+                "--raw-type",
+                "u8",
+                "--raw-header",
+                "18446744073709551615",
+            ],
+            "overflow",
+        ),
         (vec!["volume", "missing.nrrd"], "missing.nrrd"),
         (vec!["points", "missing.ply"], "missing.ply"),
         (vec!["points", bad_ply.to_str().unwrap()], "truncated"),
@@ -284,7 +406,7 @@ fn bad_point_clouds_and_splat_settings_are_errors() {
     let bad = temp_file("bad_points.obj", "v 0 0 0\nv 1 nan_x 0\n");
     let err = PointCloud::load(&bad).unwrap_err().to_string();
     assert!(err.contains("line 2") && err.contains("nan_x"), "{err}");
-    let ctx = autostereo::gpu::GpuContext::new(&Default::default()).unwrap();
+    let ctx = common::gpu();
     let options = SplatOptions {
         depth: SplatDepth::Exact,
         epsilon: f32::NAN,

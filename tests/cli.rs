@@ -45,28 +45,47 @@ fn mesh_json_reports_the_contract_fields_and_compares_with_npass() {
     assert_eq!((image.width(), image.height()), (96, 64));
 }
 
+/// Every method and visibility mode runs through the CLI, reports what it ran, and (on this
+/// K = 1 display, where even the paper's one depth per pixel is exact) matches N-pass; the
+/// single view differs from it (parallax), which shows `--compare` compares.
 #[test]
-fn every_method_and_visibility_runs() {
-    for args in [
-        vec!["--method", "n-pass"],
-        vec!["--method", "single-view"],
-        vec!["--visibility", "exact"],
-        vec!["--visibility", "atomic"],
-        vec!["--visibility", "compute"],
-        vec!["--visibility", "fast"],
-        vec!["--bounds", "paper"],
+fn every_method_and_visibility_runs_and_matches_npass() {
+    for (args, method, visibility) in [
+        (vec!["--method", "n-pass"], "n-pass", None),
+        (vec!["--visibility", "exact"], "single-pass", Some("exact")),
+        (
+            vec!["--visibility", "atomic"],
+            "single-pass",
+            Some("atomic"),
+        ),
+        (
+            vec!["--visibility", "compute"],
+            "single-pass",
+            Some("compute"),
+        ),
+        (vec!["--visibility", "fast"], "single-pass", Some("fast")),
+        (vec!["--bounds", "paper"], "single-pass", Some("compute")),
+        (vec!["--method", "single-view"], "single-view", None),
     ] {
         let mut all = vec![
             "mesh",
             "--size",
             "48x40",
             "--json",
+            "--compare",
             "--display",
             "lenticular:4",
         ];
-        all.extend(args);
+        all.extend(&args);
         let json: serde_json::Value = serde_json::from_str(run(&all).trim()).unwrap();
-        assert_eq!(json["views_per_pixel"], 1);
+        assert_eq!(json["method"], method, "{args:?}: {json}");
+        assert_eq!(json["visibility"].as_str(), visibility, "{args:?}: {json}");
+        let off = json["frac_off_2"].as_f64().unwrap();
+        if method == "single-view" {
+            assert!(off > 0.001, "{args:?}: single view equals N-pass? {json}");
+        } else {
+            assert!(off <= 1e-4, "{args:?}: {json}");
+        }
     }
 }
 
@@ -222,11 +241,8 @@ fn points_json_reports_preprocessing_memory_and_compares_with_npass() {
     }
 }
 
-/// The report is regenerated from saved results: every section and every renderer target.
-#[test]
-fn bench_report_regenerates_from_saved_results() {
-    let dir = out_path("bench_report");
-    let json = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("docs/bench_quick.json");
+/// `bench --report dir --from-json json`; the report's text.
+fn report_from(dir: &std::path::Path, json: &std::path::Path) -> String {
     run(&[
         "bench",
         "--report",
@@ -234,7 +250,15 @@ fn bench_report_regenerates_from_saved_results() {
         "--from-json",
         json.to_str().unwrap(),
     ]);
-    let md = std::fs::read_to_string(dir.join("BENCHMARKS.md")).unwrap();
+    std::fs::read_to_string(dir.join("BENCHMARKS.md")).unwrap()
+}
+
+/// The report is regenerated from saved results: every section and every renderer target.
+#[test]
+fn bench_report_regenerates_from_saved_results() {
+    let dir = out_path("bench_report");
+    let json = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("docs/bench_quick.json");
+    let md = report_from(&dir, &json);
     for section in [
         "## The paper's charts",
         "## Time against the number of views",
@@ -266,4 +290,47 @@ fn bench_report_regenerates_from_saved_results() {
         (out.status.success(), ())
     };
     assert!(!ok, "a file that is not bench output must be an error");
+}
+
+/// The targets table computes its ratios and verdicts from the rows: saved results edited so
+/// that points at N = 8 are exactly 2× (target 3×: missed) and meshes 10× (target 2×: met).
+#[test]
+fn bench_report_targets_follow_the_measured_rows() {
+    let saved = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("docs/bench_quick.json");
+    let mut json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(saved).unwrap()).unwrap();
+    let mut edited = 0;
+    for row in json["rows"].as_array_mut().unwrap() {
+        let n_pass_ms = match row["primitive"].as_str().unwrap() {
+            "points" => 200.0,
+            "mesh" => 1000.0,
+            _ => continue,
+        };
+        if row["display"] != "hubner8" {
+            continue;
+        }
+        let ms = match row["kind"].as_str().unwrap() {
+            "single-pass" => 100.0,
+            "n-pass" => n_pass_ms,
+            _ => continue,
+        };
+        row["ms"] = ms.into();
+        edited += 1;
+    }
+    assert!(edited >= 4, "the saved results lack the N = 8 rows");
+    let dir = out_path("bench_report_edited");
+    std::fs::create_dir_all(&dir).unwrap();
+    let edited_json = dir.join("edited.json");
+    std::fs::write(&edited_json, json.to_string()).unwrap();
+    let md = report_from(&dir, &edited_json);
+    let line = |start: &str, target: &str| {
+        md.lines()
+            .find(|l| l.starts_with(start) && l.contains(target))
+            .unwrap_or_else(|| panic!("no {start} row for {target}"))
+            .to_string()
+    };
+    let points = line("| points |", "N-pass / SP ≥ 3 at N = 8");
+    assert!(points.ends_with("| 2.00× | **missed** |"), "{points}");
+    let mesh = line("| mesh |", "N-pass / SP ≥ 2 at N = 8");
+    assert!(mesh.ends_with("| 10.00× | met |"), "{mesh}");
 }

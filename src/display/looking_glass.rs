@@ -124,7 +124,7 @@ impl Calibration {
         if self.inv_view {
             f = 1.0 - f;
         }
-        ((f * views as f64).floor() as u32).min(views - 1)
+        ((f * views as f64).floor() as u32).min(views.saturating_sub(1))
     }
 
     pub(crate) fn slanted(&self) -> SlantedEquivalent {

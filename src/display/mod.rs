@@ -130,24 +130,21 @@ impl Display {
 
     fn validate(&self) -> Result<()> {
         check_views(self.views())?;
-        if let DisplayKind::Slanted {
-            pitch,
-            slant,
-            phase,
-            ..
-        } = self.kind
-        {
-            if !(pitch.is_finite() && pitch > 0.0) {
-                return Err(Error::invalid(
-                    "pitch",
-                    format!("{pitch}: must be a positive number of subpixels"),
-                ));
+        match &self.kind {
+            DisplayKind::Slanted {
+                pitch,
+                slant,
+                phase,
+                ..
+            } => check_slanted(*pitch, *slant, *phase),
+            DisplayKind::LookingGlass { calibration, .. } => {
+                // Derived from the calibration: finite inputs can still give an unusable lens.
+                let s = calibration.slanted();
+                check_slanted(s.pitch, s.slant, s.phase)
+                    .map_err(|e| Error::invalid("Looking Glass calibration", e.to_string()))
             }
-            if !slant.is_finite() || !phase.is_finite() {
-                return Err(Error::invalid("slant/phase", "must be finite numbers"));
-            }
+            DisplayKind::Lenticular { .. } | DisplayKind::Hubner8 => Ok(()),
         }
-        Ok(())
     }
 
     /// Compile to the mask evaluated on CPU and GPU.
@@ -179,6 +176,35 @@ impl Display {
         })
     }
 }
+
+/// Largest |slant / pitch| and |phase / pitch| (in lens periods) the mask resolves: its 0.32
+/// fixed-point phase takes the fraction of these ratios, which an f64 still holds to 2⁻²⁰ here.
+const MAX_PERIODS: f64 = (1u64 << 32) as f64;
+
+/// A slanted lens the mask can evaluate (subnormal, huge or non-finite values would make the
+/// fixed-point phase meaningless without any error): pitch ≥ [`MIN_PITCH`] subpixels, the slant
+/// and the phase finite and within [`MAX_PERIODS`] lens pitches.
+fn check_slanted(pitch: f64, slant: f64, phase: f64) -> Result<()> {
+    if !(pitch.is_finite() && pitch >= MIN_PITCH) {
+        return Err(Error::invalid(
+            "pitch",
+            format!("{pitch}: must be a finite number of subpixels, at least {MIN_PITCH}"),
+        ));
+    }
+    for (name, v) in [("slant", slant), ("phase", phase)] {
+        if !(v.is_finite() && (v / pitch).abs() <= MAX_PERIODS) {
+            return Err(Error::invalid(
+                name,
+                format!("{v}: must be finite and at most {MAX_PERIODS} lens pitches ({pitch} subpixels)"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Smallest lens pitch in subpixels: the step per subpixel, 1 / pitch lens periods, stays within
+/// [`MAX_PERIODS`].
+pub const MIN_PITCH: f64 = 1.0 / MAX_PERIODS;
 
 /// Check a view count: 1 ..= [`MAX_VIEWS`].
 pub fn check_views(n: u32) -> Result<()> {

@@ -3,7 +3,7 @@
 //! Shading is `wgsl/shared/shading.wgsl`, the same the single-pass path uses.
 
 use super::pipeline::{begin_pass, cleared};
-use super::renderer::Renderer;
+use super::renderer::{check_target, Renderer};
 use super::texture::{cached_texture_2d, Texture2d};
 use super::view_layers::{nearest_depth_test, DEPTH_FORMAT};
 use super::{Compositor, ViewLayers};
@@ -239,6 +239,8 @@ impl Renderer<MeshBuffers> for MeshBaseline {
         frame: &Frame,
         target: &SpatialTarget,
     ) -> Result<()> {
+        frame.validate()?;
+        check_target(frame, target)?;
         match self.method {
             MeshBaselineMethod::NPass => {
                 self.encode_npass(device, queue, encoder, mesh, frame, target)

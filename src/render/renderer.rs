@@ -2,7 +2,7 @@
 //! per primitive (meshes: `Renderer<MeshBuffers>`, volumes: `Renderer<VolumeScene>`) and per
 //! method (single pass, N-pass, single view), all behind one camera + display + output.
 
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::frame::Frame;
 use crate::target::SpatialTarget;
 
@@ -35,4 +35,19 @@ pub trait Renderer<S: ?Sized> {
         queue.submit([encoder.finish()]);
         crate::readback::wait_idle(device)
     }
+}
+
+/// The target must have the frame's size.
+pub(crate) fn check_target(frame: &Frame, target: &SpatialTarget) -> Result<()> {
+    if target.size() != frame.size {
+        return Err(Error::invalid(
+            "target",
+            format!(
+                "size {:?} differs from the frame's {:?}",
+                target.size(),
+                frame.size
+            ),
+        ));
+    }
+    Ok(())
 }

@@ -6,7 +6,7 @@ use std::collections::HashMap;
 
 use glam::{Mat4, Vec3};
 
-use super::renderer::Renderer;
+use super::renderer::{check_target, Renderer};
 use super::specialize::Specialization;
 use super::volume_resources::{VolumeParams, VolumeResources};
 use super::{Compositor, ViewLayers};
@@ -58,6 +58,8 @@ impl VolumeScene {
         step: Option<f32>,
         model: Mat4,
     ) -> Result<Self> {
+        volume.validate()?;
+        transfer.validate()?;
         let voxel = volume.min_spacing();
         let step = step.unwrap_or(0.5 * voxel);
         let diagonal = volume.extent().length();
@@ -230,19 +232,4 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         }
         Ok(())
     }
-}
-
-/// The target must have the frame's size.
-pub(crate) fn check_target(frame: &Frame, target: &SpatialTarget) -> Result<()> {
-    if target.size() != frame.size {
-        return Err(Error::invalid(
-            "target",
-            format!(
-                "size {:?} differs from the frame's {:?}",
-                target.size(),
-                frame.size
-            ),
-        ));
-    }
-    Ok(())
 }

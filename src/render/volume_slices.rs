@@ -9,10 +9,11 @@ use bytemuck::{Pod, Zeroable};
 use glam::{Vec3, Vec4Swizzles};
 
 use super::pipeline::{begin_pass, cleared, draw_fullscreen, fullscreen_pipeline};
+use super::renderer::check_target;
 use super::renderer::Renderer;
 use super::specialize::Specialization;
 use super::texture::{cached_texture_2d, Texture2d};
-use super::volume_raycast::{check_target, VolumeScene};
+use super::volume_raycast::VolumeScene;
 use super::volume_resources::VolumeResources;
 use crate::error::{Error, Result};
 use crate::frame::Frame;

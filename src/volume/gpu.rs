@@ -23,6 +23,7 @@ impl VolumeTexture {
     /// Compute gradients and upload; a dimension beyond `max_texture_dimension_3d` is an error
     /// that suggests downsampling.
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, volume: &Volume) -> Result<Self> {
+        volume.validate()?;
         let limit = device.limits().max_texture_dimension_3d;
         if let Some(&d) = volume.dims.iter().find(|&&d| d > limit) {
             return Err(Error::LimitExceeded {

@@ -64,25 +64,33 @@ fn check_spacing(spacing: [f32; 3]) -> Result<()> {
 impl Volume {
     /// A volume from scalars already in 0..1 (checked: sizes, finite values, spacing).
     pub fn new(dims: [u32; 3], spacing: [f32; 3], data: Vec<f32>) -> Result<Self> {
-        let count = check_dims(dims.map(u64::from))?;
-        check_spacing(spacing)?;
-        if data.len() as u64 != count {
+        let volume = Self {
+            dims,
+            spacing,
+            data,
+        };
+        volume.validate()?;
+        Ok(volume)
+    }
+
+    /// Check what [`Volume::new`] checks, for a volume whose public fields were set or changed
+    /// directly: renderers call it before using the data.
+    pub fn validate(&self) -> Result<()> {
+        let count = check_dims(self.dims.map(u64::from))?;
+        check_spacing(self.spacing)?;
+        if self.data.len() as u64 != count {
             return Err(Error::invalid(
                 "volume data",
-                format!("{} values for dimensions {dims:?}", data.len()),
+                format!("{} values for dimensions {:?}", self.data.len(), self.dims),
             ));
         }
-        if let Some(i) = data.iter().position(|v| !v.is_finite()) {
+        if let Some(i) = self.data.iter().position(|v| !v.is_finite()) {
             return Err(Error::invalid(
                 "volume data",
                 format!("voxel {i} is not finite"),
             ));
         }
-        Ok(Self {
-            dims,
-            spacing,
-            data,
-        })
+        Ok(())
     }
 
     /// A volume from raw samples of any range, mapped linearly from [min, max] to [0, 1]
@@ -146,23 +154,22 @@ impl Volume {
             return Err(Error::invalid("downsample factor", "must be at least 1"));
         }
         let dims = self.dims.map(|d| d.div_ceil(factor));
-        let mut data = Vec::with_capacity((dims[0] * dims[1] * dims[2]) as usize);
-        let f = factor as i64;
-        for z in 0..dims[2] as i64 {
-            for y in 0..dims[1] as i64 {
-                for x in 0..dims[0] as i64 {
+        let mut data = Vec::with_capacity(dims.iter().map(|&d| d as usize).product());
+        // The voxels of block b along an axis of n voxels: only those inside the volume, so the
+        // work is one visit per voxel whatever the factor.
+        let block = |b: u32, n: u32| {
+            let start = u64::from(b) * u64::from(factor);
+            start as i64..(start + u64::from(factor)).min(u64::from(n)) as i64
+        };
+        for z in 0..dims[2] {
+            for y in 0..dims[1] {
+                for x in 0..dims[0] {
                     let (mut sum, mut n) = (0.0, 0.0);
-                    for dz in 0..f {
-                        for dy in 0..f {
-                            for dx in 0..f {
-                                let (px, py, pz) = (x * f + dx, y * f + dy, z * f + dz);
-                                if px < self.dims[0] as i64
-                                    && py < self.dims[1] as i64
-                                    && pz < self.dims[2] as i64
-                                {
-                                    sum += self.at(px, py, pz);
-                                    n += 1.0;
-                                }
+                    for pz in block(z, self.dims[2]) {
+                        for py in block(y, self.dims[1]) {
+                            for px in block(x, self.dims[0]) {
+                                sum += self.at(px, py, pz);
+                                n += 1.0;
                             }
                         }
                     }
@@ -176,5 +183,28 @@ impl Volume {
     /// Smallest voxel spacing: the natural sampling distance.
     pub fn min_spacing(&self) -> f32 {
         self.spacing.iter().copied().fold(f32::INFINITY, f32::min)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn downsample_averages_blocks_and_any_factor_is_cheap() {
+        let data: Vec<f32> = (0..30).map(|i| i as f32 / 29.0).collect();
+        let v = Volume::new([5, 3, 2], [1.0, 1.0, 2.0], data).unwrap();
+        let d = v.downsample(2).unwrap();
+        assert_eq!(d.dims, [3, 2, 1]);
+        assert_eq!(d.spacing, [2.0, 2.0, 4.0]);
+        // Block (2, 1, 0) holds only voxel (4, 2, z) for z = 0, 1: indices 14 and 29.
+        assert!((d.data[5] - (14.0 + 29.0) / 2.0 / 29.0).abs() < 1e-6);
+        // A factor beyond every dimension (even u32::MAX) is one block: the mean of all.
+        for factor in [5, u32::MAX] {
+            let one = v.downsample(factor).unwrap();
+            assert_eq!(one.dims, [1, 1, 1]);
+            assert!((one.data[0] - 0.5).abs() < 1e-6);
+        }
+        assert!(v.downsample(0).is_err());
     }
 }

@@ -1,6 +1,6 @@
 //! Built-in data sets generated in code: a CT-like head phantom and the Marschner–Lobb signal.
 
-use super::Volume;
+use super::{check_dims, Volume};
 use crate::error::Result;
 
 /// A CT-like head: skin, skull, brain with ventricles, a few dense lesions, on a `n³` grid with
@@ -9,7 +9,8 @@ pub fn ct_head(n: u32) -> Result<Volume> {
     let n = n.max(4);
     let nz = ((n as f32) / 1.25).round().max(4.0) as u32;
     let spacing = [1.0, 1.0, 1.25];
-    let mut data = Vec::with_capacity((n * n * nz) as usize);
+    let count = check_dims([n, n, nz].map(u64::from))?;
+    let mut data = Vec::with_capacity(count as usize);
     // Coordinates in [-1, 1] over the physical extent.
     for z in 0..nz {
         for y in 0..n {
@@ -69,7 +70,8 @@ pub fn marschner_lobb(n: u32) -> Result<Volume> {
     let n = n.max(2);
     let (fm, alpha) = (6.0f32, 0.25f32);
     let pi = std::f32::consts::PI;
-    let mut data = Vec::with_capacity((n * n * n) as usize);
+    let count = check_dims([n; 3].map(u64::from))?;
+    let mut data = Vec::with_capacity(count as usize);
     for z in 0..n {
         for y in 0..n {
             for x in 0..n {
@@ -100,5 +102,8 @@ mod tests {
             assert!(lo >= 0.0 && hi <= 1.0 && hi - lo > 0.5, "{lo}..{hi}");
         }
         assert_eq!(ct_head(32).unwrap().spacing, [1.0, 1.0, 1.25]);
+        // Too many voxels (or a u32 overflow of n³) is an error before anything is allocated.
+        assert!(ct_head(2000).is_err());
+        assert!(marschner_lobb(u32::MAX).is_err());
     }
 }

@@ -19,14 +19,22 @@ pub const PRESETS: &[&str] = &["ct-skin", "ct-bone", "mri", "ml"];
 impl TransferFunction {
     /// Check and build from control points.
     pub fn new(mut points: Vec<(f32, [f32; 4])>) -> Result<Self> {
-        if points.is_empty() {
+        points.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let tf = Self { points };
+        tf.validate()?;
+        Ok(tf)
+    }
+
+    /// Check what [`TransferFunction::new`] checks (at least one point, scalars ascending, all
+    /// values in 0..1), for one whose `points` were set directly.
+    pub fn validate(&self) -> Result<()> {
+        if self.points.is_empty() {
             return Err(Error::invalid(
                 "transfer function",
                 "needs at least one control point",
             ));
         }
-        points.sort_by(|a, b| a.0.total_cmp(&b.0));
-        for (s, c) in &points {
+        for (s, c) in &self.points {
             if !(0.0..=1.0).contains(s) || c.iter().any(|v| !(0.0..=1.0).contains(v)) {
                 return Err(Error::invalid(
                     "transfer function",
@@ -34,7 +42,13 @@ impl TransferFunction {
                 ));
             }
         }
-        Ok(Self { points })
+        if self.points.windows(2).any(|w| w[1].0 < w[0].0) {
+            return Err(Error::invalid(
+                "transfer function",
+                "control point scalars must be in ascending order",
+            ));
+        }
+        Ok(())
     }
 
     /// A named preset (see [`PRESETS`]).
@@ -129,11 +143,14 @@ impl TransferFunction {
         Self::new(points)
     }
 
-    /// RGBA at scalar `s` (clamped at the ends).
+    /// RGBA at scalar `s` (clamped at the ends; transparent black without control points).
     pub fn eval(&self, s: f32) -> [f32; 4] {
         let pts = &self.points;
-        if s <= pts[0].0 {
-            return pts[0].1;
+        let Some(&(first, colour)) = pts.first() else {
+            return [0.0; 4];
+        };
+        if s <= first {
+            return colour;
         }
         for w in pts.windows(2) {
             let ((s0, c0), (s1, c1)) = (w[0], w[1]);
@@ -163,6 +180,7 @@ pub struct PreintegrationTable {
 impl PreintegrationTable {
     /// Build the table for `tf` at sampling distance `step` (voxels).
     pub fn new(tf: &TransferFunction, step: f32) -> Result<Self> {
+        tf.validate()?;
         if !(step.is_finite() && step > 0.0) {
             return Err(Error::invalid(
                 "sampling step",

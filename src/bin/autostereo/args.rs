@@ -24,6 +24,14 @@ pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
     Ok(size)
 }
 
+/// Most timed frames a command accepts: enough for any median, never an overflow.
+pub const MAX_FRAMES: u32 = 100_000;
+
+/// `--frames`: 1 ..= [`MAX_FRAMES`].
+pub fn frames_parser() -> clap::builder::RangedI64ValueParser<u32> {
+    clap::value_parser!(u32).range(1..=i64::from(MAX_FRAMES))
+}
+
 /// `A,B` → [a, b].
 pub fn parse_pair(s: &str) -> Result<[u32; 2], String> {
     let (a, b) = s
@@ -175,7 +183,7 @@ pub struct RenderArgs {
     #[arg(long)]
     pub compare: bool,
     /// Timed frames (after two warm-up frames); the median is reported.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, value_parser = frames_parser())]
     pub frames: u32,
     /// Output PNG of the spatial image.
     #[arg(long)]
@@ -190,9 +198,6 @@ impl RenderArgs {
     pub fn check(&self) -> Result<()> {
         if let Some(out) = &self.out {
             check_output(out)?;
-        }
-        if self.frames == 0 {
-            bail!("--frames must be at least 1");
         }
         Ok(())
     }

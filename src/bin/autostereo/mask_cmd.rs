@@ -31,6 +31,7 @@ pub fn run(args: MaskArgs) -> Result<()> {
         let ctx = gpu()?;
         MaskImageRenderer::new(&ctx.device)?.render(&ctx.device, &ctx.queue, &display, args.size)?
     } else {
+        RgbImage::check_size(w, h)?;
         let mask = display.mask();
         let mut image = RgbImage::new(w, h);
         for y in 0..h {

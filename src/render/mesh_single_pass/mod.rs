@@ -22,7 +22,7 @@ mod scratch;
 use std::collections::HashMap;
 
 use super::pipeline::{begin_pass, cleared, draw_fullscreen};
-use super::renderer::Renderer;
+use super::renderer::{check_target, Renderer};
 use super::specialize::Specialization;
 use crate::error::{Error, Result};
 use crate::frame::{Frame, FrameBinding};
@@ -155,16 +155,7 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
         target: &SpatialTarget,
     ) -> Result<()> {
         frame.validate()?;
-        if target.size() != frame.size {
-            return Err(Error::invalid(
-                "target",
-                format!(
-                    "size {:?} differs from the frame's {:?}",
-                    target.size(),
-                    frame.size
-                ),
-            ));
-        }
+        check_target(frame, target)?;
         let spec = Specialization::of(frame);
         if !self.pipelines.contains_key(&spec) {
             let built =

@@ -185,7 +185,7 @@ pub fn load_nrrd(path: &Path) -> Result<Volume> {
         let mut out = Vec::new();
         // Never inflate past what the header announces (+1 byte to detect excess).
         flate2::read::GzDecoder::new(&payload[..])
-            .take(expected + header.byte_skip + 1)
+            .take(expected.saturating_add(header.byte_skip).saturating_add(1))
             .read_to_end(&mut out)
             .map_err(|e| format_error(path, format!("gzip data: {e}")))?;
         out

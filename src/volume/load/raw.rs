@@ -23,7 +23,17 @@ pub struct RawSpec {
 
 /// Load a raw volume; the file must hold exactly `header_bytes` + the samples.
 pub fn load_raw(path: &Path, spec: &RawSpec) -> Result<Volume> {
-    let needed = data_bytes(spec.dims.map(u64::from), spec.kind)? + spec.header_bytes;
+    let needed = data_bytes(spec.dims.map(u64::from), spec.kind)?
+        .checked_add(spec.header_bytes)
+        .ok_or_else(|| {
+            format_error(
+                path,
+                format!(
+                    "a {}-byte header plus the samples overflow a file size",
+                    spec.header_bytes
+                ),
+            )
+        })?;
     let actual = std::fs::metadata(path)
         .map_err(|e| io_error(path, e))?
         .len();

@@ -34,7 +34,7 @@ pub struct BenchArgs {
     #[arg(long, requires = "report")]
     from_json: Option<PathBuf>,
     /// Timed frames per measurement (after 2 warm-up frames).
-    #[arg(long, default_value_t = 20)]
+    #[arg(long, default_value_t = 20, value_parser = crate::args::frames_parser())]
     frames: u32,
 }
 
