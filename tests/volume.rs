@@ -90,6 +90,64 @@ fn single_pass_matches_npass_rotated_with_focal_plane_in_front_inside_and_behind
     }
 }
 
+/// Empty-space skipping is exact: every method gives the same image bit for bit with and
+/// without it: rotated, axis-aligned (rays along brick faces), focal plane in front and behind,
+/// on data with much empty space, little, and a small blob in a large empty box.
+#[test]
+fn empty_space_skipping_changes_no_pixel() {
+    let head = phantom::ct_head(40).unwrap();
+    let ml = phantom::marschner_lobb(32).unwrap();
+    let dims = [48u32, 40, 36];
+    let blob_data = (0..dims[0] * dims[1] * dims[2])
+        .map(|i| {
+            let p = [
+                i % dims[0],
+                (i / dims[0]) % dims[1],
+                i / (dims[0] * dims[1]),
+            ];
+            let r2: f32 = [(p[0], 30.0), (p[1], 14.0), (p[2], 20.0)]
+                .iter()
+                .map(|&(v, c)| (v as f32 - c).powi(2))
+                .sum();
+            (1.0 - r2 / 40.0).max(0.0)
+        })
+        .collect();
+    let blob = Volume::new(dims, [1.0; 3], blob_data).unwrap();
+    let rotated = Mat4::from_rotation_y(0.6) * Mat4::from_rotation_x(0.35);
+    for (name, volume, tf, rotate) in [
+        ("head", &head, "ct-skin", rotated),
+        ("head axis-aligned", &head, "ct-skin", Mat4::IDENTITY),
+        ("ml", &ml, "ml", rotated),
+        ("blob", &blob, "ct-bone", rotated),
+    ] {
+        let mut scene = scene(volume, tf, rotate);
+        let share = scene.bricks().transparent_share(&scene.transfer);
+        eprintln!("{name}: {:.0} % of the bricks transparent", 100.0 * share);
+        for (spec, scale) in [("hubner8", 0.75), ("lenticular:5", 1.3)] {
+            let frame = frame(volume, spec, 0.06, scale);
+            for method in [
+                VolumeMethod::SinglePass,
+                VolumeMethod::NPass,
+                VolumeMethod::SingleView,
+            ] {
+                scene.skip_empty = true;
+                let skipped = render(&scene, &frame, method);
+                scene.skip_empty = false;
+                let marched = render(&scene, &frame, method);
+                assert!(lit(&marched) > 0, "{name}: nothing visible");
+                if skipped != marched {
+                    let path =
+                        common::save_diff(&format!("volume-skip-{name}"), &skipped, &marched);
+                    panic!(
+                        "{name} {spec} {method:?}: skipping changed pixels ({})",
+                        path.display()
+                    );
+                }
+            }
+        }
+    }
+}
+
 #[test]
 fn zero_separation_equals_single_view() {
     let head = phantom::ct_head(32).unwrap();

@@ -6,11 +6,43 @@
 // Samples sit on the eye-depth planes d = k·Δ shared by every view (the view-aligned slices of
 // the paper), so a single-pass ray and the N-pass ray of the same view and pixel take the same
 // samples: the two methods differ only in which views they evaluate per pixel.
+//
+// Empty-space skipping (exact): after a segment that added nothing, the ray looks up its
+// brick; when every segment inside the brick is transparent under the transfer function
+// (src/volume/bricks.rs), it jumps to its last sample plane inside the brick. The skipped
+// segments would each have added exactly zero, so the image is unchanged bit for bit.
 #import shared/frame.wgsl
 #import shared/multiview.wgsl
 #import shared/volume.wgsl
 
+@group(1) @binding(4) var transparent_bricks: texture_3d<u32>;
 @group(2) @binding(0) var output: texture_storage_2d<rgba8unorm, write>;
+
+// Brick edge in voxels; keep in sync with `BRICK` in src/volume/bricks.rs.
+const BRICK: f32 = 8.0;
+
+// Texture-space position of sample plane k (eye depth k·Δ) on the ray o + u·d.
+fn plane_position(o: vec3<f32>, d: vec3<f32>, k: f32) -> vec3<f32> {
+    let depth = k * params.step;
+    return o + (depth / frame.camera.focal_distance) * d;
+}
+
+// For the ray o + u·d at texture position p: the eye depth where it leaves p's brick (x) and
+// whether that brick is transparent (y = 1). A NaN depth (a ray along a brick face) fails the
+// caller's comparisons, so it never skips.
+fn brick_exit(o: vec3<f32>, d: vec3<f32>, p: vec3<f32>) -> vec2<f32> {
+    let voxels = vec3<f32>(textureDimensions(volume));
+    let grid = textureDimensions(transparent_bricks);
+    let brick = min(vec3<u32>(max(floor(p * voxels / BRICK), vec3<f32>(0.0))), grid - 1u);
+    let lo = vec3<f32>(brick) * BRICK / voxels;
+    let hi = (vec3<f32>(brick) + 1.0) * BRICK / voxels;
+    let inv = 1.0 / d;
+    let a = (lo - o) * inv;
+    let b = (hi - o) * inv;
+    let u_out = min(min(max(a.x, b.x), max(a.y, b.y)), max(a.z, b.z));
+    let transparent = textureLoad(transparent_bricks, brick, 0).x != 0u;
+    return vec2<f32>(u_out * frame.camera.focal_distance, select(0.0, 1.0, transparent));
+}
 
 // Premultiplied RGBA along the ray origin + t·dir (eye depth t·fd).
 fn march(origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
@@ -33,15 +65,39 @@ fn march(origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
     let count = min(u32(max(k1 - k0, 0.0)), params.max_samples);
     var front = textureSampleLevel(volume, linear_clamp, o + (k0 * params.step / fd) * d, 0.0);
     var acc = vec4<f32>(0.0);
-    for (var i = 1u; i <= count; i++) {
+    // Sample i sits on plane k0 + i; the front sample is i − 1. Bricks are looked up only
+    // after a transparent segment, and once per brick that turned out not to be transparent.
+    var look_up = params.skip_empty != 0u;
+    var next_look_up = 0u;
+    var i = 1u;
+    loop {
+        if (i > count) {
+            break;
+        }
+        if (look_up && i - 1u >= next_look_up) {
+            let exit = brick_exit(o, d, plane_position(o, d, k0 + f32(i - 1u)));
+            // Last plane inside the brick, relative to k0.
+            let last = floor(exit.x / params.step) - k0;
+            if (exit.y != 0.0 && last > f32(i - 1u)) {
+                let j = u32(min(last, f32(count)));
+                front = textureSampleLevel(volume, linear_clamp, plane_position(o, d, k0 + f32(j)), 0.0);
+                i = j + 1u;
+                look_up = false;
+                continue;
+            }
+            // Not transparent (or no whole segment left in it): no look-up until past it.
+            next_look_up = select(i, u32(max(last, 0.0)) + 1u, last >= f32(i - 1u));
+        }
         let depth = (k0 + f32(i)) * params.step;
-        let back = textureSampleLevel(volume, linear_clamp, o + (depth / fd) * d, 0.0);
+        let back = textureSampleLevel(volume, linear_clamp, plane_position(o, d, k0 + f32(i)), 0.0);
         let seg = shaded_segment(front, back, origin + (depth / fd) * dir, origin);
         acc = vec4<f32>(acc.rgb + (1.0 - acc.a) * seg.rgb, acc.a + (1.0 - acc.a) * seg.a);
         if (acc.a >= OPAQUE) {
             break;
         }
         front = back;
+        look_up = params.skip_empty != 0u && seg.a <= 0.0;
+        i++;
     }
     return acc;
 }

@@ -1,6 +1,7 @@
 //! What every volume renderer binds at group 1: the volume texture, a linear sampler, the
-//! pre-integration table (cached per transfer function and sampling distance) and the
-//! per-dispatch [`VolumeParams`] (dynamic offsets).
+//! pre-integration table (cached per transfer function and sampling distance), the per-dispatch
+//! [`VolumeParams`] (dynamic offsets) and the transparent-brick flags (cached per volume and
+//! transfer function).
 
 use bytemuck::{Pod, Zeroable};
 use glam::{Mat3, Mat4, Vec3};
@@ -9,7 +10,9 @@ use super::pass_params::PassParams;
 use super::volume_raycast::VolumeScene;
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
-use crate::volume::{PreintegrationTable, PreintegrationTexture, TransferFunction};
+use crate::volume::{
+    PreintegrationTable, PreintegrationTexture, TransferFunction, TransparentBrickTexture,
+};
 
 /// Per-dispatch constants. Keep in sync with `struct VolumeParams` in `wgsl/shared/volume.wgsl`.
 #[repr(C)]
@@ -22,7 +25,8 @@ pub struct VolumeParams {
     use_mask: u32,
     max_samples: u32,
     shade: u32,
-    _pad: [u32; 3],
+    skip_empty: u32,
+    _pad: [u32; 2],
 }
 const _: () = assert!(std::mem::size_of::<VolumeParams>() == 160);
 
@@ -33,6 +37,8 @@ pub(crate) struct VolumeResources {
     sampler: wgpu::Sampler,
     pub params: PassParams<VolumeParams>,
     table: Option<(TransferFunction, f32, PreintegrationTexture)>,
+    /// Transparent-brick flags for (scene id, transfer function).
+    bricks: Option<(u64, TransferFunction, TransparentBrickTexture)>,
 }
 
 impl VolumeResources {
@@ -59,6 +65,14 @@ impl VolumeResources {
                 ),
                 entry(2, texture(wgpu::TextureViewDimension::D2)),
                 PassParams::<VolumeParams>::layout_entry(3, stages),
+                entry(
+                    4,
+                    wgpu::BindingType::Texture {
+                        sample_type: wgpu::TextureSampleType::Uint,
+                        view_dimension: wgpu::TextureViewDimension::D3,
+                        multisampled: false,
+                    },
+                ),
             ],
         });
         let frame_layout = frame_bind_group_layout(device);
@@ -74,6 +88,7 @@ impl VolumeResources {
             }),
             params: PassParams::new(device, "volume params"),
             table: None,
+            bricks: None,
         }
     }
 
@@ -115,7 +130,8 @@ impl VolumeResources {
             use_mask: use_mask as u32,
             max_samples: (scene.extent.length() / scene.step).ceil() as u32 + 2,
             shade: scene.shade as u32,
-            _pad: [0; 3],
+            skip_empty: scene.skip_empty as u32,
+            _pad: [0; 2],
         }
     }
 
@@ -142,7 +158,18 @@ impl VolumeResources {
             let texture = PreintegrationTexture::new(device, queue, &table);
             self.table = Some((scene.transfer.clone(), step_voxels, texture));
         }
+        let fresh = self
+            .bricks
+            .as_ref()
+            .is_some_and(|(id, tf, _)| *id == scene.id() && *tf == scene.transfer);
+        if !fresh {
+            let bricks = scene.bricks();
+            let flags = bricks.transparent(&scene.transfer);
+            let texture = TransparentBrickTexture::new(device, queue, bricks.grid, &flags);
+            self.bricks = Some((scene.id(), scene.transfer.clone(), texture));
+        }
         let table = &self.table.as_ref().expect("built above").2.view;
+        let bricks = &self.bricks.as_ref().expect("built above").2.view;
         Ok(device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("volume"),
             layout: &self.volume_layout,
@@ -162,6 +189,10 @@ impl VolumeResources {
                 wgpu::BindGroupEntry {
                     binding: 3,
                     resource: self.params.binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 4,
+                    resource: wgpu::BindingResource::TextureView(bricks),
                 },
             ],
         }))

@@ -99,3 +99,39 @@ impl PreintegrationTexture {
         Self { texture, view }
     }
 }
+
+/// Transparent-brick flags ([`super::BrickRanges::transparent`]) as an R8Uint 3D texture, one
+/// texel per brick.
+pub struct TransparentBrickTexture {
+    /// The texture.
+    pub texture: wgpu::Texture,
+    /// Its view.
+    pub view: wgpu::TextureView,
+}
+
+impl TransparentBrickTexture {
+    /// Upload `flags` (x fastest) of a `grid` of bricks.
+    pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, grid: [u32; 3], flags: &[u8]) -> Self {
+        let texture = device.create_texture_with_data(
+            queue,
+            &wgpu::TextureDescriptor {
+                label: Some("transparent bricks"),
+                size: wgpu::Extent3d {
+                    width: grid[0],
+                    height: grid[1],
+                    depth_or_array_layers: grid[2],
+                },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D3,
+                format: wgpu::TextureFormat::R8Uint,
+                usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+                view_formats: &[],
+            },
+            wgpu::util::TextureDataOrder::LayerMajor,
+            flags,
+        );
+        let view = texture.create_view(&Default::default());
+        Self { texture, view }
+    }
+}

@@ -1,13 +1,15 @@
 //! Scalar volumes: loading (raw, NRRD, VolPack .den), built-in data sets, gradients, transfer
 //! functions with pre-integration, and their GPU textures.
 
+pub mod bricks;
 mod gpu;
 mod gradient;
 pub mod load;
 pub mod phantom;
 pub mod transfer;
 
-pub use gpu::{PreintegrationTexture, VolumeTexture};
+pub use bricks::BrickRanges;
+pub use gpu::{PreintegrationTexture, TransparentBrickTexture, VolumeTexture};
 pub use transfer::{PreintegrationTable, TransferFunction};
 
 use glam::Vec3;
