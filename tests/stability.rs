@@ -28,7 +28,7 @@ const BACKGROUND: [f32; 4] = [0.2, 0.4, 0.6, 1.0];
 /// One primitive's scene, uploaded.
 enum Scene {
     Mesh(MeshBuffers),
-    Volume(VolumeScene),
+    Volume(Box<VolumeScene>),
     Points(SplatScene),
 }
 
@@ -96,9 +96,9 @@ fn volume(offset: Vec3, degenerate: bool) -> Primitive {
     Primitive {
         name: "volume",
         bounds: Bounds::of_points(corners).unwrap(),
-        scene: Scene::Volume(
+        scene: Scene::Volume(Box::new(
             VolumeScene::new(&ctx.device, &ctx.queue, &volume, tf, None, model).unwrap(),
-        ),
+        )),
     }
 }
 

@@ -277,7 +277,7 @@ mod tests {
             crate::camera::MultiViewCamera::framing(head.bounds(), 8, None, 0.6, 1.0).unwrap();
         let frame = Frame::new(camera, display, [48, 48]).unwrap();
         let target = SpatialTarget::new(&ctx.device, frame.size).unwrap();
-        let mut render = |scene: &VolumeScene| {
+        let render = |scene: &VolumeScene| {
             let mut renderer = VolumeRaycaster::new(&ctx.device, VolumeMethod::SinglePass).unwrap();
             renderer
                 .render(&ctx.device, &ctx.queue, scene, &frame, &target)

@@ -36,29 +36,16 @@ impl VolumeTexture {
             });
         }
         let texels: Vec<[f16; 4]> = volume.gradients().into_iter().map(half4).collect();
-        let [w, h, d] = volume.dims;
-        let texture = crate::gpu::checked(device, "uploading the volume", || {
-            device.create_texture_with_data(
+        let (texture, view) = crate::gpu::checked(device, "uploading the volume", || {
+            upload(
+                device,
                 queue,
-                &wgpu::TextureDescriptor {
-                    label: Some("volume"),
-                    size: wgpu::Extent3d {
-                        width: w,
-                        height: h,
-                        depth_or_array_layers: d,
-                    },
-                    mip_level_count: 1,
-                    sample_count: 1,
-                    dimension: wgpu::TextureDimension::D3,
-                    format: wgpu::TextureFormat::Rgba16Float,
-                    usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
-                    view_formats: &[],
-                },
-                wgpu::util::TextureDataOrder::LayerMajor,
+                "volume",
+                (wgpu::TextureDimension::D3, volume.dims),
+                wgpu::TextureFormat::Rgba16Float,
                 bytemuck::cast_slice(&texels),
             )
         })?;
-        let view = texture.create_view(&Default::default());
         Ok(Self { texture, view })
     }
 }
@@ -76,26 +63,14 @@ impl PreintegrationTexture {
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, table: &PreintegrationTable) -> Self {
         let texels: Vec<[f16; 4]> = table.rgba.iter().copied().map(half4).collect();
         let n = TABLE_SIZE as u32;
-        let texture = device.create_texture_with_data(
+        let (texture, view) = upload(
+            device,
             queue,
-            &wgpu::TextureDescriptor {
-                label: Some("pre-integration table"),
-                size: wgpu::Extent3d {
-                    width: n,
-                    height: n,
-                    depth_or_array_layers: 1,
-                },
-                mip_level_count: 1,
-                sample_count: 1,
-                dimension: wgpu::TextureDimension::D2,
-                format: wgpu::TextureFormat::Rgba16Float,
-                usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
-                view_formats: &[],
-            },
-            wgpu::util::TextureDataOrder::LayerMajor,
+            "pre-integration table",
+            (wgpu::TextureDimension::D2, [n, n, 1]),
+            wgpu::TextureFormat::Rgba16Float,
             bytemuck::cast_slice(&texels),
         );
-        let view = texture.create_view(&Default::default());
         Self { texture, view }
     }
 }
@@ -112,26 +87,41 @@ pub struct TransparentBrickTexture {
 impl TransparentBrickTexture {
     /// Upload `flags` (x fastest) of a `grid` of bricks.
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, grid: [u32; 3], flags: &[u8]) -> Self {
-        let texture = device.create_texture_with_data(
-            queue,
-            &wgpu::TextureDescriptor {
-                label: Some("transparent bricks"),
-                size: wgpu::Extent3d {
-                    width: grid[0],
-                    height: grid[1],
-                    depth_or_array_layers: grid[2],
-                },
-                mip_level_count: 1,
-                sample_count: 1,
-                dimension: wgpu::TextureDimension::D3,
-                format: wgpu::TextureFormat::R8Uint,
-                usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
-                view_formats: &[],
-            },
-            wgpu::util::TextureDataOrder::LayerMajor,
-            flags,
-        );
-        let view = texture.create_view(&Default::default());
+        let format = wgpu::TextureFormat::R8Uint;
+        let size = (wgpu::TextureDimension::D3, grid);
+        let (texture, view) = upload(device, queue, "transparent bricks", size, format, flags);
         Self { texture, view }
     }
+}
+
+/// A sampled texture of `dimension` and `size` holding `bytes` (layer-major).
+fn upload(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    label: &str,
+    (dimension, size): (wgpu::TextureDimension, [u32; 3]),
+    format: wgpu::TextureFormat,
+    bytes: &[u8],
+) -> (wgpu::Texture, wgpu::TextureView) {
+    let texture = device.create_texture_with_data(
+        queue,
+        &wgpu::TextureDescriptor {
+            label: Some(label),
+            size: wgpu::Extent3d {
+                width: size[0],
+                height: size[1],
+                depth_or_array_layers: size[2],
+            },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension,
+            format,
+            usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+            view_formats: &[],
+        },
+        wgpu::util::TextureDataOrder::LayerMajor,
+        bytes,
+    );
+    let view = texture.create_view(&Default::default());
+    (texture, view)
 }

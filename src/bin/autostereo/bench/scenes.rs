@@ -19,7 +19,7 @@ use glam::Mat4;
 
 /// A scene on the GPU, of any primitive.
 pub enum SceneData {
-    Volume(VolumeScene),
+    Volume(Box<VolumeScene>),
     Points(SplatScene),
     Mesh(MeshBuffers),
 }
@@ -126,7 +126,7 @@ pub fn scenes(ctx: &autostereo::gpu::GpuContext, quick: bool) -> Result<Vec<Benc
             detail: format!("{:?} voxels", volume.dims),
             name,
             bounds: volume.bounds(),
-            data: SceneData::Volume(scene),
+            data: SceneData::Volume(Box::new(scene)),
             splats: None,
         });
     }

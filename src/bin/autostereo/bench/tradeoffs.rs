@@ -8,7 +8,7 @@ use autostereo::points::{GroupCount, SplatScene};
 use autostereo::render::{
     AlphaMode, CoverBounds, MeshBaseline, MeshBaselineMethod, MeshSinglePass,
     MeshSinglePassOptions, PointSplatter, SplatDepth, SplatMethod, SplatOptions, Visibility,
-    VolumeMethod, VolumeRaycaster, VolumeSlicer,
+    VolumeMethod, VolumeRaycaster, VolumeScene, VolumeSlicer,
 };
 use autostereo::target::SpatialTarget;
 use autostereo::timing::FrameTimer;
@@ -274,8 +274,9 @@ fn mesh_studies(
     Ok(())
 }
 
-/// What a scene saves by not using a feature: volume shading (the K = 3 → 1 saving comes from
-/// the measured rows, in the report).
+/// What a scene saves by not using a feature: volume shading, and work in empty space (marching
+/// through transparent bricks vs skipping them). The K = 3 → 1 saving comes from the measured
+/// rows, in the report.
 pub fn economy(
     ctx: &Ctx,
     timer: &FrameTimer,
@@ -291,23 +292,40 @@ pub fn economy(
                 &ctx.device,
                 VolumeMethod::SinglePass,
             )?));
-            let shade = |scene: &mut BenchScene, on: bool| {
-                let SceneData::Volume(v) = &mut scene.data else {
-                    unreachable!()
+            // (what, the scene's switch, its value with the feature used)
+            type Switch = fn(&mut VolumeScene) -> &mut bool;
+            let features: [(&str, Switch, bool); 2] = [
+                (
+                    "lighting (gradient shading), single pass (compute)",
+                    |v| &mut v.shade,
+                    true,
+                ),
+                (
+                    "marching through transparent bricks (no empty-space skipping), single pass \
+                     (compute)",
+                    |v| &mut v.skip_empty,
+                    false,
+                ),
+            ];
+            for (what, switch, with_value) in features {
+                let set = |scene: &mut BenchScene, on: bool| {
+                    let SceneData::Volume(v) = &mut scene.data else {
+                        unreachable!()
+                    };
+                    std::mem::replace(switch(v), on)
                 };
-                std::mem::replace(&mut v.shade, on)
-            };
-            let before = shade(scene, true);
-            let with_ms = time_frame(ctx, timer, scene, &mut r, &frame, frames)?;
-            shade(scene, false);
-            let without_ms = time_frame(ctx, timer, scene, &mut r, &frame, frames)?;
-            shade(scene, before);
-            out.push(Economy {
-                scene: scene.name.clone(),
-                what: "lighting (gradient shading), single pass (compute)".into(),
-                with_ms,
-                without_ms,
-            });
+                let before = set(scene, with_value);
+                let with_ms = time_frame(ctx, timer, scene, &mut r, &frame, frames)?;
+                set(scene, !with_value);
+                let without_ms = time_frame(ctx, timer, scene, &mut r, &frame, frames)?;
+                set(scene, before);
+                out.push(Economy {
+                    scene: scene.name.clone(),
+                    what: what.into(),
+                    with_ms,
+                    without_ms,
+                });
+            }
         }
     }
     Ok(out)
