@@ -20,6 +20,9 @@
 
 // Brick edge in voxels; keep in sync with `BRICK` in src/volume/bricks.rs.
 const BRICK: f32 = 8.0;
+// Empty-space skipping compiled in (src/render/volume_raycast.rs sets it per scene): without
+// it the march is the plain loop.
+override SKIP_EMPTY: bool = true;
 
 // Texture-space position of sample plane k (eye depth k·Δ) on the ray o + u·d.
 fn plane_position(o: vec3<f32>, d: vec3<f32>, k: f32) -> vec3<f32> {
@@ -27,21 +30,43 @@ fn plane_position(o: vec3<f32>, d: vec3<f32>, k: f32) -> vec3<f32> {
     return o + (depth / frame.camera.focal_distance) * d;
 }
 
-// For the ray o + u·d at texture position p: the eye depth where it leaves p's brick (x) and
+// The ray o + u·d in brick units (texture position × voxels / BRICK), set up once per ray.
+struct BrickRay {
+    origin: vec3<f32>,
+    inv_dir: vec3<f32>,
+    scale: vec3<f32>,
+    last: vec3<u32>,
+}
+
+fn brick_ray(o: vec3<f32>, d: vec3<f32>) -> BrickRay {
+    let scale = vec3<f32>(textureDimensions(volume)) / BRICK;
+    return BrickRay(o * scale, 1.0 / (d * scale), scale, textureDimensions(transparent_bricks) - 1u);
+}
+
+// At texture position p on the ray: the eye depth where the ray leaves p's brick (x) and
 // whether that brick is transparent (y = 1). A NaN depth (a ray along a brick face) fails the
 // caller's comparisons, so it never skips.
-fn brick_exit(o: vec3<f32>, d: vec3<f32>, p: vec3<f32>) -> vec2<f32> {
-    let voxels = vec3<f32>(textureDimensions(volume));
-    let grid = textureDimensions(transparent_bricks);
-    let brick = min(vec3<u32>(max(floor(p * voxels / BRICK), vec3<f32>(0.0))), grid - 1u);
-    let lo = vec3<f32>(brick) * BRICK / voxels;
-    let hi = (vec3<f32>(brick) + 1.0) * BRICK / voxels;
-    let inv = 1.0 / d;
-    let a = (lo - o) * inv;
-    let b = (hi - o) * inv;
+fn brick_exit(ray: BrickRay, p: vec3<f32>) -> vec2<f32> {
+    let brick = min(vec3<u32>(max(floor(p * ray.scale), vec3<f32>(0.0))), ray.last);
+    let a = (vec3<f32>(brick) - ray.origin) * ray.inv_dir;
+    let b = (vec3<f32>(brick) + 1.0 - ray.origin) * ray.inv_dir;
     let u_out = min(min(max(a.x, b.x), max(a.y, b.y)), max(a.z, b.z));
     let transparent = textureLoad(transparent_bricks, brick, 0).x != 0u;
     return vec2<f32>(u_out * frame.camera.focal_distance, select(0.0, 1.0, transparent));
+}
+
+// `acc` with the segment between samples `front` and `back` (back on plane k) composited
+// behind it, for the ray origin + t·dir; the segment's own opacity in w of the second value.
+fn add_segment(acc: vec4<f32>, front: vec4<f32>, back: vec4<f32>, k: f32, origin: vec3<f32>, dir: vec3<f32>) -> array<vec4<f32>, 2> {
+    let depth = k * params.step;
+    let seg = shaded_segment(front, back, origin + (depth / frame.camera.focal_distance) * dir, origin);
+    let out = vec4<f32>(acc.rgb + (1.0 - acc.a) * seg.rgb, acc.a + (1.0 - acc.a) * seg.a);
+    return array<vec4<f32>, 2>(out, seg);
+}
+
+// The volume sample on plane k of the ray o + u·d (texture space).
+fn sample_plane(o: vec3<f32>, d: vec3<f32>, k: f32) -> vec4<f32> {
+    return textureSampleLevel(volume, linear_clamp, plane_position(o, d, k), 0.0);
 }
 
 // Premultiplied RGBA along the ray origin + t·dir (eye depth t·fd).
@@ -65,9 +90,26 @@ fn march(origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
     let count = min(u32(max(k1 - k0, 0.0)), params.max_samples);
     var front = textureSampleLevel(volume, linear_clamp, o + (k0 * params.step / fd) * d, 0.0);
     var acc = vec4<f32>(0.0);
+    if (!SKIP_EMPTY) {
+        // The plain loop: measured ≈ 25 % faster on llvmpipe than the skipping loop with its
+        // look-ups disabled, so it is a separate specialisation.
+        for (var i = 1u; i <= count; i++) {
+            let back = sample_plane(o, d, k0 + f32(i));
+            acc = add_segment(acc, front, back, k0 + f32(i), origin, dir)[0];
+            if (acc.a >= OPAQUE) {
+                break;
+            }
+            front = back;
+        }
+        return acc;
+    }
     // Sample i sits on plane k0 + i; the front sample is i − 1. Bricks are looked up only
     // after a transparent segment, and once per brick that turned out not to be transparent.
-    var look_up = params.skip_empty != 0u;
+    // A jump lands on the brick's last plane j and only re-samples there (`resume`): the one
+    // texture fetch per iteration stays on one code path for all lanes.
+    let bricks = brick_ray(o, d);
+    var look_up = true;
+    var resume = false;
     var next_look_up = 0u;
     var i = 1u;
     loop {
@@ -75,28 +117,29 @@ fn march(origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
             break;
         }
         if (look_up && i - 1u >= next_look_up) {
-            let exit = brick_exit(o, d, plane_position(o, d, k0 + f32(i - 1u)));
+            look_up = false;
+            let exit = brick_exit(bricks, plane_position(o, d, k0 + f32(i - 1u)));
             // Last plane inside the brick, relative to k0.
             let last = floor(exit.x / params.step) - k0;
             if (exit.y != 0.0 && last > f32(i - 1u)) {
-                let j = u32(min(last, f32(count)));
-                front = textureSampleLevel(volume, linear_clamp, plane_position(o, d, k0 + f32(j)), 0.0);
-                i = j + 1u;
-                look_up = false;
-                continue;
+                i = u32(min(last, f32(count)));
+                resume = true;
+            } else {
+                // Not transparent (or no whole segment left in it): no look-up until past it.
+                next_look_up = select(i, u32(max(last, 0.0)) + 1u, last >= f32(i - 1u));
             }
-            // Not transparent (or no whole segment left in it): no look-up until past it.
-            next_look_up = select(i, u32(max(last, 0.0)) + 1u, last >= f32(i - 1u));
         }
-        let depth = (k0 + f32(i)) * params.step;
-        let back = textureSampleLevel(volume, linear_clamp, plane_position(o, d, k0 + f32(i)), 0.0);
-        let seg = shaded_segment(front, back, origin + (depth / fd) * dir, origin);
-        acc = vec4<f32>(acc.rgb + (1.0 - acc.a) * seg.rgb, acc.a + (1.0 - acc.a) * seg.a);
-        if (acc.a >= OPAQUE) {
-            break;
+        let back = sample_plane(o, d, k0 + f32(i));
+        if (!resume) {
+            let added = add_segment(acc, front, back, k0 + f32(i), origin, dir);
+            acc = added[0];
+            if (acc.a >= OPAQUE) {
+                break;
+            }
+            look_up = added[1].a <= 0.0;
         }
+        resume = false;
         front = back;
-        look_up = params.skip_empty != 0u && seg.a <= 0.0;
         i++;
     }
     return acc;

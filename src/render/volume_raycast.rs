@@ -116,7 +116,8 @@ pub struct VolumeRaycaster {
     method: VolumeMethod,
     resources: VolumeResources,
     output_layout: wgpu::BindGroupLayout,
-    pipelines: HashMap<Specialization, wgpu::ComputePipeline>,
+    /// Per display specialisation and empty-space skipping (on/off).
+    pipelines: HashMap<(Specialization, bool), wgpu::ComputePipeline>,
     layers: Option<ViewLayers>,
     compositor: Option<Compositor>,
 }
@@ -152,15 +153,22 @@ impl VolumeRaycaster {
         })
     }
 
-    fn ensure_pipeline(&mut self, device: &wgpu::Device, spec: Specialization) -> Result<()> {
-        if self.pipelines.contains_key(&spec) {
+    /// The pipeline for `spec`, with the empty-space skipping code compiled in or out (an
+    /// override constant: without it the march is the plain loop, no look-up overhead).
+    fn ensure_pipeline(
+        &mut self,
+        device: &wgpu::Device,
+        key: (Specialization, bool),
+    ) -> Result<()> {
+        let (spec, skip_empty) = key;
+        if self.pipelines.contains_key(&key) {
             return Ok(());
         }
         let module = crate::shader::module(device, "volume_raycast.wgsl")?;
         let layout = self
             .resources
             .pipeline_layout(device, "volume raycast", &self.output_layout);
-        let constants = spec.constants(&[]);
+        let constants = spec.constants(&[("SKIP_EMPTY", f64::from(u8::from(skip_empty)))]);
         let pipeline = crate::gpu::checked(device, "building the volume pipeline", || {
             device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
                 label: Some("volume raycast"),
@@ -174,7 +182,7 @@ impl VolumeRaycaster {
                 cache: None,
             })
         })?;
-        self.pipelines.insert(spec, pipeline);
+        self.pipelines.insert(key, pipeline);
         Ok(())
     }
 
@@ -215,8 +223,8 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
             self.layers = None;
             self.layers = Some(ViewLayers::new(device, frame.size, camera.views)?);
         }
-        let spec = Specialization::of(frame);
-        self.ensure_pipeline(device, spec)?;
+        let key = (Specialization::of(frame), scene.skip_empty);
+        self.ensure_pipeline(device, key)?;
         let outputs: Vec<&wgpu::TextureView> = match (&self.method, &self.layers) {
             (VolumeMethod::NPass, Some(layers)) => layers.layer_views.iter().collect(),
             _ => vec![&target.view],
@@ -226,7 +234,7 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
                 label: Some("volume raycast"),
                 timestamp_writes: None,
             });
-            pass.set_pipeline(&self.pipelines[&spec]);
+            pass.set_pipeline(&self.pipelines[&key]);
             pass.set_bind_group(0, &self.resources.frame.bind_group, &[]);
             for (i, output) in outputs.iter().enumerate() {
                 let output_group = device.create_bind_group(&wgpu::BindGroupDescriptor {

@@ -25,8 +25,7 @@ pub struct VolumeParams {
     use_mask: u32,
     max_samples: u32,
     shade: u32,
-    skip_empty: u32,
-    _pad: [u32; 2],
+    _pad: [u32; 3],
 }
 const _: () = assert!(std::mem::size_of::<VolumeParams>() == 160);
 
@@ -130,8 +129,7 @@ impl VolumeResources {
             use_mask: use_mask as u32,
             max_samples: (scene.extent.length() / scene.step).ceil() as u32 + 2,
             shade: scene.shade as u32,
-            skip_empty: scene.skip_empty as u32,
-            _pad: [0; 2],
+            _pad: [0; 3],
         }
     }
 

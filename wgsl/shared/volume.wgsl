@@ -10,7 +10,7 @@ struct VolumeParams {
     use_mask: u32,                // 1: K views per pixel from the mask; 0: one fixed camera
     max_samples: u32,             // guard against runaway loops
     shade: u32,                   // 1: Blinn-Phong from gradients; 0: emission-absorption only
-    skip_empty: u32,              // 1: jump over transparent bricks (volume_raycast.wgsl)
+    _pad0: u32,
     _pad1: u32,
     _pad2: u32,
 }
