@@ -19,7 +19,7 @@
 @group(2) @binding(0) var output: texture_storage_2d<rgba8unorm, write>;
 
 // Brick edge in voxels; keep in sync with `BRICK` in src/volume/bricks.rs.
-const BRICK: f32 = 8.0;
+const BRICK: f32 = 4.0;
 // Empty-space skipping compiled in (src/render/volume_raycast.rs sets it per scene): without
 // it the march is the plain loop.
 override SKIP_EMPTY: bool = true;

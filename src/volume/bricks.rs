@@ -12,7 +12,7 @@ use super::transfer::{TransferFunction, TABLE_SIZE};
 use super::Volume;
 
 /// Brick edge, voxels.
-pub const BRICK: u32 = 8;
+pub const BRICK: u32 = 4;
 
 /// Scalar ranges of the bricks of one volume.
 #[derive(Clone, Debug, PartialEq)]
@@ -25,32 +25,53 @@ pub struct BrickRanges {
 }
 
 impl BrickRanges {
-    /// Ranges of `volume` (one visit per voxel and brick it touches, ≈ 2× the voxels).
+    /// Ranges of `volume`, reduced one axis at a time (≈ 1.5 visits per voxel).
     pub fn new(volume: &Volume) -> Self {
+        let dims = volume.dims.map(|d| d as usize);
         let grid = volume.dims.map(|d| d.div_ceil(BRICK));
-        let mut ranges = Vec::with_capacity(grid.iter().map(|&g| g as usize).product());
+        let g = grid.map(|d| d as usize);
         // A sample at texel-space position p (voxel centres at i + ½) interpolates voxels
         // ⌊p − ½⌋ and ⌊p − ½⌋ + 1, so positions within half a voxel of brick b's box
-        // [b·B, (b + 1)·B] read voxels b·B − 1 ..= (b + 1)·B.
-        let span = |b: u32, n: u32| {
-            let lo = (i64::from(b) * i64::from(BRICK) - 1).max(0);
-            let hi = ((i64::from(b) + 1) * i64::from(BRICK)).min(i64::from(n) - 1);
-            lo..=hi
+        // [b·B, (b + 1)·B] read voxels b·B − 1 ..= (b + 1)·B along each axis.
+        let span = |b: usize, n: usize| {
+            let brick = BRICK as usize;
+            (b * brick).saturating_sub(1)..((b + 1) * brick + 1).min(n)
         };
-        for bz in 0..grid[2] {
-            for by in 0..grid[1] {
-                for bx in 0..grid[0] {
-                    let mut range = [f32::INFINITY, f32::NEG_INFINITY];
-                    for z in span(bz, volume.dims[2]) {
-                        for y in span(by, volume.dims[1]) {
-                            for x in span(bx, volume.dims[0]) {
-                                // The GPU holds the scalar as f16.
-                                let s = f16::from_f32(volume.at(x, y, z)).to_f32();
-                                range = [range[0].min(s), range[1].max(s)];
-                            }
-                        }
+        let widen = |r: [f32; 2], s: [f32; 2]| [r[0].min(s[0]), r[1].max(s[1])];
+        const EMPTY: [f32; 2] = [f32::INFINITY, f32::NEG_INFINITY];
+        // Along x: per (brick x, y, z). The GPU holds the scalars as f16.
+        let mut along_x = vec![EMPTY; g[0] * dims[1] * dims[2]];
+        for (row, out) in volume
+            .data
+            .chunks_exact(dims[0])
+            .zip(along_x.chunks_exact_mut(g[0]))
+        {
+            for (bx, range) in out.iter_mut().enumerate() {
+                for &v in &row[span(bx, dims[0])] {
+                    let s = f16::from_f32(v).to_f32();
+                    *range = widen(*range, [s, s]);
+                }
+            }
+        }
+        // Along y: per (brick x, brick y, z).
+        let mut along_y = vec![EMPTY; g[0] * g[1] * dims[2]];
+        for z in 0..dims[2] {
+            for by in 0..g[1] {
+                for y in span(by, dims[1]) {
+                    for bx in 0..g[0] {
+                        let out = &mut along_y[(z * g[1] + by) * g[0] + bx];
+                        *out = widen(*out, along_x[(z * dims[1] + y) * g[0] + bx]);
                     }
-                    ranges.push(range);
+                }
+            }
+        }
+        // Along z: per brick.
+        let mut ranges = vec![EMPTY; g[0] * g[1] * g[2]];
+        for bz in 0..g[2] {
+            for z in span(bz, dims[2]) {
+                for i in 0..g[0] * g[1] {
+                    let out = &mut ranges[bz * g[0] * g[1] + i];
+                    *out = widen(*out, along_y[z * g[0] * g[1] + i]);
                 }
             }
         }
@@ -139,7 +160,7 @@ mod tests {
     fn ranges_hold_every_sample_within_half_a_voxel_of_a_brick() {
         let v = phantom::ct_head(21).unwrap(); // partial bricks on every axis
         let bricks = BrickRanges::new(&v);
-        assert_eq!(bricks.grid, [3, 3, 3]);
+        assert_eq!(bricks.grid, [6, 6, 5]);
         let mut state = 12345u32;
         let mut next = || {
             state = state.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
@@ -152,10 +173,38 @@ mod tests {
                 let hi = (((b[a] + 1) * BRICK).min(v.dims[a])) as f32 + 0.5;
                 lo + next() * (hi - lo)
             });
-            let [lo, hi] = bricks.ranges[((b[2] * 3 + b[1]) * 3 + b[0]) as usize];
+            let [gx, gy, _] = bricks.grid;
+            let [lo, hi] = bricks.ranges[((b[2] * gy + b[1]) * gx + b[0]) as usize];
             let s = trilinear(&v, p);
             assert!(s >= lo - 1e-6 && s <= hi + 1e-6, "{s} outside {lo}..{hi}");
         }
+    }
+
+    #[test]
+    fn separable_ranges_equal_the_direct_definition() {
+        let v = phantom::ct_head(23).unwrap();
+        let bricks = BrickRanges::new(&v);
+        let b = BRICK as i64;
+        let mut i = 0;
+        for bz in 0..bricks.grid[2] as i64 {
+            for by in 0..bricks.grid[1] as i64 {
+                for bx in 0..bricks.grid[0] as i64 {
+                    let mut range = [f32::INFINITY, f32::NEG_INFINITY];
+                    for z in (bz * b - 1).max(0)..=((bz + 1) * b).min(v.dims[2] as i64 - 1) {
+                        for y in (by * b - 1).max(0)..=((by + 1) * b).min(v.dims[1] as i64 - 1) {
+                            for x in (bx * b - 1).max(0)..=((bx + 1) * b).min(v.dims[0] as i64 - 1)
+                            {
+                                let s = f16::from_f32(v.at(x, y, z)).to_f32();
+                                range = [range[0].min(s), range[1].max(s)];
+                            }
+                        }
+                    }
+                    assert_eq!(bricks.ranges[i], range, "brick {bx},{by},{bz}");
+                    i += 1;
+                }
+            }
+        }
+        assert_eq!(i, bricks.ranges.len());
     }
 
     #[test]
