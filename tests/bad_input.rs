@@ -139,6 +139,9 @@ fn volumes_and_transfer_functions_with_inconsistent_fields_are_errors() {
         points: vec![(0.8, [1.0; 4]), (0.2, [0.0; 4])],
     };
     assert!(PreintegrationTable::new(&unsorted, 1.0).is_err());
+    // Scalars outside 0..1 (the GPU holds them as f16: 1e6 would be inf there).
+    let err = autostereo::volume::Volume::new([2, 1, 1], [1.0; 3], vec![0.5, 1e6]).unwrap_err();
+    assert!(err.to_string().contains("voxel 1 is 1000000"), "{err}");
     let mut volume = phantom::ct_head(8).unwrap();
     volume.data.truncate(10);
     assert!(volume.validate().is_err());

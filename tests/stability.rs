@@ -28,7 +28,12 @@ const BACKGROUND: [f32; 4] = [0.2, 0.4, 0.6, 1.0];
 /// One primitive's scene, uploaded.
 enum Scene {
     Mesh(MeshBuffers),
-    Volume(Box<VolumeScene>),
+    /// The single pass skips empty space; its N-pass oracle marches every segment, so the
+    /// extremes test the skipping too.
+    Volume {
+        skipping: Box<VolumeScene>,
+        marching: Box<VolumeScene>,
+    },
     Points(SplatScene),
 }
 
@@ -92,13 +97,20 @@ fn volume(offset: Vec3, degenerate: bool) -> Primitive {
         ))
     });
     let ctx = common::gpu();
-    let tf = TransferFunction::preset("ct-skin").unwrap();
+    let scene = |skip_empty| {
+        let tf = TransferFunction::preset("ct-skin").unwrap();
+        let mut scene =
+            VolumeScene::new(&ctx.device, &ctx.queue, &volume, tf, None, model).unwrap();
+        scene.skip_empty = skip_empty;
+        Box::new(scene)
+    };
     Primitive {
         name: "volume",
         bounds: Bounds::of_points(corners).unwrap(),
-        scene: Scene::Volume(Box::new(
-            VolumeScene::new(&ctx.device, &ctx.queue, &volume, tf, None, model).unwrap(),
-        )),
+        scene: Scene::Volume {
+            skipping: scene(true),
+            marching: scene(false),
+        },
     }
 }
 
@@ -151,11 +163,11 @@ fn render_pair(p: &Primitive, frame: &Frame) -> (RgbImage, RgbImage) {
                 };
                 r.render(device, queue, buffers, frame, &target).unwrap();
             }
-            Scene::Volume(scene) => {
-                let method = if single {
-                    VolumeMethod::SinglePass
+            Scene::Volume { skipping, marching } => {
+                let (method, scene) = if single {
+                    (VolumeMethod::SinglePass, skipping)
                 } else {
-                    VolumeMethod::NPass
+                    (VolumeMethod::NPass, marching)
                 };
                 VolumeRaycaster::new(device, method)
                     .unwrap()

@@ -44,8 +44,9 @@ fn brick_ray(o: vec3<f32>, d: vec3<f32>) -> BrickRay {
 }
 
 // At texture position p on the ray: the eye depth where the ray leaves p's brick (x) and
-// whether that brick is transparent (y = 1). A NaN depth (a ray along a brick face) fails the
-// caller's comparisons, so it never skips.
+// whether that brick is transparent (y = 1). A ray lying in a brick face can give NaN (no skip:
+// NaN fails the caller's comparisons) or, where min/max drop the NaN, the exit of the other
+// axes: still exact, as samples on the face read only voxels of that brick's span.
 fn brick_exit(ray: BrickRay, p: vec3<f32>) -> vec2<f32> {
     let brick = min(vec3<u32>(max(floor(p * ray.scale), vec3<f32>(0.0))), ray.last);
     let a = (vec3<f32>(brick) - ray.origin) * ray.inv_dir;

@@ -174,7 +174,7 @@ impl VolumeResources {
             entries: &[
                 wgpu::BindGroupEntry {
                     binding: 0,
-                    resource: wgpu::BindingResource::TextureView(&scene.texture.view),
+                    resource: wgpu::BindingResource::TextureView(&scene.texture().view),
                 },
                 wgpu::BindGroupEntry {
                     binding: 1,

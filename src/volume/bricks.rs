@@ -25,8 +25,9 @@ pub struct BrickRanges {
 }
 
 impl BrickRanges {
-    /// Ranges of `volume`, reduced one axis at a time (≈ 1.5 visits per voxel).
-    pub fn new(volume: &Volume) -> Self {
+    /// Ranges of `volume` (validated: see [`Volume::validate`]), reduced one axis at a time
+    /// (≈ 1.5 visits per voxel).
+    pub(crate) fn new(volume: &Volume) -> Self {
         let dims = volume.dims.map(|d| d as usize);
         let grid = volume.dims.map(|d| d.div_ceil(BRICK));
         let g = grid.map(|d| d as usize);

@@ -64,7 +64,7 @@ fn check_spacing(spacing: [f32; 3]) -> Result<()> {
 }
 
 impl Volume {
-    /// A volume from scalars already in 0..1 (checked: sizes, finite values, spacing).
+    /// A volume from scalars already in 0..1 (checked: sizes, values in 0..1, spacing).
     pub fn new(dims: [u32; 3], spacing: [f32; 3], data: Vec<f32>) -> Result<Self> {
         let volume = Self {
             dims,
@@ -86,10 +86,10 @@ impl Volume {
                 format!("{} values for dimensions {:?}", self.data.len(), self.dims),
             ));
         }
-        if let Some(i) = self.data.iter().position(|v| !v.is_finite()) {
+        if let Some(i) = self.data.iter().position(|v| !(0.0..=1.0).contains(v)) {
             return Err(Error::invalid(
                 "volume data",
-                format!("voxel {i} is not finite"),
+                format!("voxel {i} is {}: scalars must be in 0..1", self.data[i]),
             ));
         }
         Ok(())
