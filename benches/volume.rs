@@ -1,5 +1,6 @@
-//! Volumes: single pass (compute path; slice path with exact and paper α) vs N-pass vs single
-//! view, side by side in one process on one adapter, 512², N = 8 and 64 over the same baseline,
+//! Volumes: single pass (compute path with and without empty-space skipping; slice path with
+//! exact and paper α) vs N-pass vs single view, side by side in one process on one adapter, 512²,
+//! N = 8 and 64 over the same baseline,
 //! on the built-in head (96³) and VolPack's brainsmall.den (128×128×84, from `data/fetch`).
 //!
 //! `data/fetch && cargo bench --bench volume`   (report: `python3 docs/tools/bench_table.py volume`)
@@ -39,32 +40,38 @@ fn bench(c: &mut Criterion) {
     let (device, queue) = (&ctx.device, &ctx.queue);
     let target = SpatialTarget::new(device, SIZE).unwrap();
     let timer = FrameTimer::new(device, queue);
-    let mut methods: Vec<(&str, Box<dyn Renderer<VolumeScene>>)> = vec![
+    let raycaster = |method| -> Box<dyn Renderer<VolumeScene>> {
+        Box::new(VolumeRaycaster::new(device, method).unwrap())
+    };
+    // (name, renderer, empty-space skipping)
+    let mut methods: Vec<(&str, Box<dyn Renderer<VolumeScene>>, bool)> = vec![
         (
             "single-pass (compute)",
-            Box::new(VolumeRaycaster::new(device, VolumeMethod::SinglePass).unwrap()),
+            raycaster(VolumeMethod::SinglePass),
+            true,
+        ),
+        (
+            "single-pass (compute, no skipping)",
+            raycaster(VolumeMethod::SinglePass),
+            false,
         ),
         (
             "single-pass (slices, exact α)",
             Box::new(VolumeSlicer::new(device, AlphaMode::Exact).unwrap()),
+            true,
         ),
         (
             "single-pass (slices, paper α)",
             Box::new(VolumeSlicer::new(device, AlphaMode::Paper).unwrap()),
+            true,
         ),
-        (
-            "n-pass",
-            Box::new(VolumeRaycaster::new(device, VolumeMethod::NPass).unwrap()),
-        ),
-        (
-            "single-view",
-            Box::new(VolumeRaycaster::new(device, VolumeMethod::SingleView).unwrap()),
-        ),
+        ("n-pass", raycaster(VolumeMethod::NPass), true),
+        ("single-view", raycaster(VolumeMethod::SingleView), true),
     ];
     for (name, volume, tf) in data_sets() {
         let transfer = TransferFunction::preset(tf).unwrap();
         let rotation = Mat4::from_rotation_x(-90f32.to_radians());
-        let scene = VolumeScene::new(device, queue, &volume, transfer, None, rotation).unwrap();
+        let mut scene = VolumeScene::new(device, queue, &volume, transfer, None, rotation).unwrap();
         for views in [8u32, 64] {
             let display = Display::parse(&format!("slanted:{views},8,2/3,7/6")).unwrap();
             // The views span a fixed baseline (that of the default 8-view camera), as a display's
@@ -76,7 +83,8 @@ fn bench(c: &mut Criterion) {
             let frame = Frame::new(camera, display, SIZE).unwrap();
             let mut group = c.benchmark_group(format!("volume/{name}/N{views}"));
             configure(&mut group);
-            for (method, renderer) in &mut methods {
+            for (method, renderer, skip_empty) in &mut methods {
+                scene.skip_empty = *skip_empty;
                 group.bench_function(*method, |b| {
                     gpu_iter(b, &timer, device, queue, |e| {
                         renderer.encode(device, queue, e, &scene, &frame, &target)
