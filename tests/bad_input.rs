@@ -156,6 +156,23 @@ fn volumes_and_transfer_functions_with_inconsistent_fields_are_errors() {
         let err = scene.err().unwrap().to_string();
         assert!(err.contains(expect), "{err}");
     }
+    // Public fields changed after construction are checked before every frame.
+    use autostereo::render::{Renderer, VolumeMethod, VolumeRaycaster};
+    let mut scene = VolumeScene::new(
+        &ctx.device,
+        &ctx.queue,
+        &head,
+        TransferFunction::preset("ct-skin").unwrap(),
+        None,
+        Mat4::IDENTITY,
+    )
+    .unwrap();
+    scene.step = 0.0;
+    let frame = common::frame(head.bounds(), "hubner8", 0.05, 1.0, [16, 16]);
+    let target = autostereo::target::SpatialTarget::new(&ctx.device, [16, 16]).unwrap();
+    let mut renderer = VolumeRaycaster::new(&ctx.device, VolumeMethod::SinglePass).unwrap();
+    let err = renderer.render(&ctx.device, &ctx.queue, &scene, &frame, &target);
+    assert!(err.unwrap_err().to_string().contains("sampling step"));
 }
 
 #[test]

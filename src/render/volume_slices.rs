@@ -247,6 +247,7 @@ impl Renderer<VolumeScene> for VolumeSlicer {
         target: &SpatialTarget,
     ) -> Result<()> {
         frame.validate()?;
+        scene.validate()?;
         check_target(frame, target)?;
         let spec = Specialization::of(frame);
         self.ensure_pipeline(device, spec)?;

@@ -76,7 +76,7 @@ impl Volume {
     }
 
     /// Check what [`Volume::new`] checks, for a volume whose public fields were set or changed
-    /// directly: renderers call it before using the data.
+    /// directly: `VolumeTexture::new` (so `VolumeScene::new`) calls it before using the data.
     pub fn validate(&self) -> Result<()> {
         let count = check_dims(self.dims.map(u64::from))?;
         check_spacing(self.spacing)?;

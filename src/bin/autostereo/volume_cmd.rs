@@ -253,7 +253,7 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         "spacing": volume.spacing,
         "step": scene.step,
         "samples_per_ray_max": (scene.extent.length() / scene.step).ceil(),
-        "skip_empty": scene.skip_empty,
+        "skip_empty": scene.skip_empty && matches!(args.path, PathArg::Compute),
         "transparent_bricks": scene.bricks().transparent_share(&scene.transfer),
     });
     let fields = run_fields(&ctx, &args.common, &frame, &run, extra);

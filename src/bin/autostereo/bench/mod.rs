@@ -166,9 +166,6 @@ fn cpu_name() -> String {
 }
 
 pub fn run(args: BenchArgs) -> Result<()> {
-    if args.frames == 0 {
-        anyhow::bail!("--frames must be at least 1");
-    }
     if let Some(dir) = &args.report {
         std::fs::create_dir_all(dir.join("images"))?;
         if let Some(json) = &args.from_json {
