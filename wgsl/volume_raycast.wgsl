@@ -56,13 +56,16 @@ fn brick_exit(ray: BrickRay, p: vec3<f32>) -> vec2<f32> {
     return vec2<f32>(u_out * frame.camera.focal_distance, select(0.0, 1.0, transparent));
 }
 
-// `acc` with the segment between samples `front` and `back` (back on plane k) composited
-// behind it, for the ray origin + t·dir; the segment's own opacity in w of the second value.
-fn add_segment(acc: vec4<f32>, front: vec4<f32>, back: vec4<f32>, k: f32, origin: vec3<f32>, dir: vec3<f32>) -> array<vec4<f32>, 2> {
+// The shaded segment between samples `front` and `back` (back on plane k) of the ray
+// origin + t·dir.
+fn segment(front: vec4<f32>, back: vec4<f32>, k: f32, origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
     let depth = k * params.step;
-    let seg = shaded_segment(front, back, origin + (depth / frame.camera.focal_distance) * dir, origin);
-    let out = vec4<f32>(acc.rgb + (1.0 - acc.a) * seg.rgb, acc.a + (1.0 - acc.a) * seg.a);
-    return array<vec4<f32>, 2>(out, seg);
+    return shaded_segment(front, back, origin + (depth / frame.camera.focal_distance) * dir, origin);
+}
+
+// `acc` with `seg` composited behind it (front to back, premultiplied).
+fn over(acc: vec4<f32>, seg: vec4<f32>) -> vec4<f32> {
+    return vec4<f32>(acc.rgb + (1.0 - acc.a) * seg.rgb, acc.a + (1.0 - acc.a) * seg.a);
 }
 
 // The volume sample on plane k of the ray o + u·d (texture space).
@@ -89,14 +92,14 @@ fn march(origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
     let k0 = ceil(d_in / params.step);
     let k1 = floor(d_out / params.step);
     let count = min(u32(max(k1 - k0, 0.0)), params.max_samples);
-    var front = textureSampleLevel(volume, linear_clamp, o + (k0 * params.step / fd) * d, 0.0);
+    var front = sample_plane(o, d, k0);
     var acc = vec4<f32>(0.0);
     if (!SKIP_EMPTY) {
         // The plain loop: measured ≈ 25 % faster on llvmpipe than the skipping loop with its
         // look-ups disabled, so it is a separate specialisation.
         for (var i = 1u; i <= count; i++) {
             let back = sample_plane(o, d, k0 + f32(i));
-            acc = add_segment(acc, front, back, k0 + f32(i), origin, dir)[0];
+            acc = over(acc, segment(front, back, k0 + f32(i), origin, dir));
             if (acc.a >= OPAQUE) {
                 break;
             }
@@ -132,12 +135,12 @@ fn march(origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
         }
         let back = sample_plane(o, d, k0 + f32(i));
         if (!resume) {
-            let added = add_segment(acc, front, back, k0 + f32(i), origin, dir);
-            acc = added[0];
+            let seg = segment(front, back, k0 + f32(i), origin, dir);
+            acc = over(acc, seg);
             if (acc.a >= OPAQUE) {
                 break;
             }
-            look_up = added[1].a <= 0.0;
+            look_up = seg.a <= 0.0;
         }
         resume = false;
         front = back;

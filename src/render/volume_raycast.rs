@@ -66,12 +66,12 @@ impl VolumeScene {
         step: Option<f32>,
         model: Mat4,
     ) -> Result<Self> {
-        // Everything is checked before the upload (which validates the volume itself too).
+        // Everything is checked before the upload.
         volume.validate()?;
         let voxel = volume.min_spacing();
         let step = step.unwrap_or(0.5 * voxel);
         check_scene(volume.extent(), &transfer, step, model)?;
-        let texture = VolumeTexture::new(device, queue, volume)?;
+        let texture = VolumeTexture::new_validated(device, queue, volume)?;
         static NEXT_ID: AtomicU64 = AtomicU64::new(0);
         Ok(Self {
             texture,

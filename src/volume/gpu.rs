@@ -24,6 +24,16 @@ impl VolumeTexture {
     /// that suggests downsampling.
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, volume: &Volume) -> Result<Self> {
         volume.validate()?;
+        Self::new_validated(device, queue, volume)
+    }
+
+    /// [`VolumeTexture::new`] for a volume its caller has just validated (one pass over the
+    /// voxels less).
+    pub(crate) fn new_validated(
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        volume: &Volume,
+    ) -> Result<Self> {
         let limit = device.limits().max_texture_dimension_3d;
         if let Some(&d) = volume.dims.iter().find(|&&d| d > limit) {
             return Err(Error::LimitExceeded {
