@@ -14,15 +14,17 @@ pub enum Error {
         /// The adapter-name filter, formatted for the message.
         name: String,
     },
-    /// The adapter lacks a feature a requested mode needs.
-    #[error("adapter '{adapter}' lacks feature {feature} needed for {purpose}")]
+    /// The adapter lacks a capability a requested mode needs.
+    #[error("{purpose} needs {missing}, which adapter '{adapter}' lacks; {instead}")]
     MissingFeature {
-        /// Adapter name.
+        /// Adapter name and backend, e.g. `llvmpipe (LLVM 15.0.6, 256 bits) (Gl)`.
         adapter: String,
-        /// The missing wgpu feature.
-        feature: String,
-        /// What needed it.
+        /// The missing capabilities in words, with wgpu's feature names.
+        missing: String,
+        /// What needed them (a mode, as the user chose it).
         purpose: String,
+        /// What to use instead.
+        instead: String,
     },
     /// A size or count is above what the adapter allows.
     #[error("{what} = {value} exceeds the adapter limit {limit}")]
@@ -98,13 +100,14 @@ pub enum Error {
         /// What is wrong with it.
         reason: String,
     },
-    /// I/O on a named file.
-    #[error("{path}: {source}")]
+    /// I/O on a named file. The message carries the OS error, so it is deliberately not also
+    /// the error's `source()`: printers of the error chain (`anyhow`'s `{:#}`) show it once.
+    #[error("{path}: {error}")]
     Io {
         /// The file.
         path: PathBuf,
         /// The OS error.
-        source: std::io::Error,
+        error: std::io::Error,
     },
     /// The GPU reported a validation or out-of-memory error for an operation.
     #[error("GPU error during {operation}: {message}")]
@@ -120,6 +123,13 @@ pub enum Error {
 pub type Result<T, E = Error> = std::result::Result<T, E>;
 
 impl Error {
+    pub(crate) fn io(path: &std::path::Path, error: std::io::Error) -> Self {
+        Error::Io {
+            path: path.to_path_buf(),
+            error,
+        }
+    }
+
     pub(crate) fn invalid(name: &'static str, reason: impl Into<String>) -> Self {
         Error::InvalidParameter {
             name,

@@ -26,7 +26,7 @@ const OPTIONAL_FEATURES: wgpu::Features = wgpu::Features::TIMESTAMP_QUERY
 /// An adapter, its device and queue. Owns them; renderers borrow the device.
 ///
 /// Keep one per adapter per process: on GL, a second device from the same adapter silently
-/// breaks the first (see PLATFORM.md).
+/// breaks the first (docs/DESIGN.md §7).
 pub struct GpuContext {
     /// The chosen adapter.
     pub adapter: wgpu::Adapter,
@@ -112,23 +112,76 @@ impl GpuContext {
         &self.info
     }
 
-    /// Fail with [`Error::MissingFeature`] unless the device has `feature`.
-    pub fn require(&self, feature: wgpu::Features, purpose: &str) -> Result<()> {
-        if self.device.features().contains(feature) {
-            Ok(())
-        } else {
-            Err(Error::MissingFeature {
-                adapter: self.info.name.clone(),
-                feature: format!("{feature:?}"),
-                purpose: purpose.to_string(),
-            })
-        }
-    }
-
     /// Check a 2D render size against the device limits.
     pub fn check_size_2d(&self, width: u32, height: u32) -> Result<()> {
         check_size_2d(&self.device, width, height)
     }
+}
+
+/// Fail with [`Error::MissingFeature`] unless `device` has every feature in `needed`. The
+/// error names the adapter, says what is missing in words and what to use `instead`.
+pub fn require_features(
+    device: &wgpu::Device,
+    needed: wgpu::Features,
+    purpose: &str,
+    instead: &str,
+) -> Result<()> {
+    let missing = needed - device.features();
+    if missing.is_empty() {
+        return Ok(());
+    }
+    let info = device.adapter_info();
+    Err(Error::MissingFeature {
+        adapter: format!("{} ({:?})", info.name, info.backend),
+        missing: describe_features(missing),
+        purpose: purpose.to_string(),
+        instead: instead.to_string(),
+    })
+}
+
+/// `features` in words, each with wgpu's name, e.g. "64-bit integers (SHADER_INT64)".
+pub fn describe_features(features: wgpu::Features) -> String {
+    const WORDS: &[(wgpu::Features, &str)] = &[
+        (wgpu::Features::SHADER_INT64, "64-bit integers in shaders"),
+        (
+            wgpu::Features::SHADER_INT64_ATOMIC_MIN_MAX,
+            "64-bit atomic min/max",
+        ),
+        (
+            wgpu::Features::SHADER_INT64_ATOMIC_ALL_OPS,
+            "all 64-bit atomic operations",
+        ),
+        (
+            wgpu::Features::DUAL_SOURCE_BLENDING,
+            "dual-source blending (a blend factor per colour channel)",
+        ),
+        (wgpu::Features::TIMESTAMP_QUERY, "GPU timestamp queries"),
+        (
+            wgpu::Features::FLOAT32_FILTERABLE,
+            "filterable 32-bit float textures",
+        ),
+    ];
+    let mut parts = Vec::new();
+    let mut rest = features;
+    for (feature, words) in WORDS {
+        if features.contains(*feature) {
+            parts.push(format!("{words} ({})", feature_names(*feature)));
+            rest = rest - *feature;
+        }
+    }
+    if !rest.is_empty() {
+        parts.push(feature_names(rest));
+    }
+    parts.join(" and ")
+}
+
+/// wgpu's names of `features`, e.g. `SHADER_INT64 | SHADER_INT64_ATOMIC_MIN_MAX`.
+fn feature_names(features: wgpu::Features) -> String {
+    features
+        .iter_names()
+        .map(|(name, _)| name)
+        .collect::<Vec<_>>()
+        .join(" | ")
 }
 
 /// Check a 2D render size: non-zero and within `max_texture_dimension_2d`.

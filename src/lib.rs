@@ -7,7 +7,7 @@
 //! scene data ([`mesh`]) → GPU resources ([`mesh::MeshBuffers`]) → passes ([`render`]) →
 //! spatial image ([`target::SpatialTarget`]) → CPU ([`image_io`], [`views`]).
 //!
-//! Geometry and conventions: [`display`] (masks, DESIGN §1), [`camera`] (DESIGN §2),
+//! Geometry and conventions: [`display`] (masks, docs/DESIGN.md §1), [`camera`] (docs/DESIGN.md §2),
 //! [`frame`] (everything a renderer needs besides the scene). The library borrows the device;
 //! [`gpu::GpuContext`] is a convenience for headless tools and tests.
 

@@ -1,16 +1,29 @@
 //! The CLI contract: the main mesh job, `--json` fields, `--compare`, `mask`, `views`.
 
+mod common;
+
 use std::path::PathBuf;
 use std::process::Command;
 
-fn run(args: &[&str]) -> String {
+use autostereo::render::Visibility;
+
+/// Run the CLI: (success, stdout, stderr).
+fn run_any(args: &[&str]) -> (bool, String, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_autostereo"))
         .args(args)
         .output()
         .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(out.status.success(), "{args:?} failed: {stderr}");
-    String::from_utf8(out.stdout).unwrap()
+    (
+        out.status.success(),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn run(args: &[&str]) -> String {
+    let (ok, stdout, stderr) = run_any(args);
+    assert!(ok, "{args:?} failed: {stderr}");
+    stdout
 }
 
 fn out_path(name: &str) -> PathBuf {
@@ -50,6 +63,13 @@ fn mesh_json_reports_the_contract_fields_and_compares_with_npass() {
 /// single view differs from it (parallax), which shows `--compare` compares.
 #[test]
 fn every_method_and_visibility_runs_and_matches_npass() {
+    // The CLI picks the adapter the tests do (same environment).
+    let (features, adapter, best) = {
+        let ctx = common::gpu();
+        let best = Visibility::best_exact(&ctx.device).name();
+        (ctx.device.features(), ctx.info().name.clone(), best)
+    };
+    let atomics = Visibility::Compute.required_features();
     for (args, method, visibility) in [
         (vec!["--method", "n-pass"], "n-pass", None),
         (vec!["--visibility", "exact"], "single-pass", Some("exact")),
@@ -64,7 +84,7 @@ fn every_method_and_visibility_runs_and_matches_npass() {
             Some("compute"),
         ),
         (vec!["--visibility", "fast"], "single-pass", Some("fast")),
-        (vec!["--bounds", "paper"], "single-pass", Some("compute")),
+        (vec!["--bounds", "paper"], "single-pass", Some(best)),
         (vec!["--method", "single-view"], "single-view", None),
     ] {
         let mut all = vec![
@@ -77,6 +97,15 @@ fn every_method_and_visibility_runs_and_matches_npass() {
             "lenticular:4",
         ];
         all.extend(&args);
+        let needs_atomics = matches!(visibility, Some("atomic" | "compute"));
+        if needs_atomics && !features.contains(atomics) {
+            let (ok, _, stderr) = run_any(&all);
+            assert!(!ok && !stderr.contains("panicked"), "{args:?}: {stderr}");
+            for expected in [adapter.as_str(), "64-bit atomic", "--visibility exact"] {
+                assert!(stderr.contains(expected), "{args:?}: {stderr}");
+            }
+            continue;
+        }
         let json: serde_json::Value = serde_json::from_str(run(&all).trim()).unwrap();
         assert_eq!(json["method"], method, "{args:?}: {json}");
         assert_eq!(json["visibility"].as_str(), visibility, "{args:?}: {json}");

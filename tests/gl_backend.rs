@@ -12,7 +12,7 @@ use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::{MaskImageRenderer, MeshBaseline, MeshBaselineMethod, Renderer};
 use autostereo::target::SpatialTarget;
 
-/// One GL context per process, shared by the tests (PLATFORM.md: a second device from the same
+/// One GL context per process, shared by the tests (docs/DESIGN.md §7: a second device from the same
 /// GL adapter makes the first render zeros).
 fn gl() -> std::sync::MutexGuard<'static, GpuContext> {
     static GL: std::sync::OnceLock<std::sync::Mutex<GpuContext>> = std::sync::OnceLock::new();

@@ -132,7 +132,7 @@ fn looking_glass_mapping_reproduces_the_holoplay_formula() {
     }
 }
 
-/// DESIGN §1: the WGSL mask equals the Rust mask on every subpixel of a 7680×4320 panel with a
+/// docs/DESIGN.md §1: the WGSL mask equals the Rust mask on every subpixel of a 7680×4320 panel with a
 /// non-zero window origin, for every display kind.
 #[test]
 fn wgsl_mask_equals_rust_mask_on_an_8k_panel() {

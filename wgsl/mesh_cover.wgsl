@@ -1,4 +1,4 @@
-// Covering quads (DESIGN §3), one compute invocation per triangle: eye-space vertices and the
+// Covering quads (docs/DESIGN.md §3), one compute invocation per triangle: eye-space vertices and the
 // NDC rectangle that covers the triangle's projections in all views (shared/cover_bounds.wgsl).
 // Computing this once per triangle (not once per quad corner) keeps the vertex stage to one
 // 16-byte load.
@@ -30,7 +30,7 @@ fn cs_main(@builtin(workgroup_id) group: vec3<u32>, @builtin(num_workgroups) gro
     }
     // Rays go through pixel centres and the bounds are exact, so a pixel whose centre any view's
     // projection covers is inside the rectangle already; a sliver of padding absorbs rounding
-    // (DESIGN §3 suggests a whole pixel, which triples the fragments of 1-pixel triangles).
+    // (docs/DESIGN.md §3 suggests a whole pixel, which triples the fragments of 1-pixel triangles).
     // Then to NDC (focal window ↦ [−1, 1]), clamped so that near triangles stay finite.
     let pad = COVER_PADDING_PX * frame.camera.focal_window / frame.camera.viewport;
     let half = 0.5 * frame.camera.focal_window;

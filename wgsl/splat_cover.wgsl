@@ -1,4 +1,4 @@
-// Covering quads of splats (DESIGN §3), one invocation per splat: the eye-space splat and the
+// Covering quads of splats (docs/DESIGN.md §3), one invocation per splat: the eye-space splat and the
 // NDC rectangle covering its disk for every camera offset in [cover_lo, cover_hi].
 //
 // The disk's axis-aligned box (half-extent r·√(1 − n_j²) per axis) is clipped to the near

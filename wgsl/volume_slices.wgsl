@@ -1,6 +1,6 @@
 // Volumes, the paper's fragment path (§3.3.1, §3.5.1): view-aligned proxy slices at the eye
 // depths d = k·Δ, drawn back to front as rectangles covering the slice's intersection with the
-// box in every view (DESIGN §3 widening). Per fragment and subpixel view, the view's ray meets
+// box in every view (docs/DESIGN.md §3 widening). Per fragment and subpixel view, the view's ray meets
 // slices k and k+1 at the centre view's position shifted by Eq. 1; the segment between them is
 // pre-integrated and shaded, and composited "over" what lies behind.
 //   paper α: one α per pixel, the mean of the K views' (2007 GPUs had one blend α);

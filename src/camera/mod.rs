@@ -1,4 +1,4 @@
-//! Multi-view camera (DESIGN §2): N parallel cameras offset along eye-space +x whose sheared
+//! Multi-view camera (docs/DESIGN.md §2): N parallel cameras offset along eye-space +x whose sheared
 //! frusta share one window on the focal plane.
 
 mod framing;

@@ -50,10 +50,7 @@ impl Calibration {
     /// Read a `visual.json`. Each field may be `{"value": x}` (as Looking Glass writes them) or a
     /// plain number. Missing or non-numeric fields are errors naming the field.
     pub fn load(path: &Path) -> Result<Self> {
-        let text = std::fs::read_to_string(path).map_err(|source| Error::Io {
-            path: path.to_path_buf(),
-            source,
-        })?;
+        let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
         Self::from_json(&text, path)
     }
 

@@ -135,7 +135,7 @@ fn mul_high(t: u32, n: u32) -> u32 {
     (hi + lo) >> 16
 }
 
-/// The paper's Eq. 4–6 on integer indices (DESIGN §1), `y` top-down on the panel
+/// The paper's Eq. 4–6 on integer indices (docs/DESIGN.md §1), `y` top-down on the panel
 /// (origin already added). Used to prove that `hubner8` equals the slanted model.
 pub fn hubner8_paper_view(x: u32, y: u32, c: u32) -> u32 {
     let x_offset = (3 * x) % 8;

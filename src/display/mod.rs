@@ -1,4 +1,4 @@
-//! Display models (DESIGN §1): which view each (sub)pixel of the panel shows.
+//! Display models (docs/DESIGN.md §1): which view each (sub)pixel of the panel shows.
 //!
 //! Every kind compiles to one [`Mask`]: a slanted-lens phase in 32-bit fixed point that Rust
 //! ([`Mask::view`]) and WGSL (`wgsl/shared/mask.wgsl`) evaluate with the same integer arithmetic,
@@ -151,7 +151,7 @@ impl Display {
     pub fn mask(&self) -> Mask {
         let (pitch, slant, phase, subpixel, extra_bgr, extra_flip) = match &self.kind {
             DisplayKind::Lenticular { views } => (*views as f64, 0.0, 0.0, false, false, false),
-            // DESIGN §1: Eq. 4–6 are exactly slanted(N=8, P=8, s=2/3, φ=7/6); a test proves it.
+            // docs/DESIGN.md §1: Eq. 4–6 are exactly slanted(N=8, P=8, s=2/3, φ=7/6); a test proves it.
             DisplayKind::Hubner8 => (8.0, 2.0 / 3.0, 7.0 / 6.0, true, false, false),
             DisplayKind::Slanted {
                 pitch,

@@ -117,10 +117,7 @@ struct Header {
 
 /// Load the `vertex` element of a PLY file.
 pub fn load(path: &Path) -> Result<PointCloud> {
-    let bytes = std::fs::read(path).map_err(|e| Error::Io {
-        path: path.into(),
-        source: e,
-    })?;
+    let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
     parse(&bytes).map_err(|reason| Error::Points {
         path: path.into(),
         reason,

@@ -56,11 +56,12 @@ impl ViewLayers {
     ) -> Result<Self> {
         let views = layers;
         check_size_2d(device, size[0], size[1])?;
+        let allocated = array_layers_for(size, views);
         let limit = device.limits().max_texture_array_layers;
-        if views > limit {
+        if allocated > limit {
             return Err(Error::LimitExceeded {
                 what: format!("{what} (texture array layers)"),
-                value: views.into(),
+                value: allocated.into(),
                 limit: limit.into(),
             });
         }
@@ -72,7 +73,7 @@ impl ViewLayers {
         let scope = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
         let texture = device.create_texture(&wgpu::TextureDescriptor {
             label: Some(what),
-            size: extent(views),
+            size: extent(allocated),
             mip_level_count: 1,
             sample_count: 1,
             dimension: wgpu::TextureDimension::D2,
@@ -101,6 +102,7 @@ impl ViewLayers {
         let array_view = texture.create_view(&wgpu::TextureViewDescriptor {
             label: Some("view layers"),
             dimension: Some(wgpu::TextureViewDimension::D2Array),
+            array_layer_count: Some(views),
             ..Default::default()
         });
         let layer_views = (0..views)
@@ -126,7 +128,36 @@ impl ViewLayers {
     pub fn key(&self) -> ([u32; 2], u32) {
         (
             [self.texture.width(), self.texture.height()],
-            self.texture.depth_or_array_layers(),
+            self.layer_views.len() as u32,
         )
+    }
+}
+
+/// Array layers to allocate for `layers` usable ones of `size`: never 1, and never a multiple
+/// of 6 when the layers are square. wgpu's GL backend picks the GL texture target from the
+/// descriptor alone: one layer makes a plain `TEXTURE_2D` and square multiples of 6 make a cube
+/// map, and a `texture_2d_array` binding of either reads zeros (docs/DESIGN.md §7). One spare
+/// layer keeps every adapter on the same, array, path.
+pub(crate) fn array_layers_for(size: [u32; 2], layers: u32) -> u32 {
+    let cube_like = size[0] == size[1] && layers.is_multiple_of(6);
+    if layers <= 1 || cube_like {
+        layers + 1
+    } else {
+        layers
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::array_layers_for;
+
+    #[test]
+    fn layer_counts_avoid_what_gl_takes_for_2d_or_cube_textures() {
+        assert_eq!(array_layers_for([64, 64], 1), 2);
+        assert_eq!(array_layers_for([64, 32], 1), 2);
+        assert_eq!(array_layers_for([64, 64], 6), 7);
+        assert_eq!(array_layers_for([64, 64], 12), 13);
+        assert_eq!(array_layers_for([64, 32], 6), 6);
+        assert_eq!(array_layers_for([64, 64], 8), 8);
     }
 }

@@ -15,7 +15,7 @@ use super::specialize::Specialization;
 use super::texture::{cached_texture_2d, Texture2d};
 use super::volume_raycast::VolumeScene;
 use super::volume_resources::VolumeResources;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::frame::Frame;
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 
@@ -55,16 +55,12 @@ pub struct VolumeSlicer {
 impl VolumeSlicer {
     /// Needs `DUAL_SOURCE_BLENDING` (per-channel blend factors).
     pub fn new(device: &wgpu::Device, alpha: AlphaMode) -> Result<Self> {
-        if !device
-            .features()
-            .contains(wgpu::Features::DUAL_SOURCE_BLENDING)
-        {
-            return Err(Error::MissingFeature {
-                adapter: "this device".into(),
-                feature: "DUAL_SOURCE_BLENDING".into(),
-                purpose: "the proxy-slice volume path".into(),
-            });
-        }
+        crate::gpu::require_features(
+            device,
+            wgpu::Features::DUAL_SOURCE_BLENDING,
+            "the proxy-slice volume path (--path slices)",
+            "use --path compute (the ray-marching compute path)",
+        )?;
         let resources = VolumeResources::new(device, wgpu::ShaderStages::VERTEX_FRAGMENT);
         let layout = |label, ty| {
             device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {

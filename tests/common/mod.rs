@@ -1,4 +1,4 @@
-//! Shared test helpers: one GPU context per test process (PLATFORM.md: one device per adapter).
+//! Shared test helpers: one GPU context per test process (docs/DESIGN.md §7: one device per adapter).
 //! No adapter is a test failure, never a skip: CI installs lavapipe.
 #![allow(dead_code)]
 
@@ -64,4 +64,43 @@ pub fn frame(
     .unwrap();
     camera.focal_distance *= focal_scale;
     autostereo::frame::Frame::new(camera, display, size).unwrap()
+}
+
+/// `MeshSinglePass` for `options` where the adapter runs that mode; where it lacks the mode's
+/// features, asserts the clear error (adapter named, capability in words, the mode to use
+/// instead) and returns `None`.
+pub fn mesh_single_pass(
+    device: &wgpu::Device,
+    options: autostereo::render::MeshSinglePassOptions,
+) -> Option<autostereo::render::MeshSinglePass> {
+    let result = autostereo::render::MeshSinglePass::new(device, options);
+    if device
+        .features()
+        .contains(options.visibility.required_features())
+    {
+        return Some(result.unwrap_or_else(|e| panic!("{:?}: {e}", options.visibility)));
+    }
+    let error = result
+        .err()
+        .unwrap_or_else(|| panic!("{:?} must fail without its features", options.visibility));
+    assert_missing_feature(device, &error, "--visibility exact");
+    None
+}
+
+/// `error` is the clear missing-capability error: it names the adapter and suggests `instead`.
+pub fn assert_missing_feature(device: &wgpu::Device, error: &autostereo::Error, instead: &str) {
+    let message = error.to_string();
+    assert!(
+        matches!(error, autostereo::Error::MissingFeature { .. }),
+        "{message}"
+    );
+    assert!(
+        message.contains(&device.adapter_info().name),
+        "names the adapter: {message}"
+    );
+    assert!(message.contains(instead), "suggests {instead}: {message}");
+    assert!(
+        !message.contains("FeaturesWGPU") && !message.contains("this device"),
+        "in words: {message}"
+    );
 }

@@ -1,4 +1,4 @@
-// Multi-view camera (DESIGN §2). Keep in sync with src/camera/gpu.rs.
+// Multi-view camera (docs/DESIGN.md §2). Keep in sync with src/camera/gpu.rs.
 
 struct Camera {
     eye_from_world: mat4x4<f32>,

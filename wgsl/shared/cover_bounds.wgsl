@@ -1,4 +1,4 @@
-// Covering bounds (DESIGN §3) of one triangle on the focal plane: y from the centre projection,
+// Covering bounds (docs/DESIGN.md §3) of one triangle on the focal plane: y from the centre projection,
 // x widened per vertex by vd·|1 − fd/d| (exact for the sheared frusta; the paper's printed
 // vd·fd/d under-covers geometry beyond 2·fd and is kept only as a measured option). Vertices
 // behind the near plane are clipped first, so a triangle crossing it gets the bounds of its

@@ -1,4 +1,4 @@
-// Display mask: which view each (sub)pixel shows (DESIGN §1).
+// Display mask: which view each (sub)pixel shows (docs/DESIGN.md §1).
 // Keep in sync with `MaskUniform` / `Mask::view` in src/display/mask.rs: the same 0.32
 // fixed-point, wrap-around integer arithmetic, operation for operation.
 

@@ -5,7 +5,7 @@
 override VIEWS_PER_PIXEL: u32 = 3u;
 override VIEW_COUNT: u32 = 8u;
 
-// Eye-space offset vd_i = (i − (N−1)/2)·e of view i (DESIGN §2).
+// Eye-space offset vd_i = (i − (N−1)/2)·e of view i (docs/DESIGN.md §2).
 fn view_offset(view: u32) -> f32 {
     return (f32(view) - 0.5 * f32(VIEW_COUNT - 1u)) * frame.camera.separation;
 }

@@ -1,4 +1,4 @@
-// Per-subpixel rays (DESIGN §4): from view origin O_i = (vd_i, 0, 0) through the pixel centre
+// Per-subpixel rays (docs/DESIGN.md §4): from view origin O_i = (vd_i, 0, 0) through the pixel centre
 // X on the focal plane. With D = X − O_i the ray is O_i + t·D and the eye depth is t·fd.
 
 struct Ray {

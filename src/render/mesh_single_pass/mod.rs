@@ -2,7 +2,7 @@
 //! triangle, per-subpixel ray-triangle tests, the spatial image written directly.
 //!
 //! Every frame: a compute pass (`mesh_cover.wgsl`) transforms each triangle once and computes
-//! its covering rectangle (DESIGN §3, near-plane clipped); one geometry pass draws the
+//! its covering rectangle (docs/DESIGN.md §3, near-plane clipped); one geometry pass draws the
 //! rectangles; the exact modes add a full-screen resolve that shades each subpixel once.
 //!
 //! Visibility ([`Visibility`]):
@@ -24,7 +24,7 @@ use std::collections::HashMap;
 use super::pipeline::{begin_pass, cleared, draw_fullscreen};
 use super::renderer::{check_target, Renderer};
 use super::specialize::Specialization;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::frame::{Frame, FrameBinding};
 use crate::mesh::MeshBuffers;
 use crate::target::SpatialTarget;
@@ -83,7 +83,7 @@ impl Visibility {
 /// Horizontal extent of the covering rectangles.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum CoverBounds {
-    /// DESIGN §3: `x ± vd·|1 − fd/d|` per vertex. Always covers.
+    /// docs/DESIGN.md §3: `x ± vd·|1 − fd/d|` per vertex. Always covers.
     Exact,
     /// The paper's printed `(x ∓ vd)·fd/d`: under-covers geometry beyond 2·fd (kept to measure).
     Paper,
@@ -120,14 +120,16 @@ pub struct MeshSinglePass {
 impl MeshSinglePass {
     /// Check that the device can run `options`; prepare the bind group layouts.
     pub fn new(device: &wgpu::Device, options: MeshSinglePassOptions) -> Result<Self> {
-        let missing = options.visibility.required_features() - device.features();
-        if !missing.is_empty() {
-            return Err(Error::MissingFeature {
-                adapter: "this device".into(),
-                feature: format!("{missing:?}"),
-                purpose: format!("{:?} visibility of single-pass meshes", options.visibility),
-            });
-        }
+        crate::gpu::require_features(
+            device,
+            options.visibility.required_features(),
+            &format!(
+                "single-pass meshes with --visibility {}",
+                options.visibility.name()
+            ),
+            "use --visibility exact (Visibility::Exact), which every adapter runs and which \
+             gives the same image",
+        )?;
         let layouts = Layouts::new(device);
         Ok(Self {
             options,

@@ -7,15 +7,15 @@
 
 use std::path::Path;
 
-use super::{format_error, io_error, to_volume, SampleType};
-use crate::error::Result;
+use super::{format_error, to_volume, SampleType};
+use crate::error::{Error, Result};
 use crate::volume::{check_dims, Volume};
 
 const HEADER_BYTES: usize = 29 * 2 + 4;
 
 /// Load a `.den` file (unit spacing: the format has none).
 pub fn load_den(path: &Path) -> Result<Volume> {
-    let bytes = std::fs::read(path).map_err(|e| io_error(path, e))?;
+    let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
     if bytes.len() < HEADER_BYTES {
         return Err(format_error(
             path,

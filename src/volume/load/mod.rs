@@ -120,13 +120,6 @@ pub(crate) fn format_error(path: &Path, reason: impl Into<String>) -> Error {
     }
 }
 
-pub(crate) fn io_error(path: &Path, source: std::io::Error) -> Error {
-    Error::Io {
-        path: path.to_path_buf(),
-        source,
-    }
-}
-
 /// Load by extension: `.nrrd`/`.nhdr` → NRRD, `.den` → VolPack. Raw files need [`load_raw`].
 pub fn load_any(path: &Path) -> Result<Volume> {
     let ext = path

@@ -4,8 +4,8 @@
 use std::io::Read;
 use std::path::Path;
 
-use super::{data_bytes, decode, format_error, io_error, to_volume, SampleType};
-use crate::error::Result;
+use super::{data_bytes, decode, format_error, to_volume, SampleType};
+use crate::error::{Error, Result};
 use crate::volume::Volume;
 
 /// Longest header accepted (a guard against reading a binary file as text).
@@ -155,7 +155,7 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
 
 /// Load a `.nrrd` (attached data) or `.nhdr` (detached, `data file:` relative to it).
 pub fn load_nrrd(path: &Path) -> Result<Volume> {
-    let bytes = std::fs::read(path).map_err(|e| io_error(path, e))?;
+    let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
     let head_len = bytes
         .windows(2)
         .take(MAX_HEADER_BYTES)
@@ -177,7 +177,7 @@ pub fn load_nrrd(path: &Path) -> Result<Volume> {
     let payload: Vec<u8> = match &header.data_file {
         Some(name) => {
             let data_path = path.parent().unwrap_or(Path::new(".")).join(name);
-            std::fs::read(&data_path).map_err(|e| io_error(&data_path, e))?
+            std::fs::read(&data_path).map_err(|e| Error::io(&data_path, e))?
         }
         None => bytes[head_len.unwrap_or(bytes.len())..].to_vec(),
     };

@@ -2,8 +2,8 @@
 
 use std::path::Path;
 
-use super::{data_bytes, decode, format_error, io_error, to_volume, SampleType};
-use crate::error::Result;
+use super::{data_bytes, decode, format_error, to_volume, SampleType};
+use crate::error::{Error, Result};
 use crate::volume::Volume;
 
 /// How to read a raw file.
@@ -35,7 +35,7 @@ pub fn load_raw(path: &Path, spec: &RawSpec) -> Result<Volume> {
             )
         })?;
     let actual = std::fs::metadata(path)
-        .map_err(|e| io_error(path, e))?
+        .map_err(|e| Error::io(path, e))?
         .len();
     if actual != needed {
         return Err(format_error(
@@ -50,7 +50,7 @@ pub fn load_raw(path: &Path, spec: &RawSpec) -> Result<Volume> {
             ),
         ));
     }
-    let bytes = std::fs::read(path).map_err(|e| io_error(path, e))?;
+    let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
     let samples = decode(
         &bytes[spec.header_bytes as usize..],
         spec.kind,

@@ -98,7 +98,7 @@ impl Plan {
 }
 
 /// The K = 3 display with N views of the N sweep: the slanted lens of the paper's display
-/// (`hubner8` is exactly `slanted:8,8,2/3,7/6`, DESIGN §1).
+/// (`hubner8` is exactly `slanted:8,8,2/3,7/6`, docs/DESIGN.md §1).
 pub fn sweep_display(n: u32) -> String {
     if n == 8 {
         "hubner8".into()
