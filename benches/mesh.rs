@@ -15,7 +15,7 @@ use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::{
-    MeshBaseline, MeshBaselineMethod, MeshSinglePass, MeshSinglePassOptions, Renderer, Visibility,
+    MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Method, Renderer, Visibility,
 };
 use autostereo::target::SpatialTarget;
 use autostereo::timing::FrameTimer;
@@ -36,8 +36,8 @@ fn bench(c: &mut Criterion) {
     let (device, queue) = (&ctx.device, &ctx.queue);
     let target = SpatialTarget::new(device, SIZE).unwrap();
     let timer = FrameTimer::new(device, queue);
-    let mut npass = MeshBaseline::new(device, MeshBaselineMethod::NPass).unwrap();
-    let mut single_view = MeshBaseline::new(device, MeshBaselineMethod::SingleView).unwrap();
+    let mut npass = MeshBaseline::new(device, Method::NPass).unwrap();
+    let mut single_view = MeshBaseline::new(device, Method::SingleView).unwrap();
     let mut single_pass: Vec<(&str, MeshSinglePass)> = [
         Visibility::Compute,
         Visibility::ExactAtomic,
@@ -78,19 +78,24 @@ fn bench(c: &mut Criterion) {
             configure(&mut group);
             for (name, renderer) in &mut single_pass {
                 group.bench_function(BenchmarkId::new("single-pass", *name), |b| {
+                    renderer.prepare(device, queue, &buffers, &frame).unwrap();
                     gpu_iter(b, &timer, device, queue, |e| {
-                        renderer.encode(device, queue, e, &buffers, &frame, &target)
+                        renderer.encode(device, e, &buffers, &frame, &target)
                     })
                 });
             }
             group.bench_function("n-pass", |b| {
+                npass.prepare(device, queue, &buffers, &frame).unwrap();
                 gpu_iter(b, &timer, device, queue, |e| {
-                    npass.encode(device, queue, e, &buffers, &frame, &target)
+                    npass.encode(device, e, &buffers, &frame, &target)
                 })
             });
             group.bench_function("single-view", |b| {
+                single_view
+                    .prepare(device, queue, &buffers, &frame)
+                    .unwrap();
                 gpu_iter(b, &timer, device, queue, |e| {
-                    single_view.encode(device, queue, e, &buffers, &frame, &target)
+                    single_view.encode(device, e, &buffers, &frame, &target)
                 })
             });
             group.finish();

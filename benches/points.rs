@@ -14,7 +14,7 @@ use autostereo::display::Display;
 use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::points::{GroupCount, PointCloud, SplatScene};
-use autostereo::render::{PointSplatter, Renderer, SplatDepth, SplatMethod, SplatOptions};
+use autostereo::render::{Method, PointSplatter, Renderer, SplatDepth, SplatOptions};
 use autostereo::target::SpatialTarget;
 use autostereo::timing::FrameTimer;
 use common::{configure, gpu_iter, SIZE};
@@ -45,16 +45,16 @@ fn bench(c: &mut Criterion) {
     let mut methods: Vec<(&str, PointSplatter)> = vec![
         (
             "single-pass (exact depth)",
-            splatter(SplatMethod::SinglePass, SplatDepth::Exact),
+            splatter(Method::SinglePass, SplatDepth::Exact),
         ),
         (
             "single-pass (paper depth)",
-            splatter(SplatMethod::SinglePass, SplatDepth::Paper),
+            splatter(Method::SinglePass, SplatDepth::Paper),
         ),
-        ("n-pass", splatter(SplatMethod::NPass, SplatDepth::Exact)),
+        ("n-pass", splatter(Method::NPass, SplatDepth::Exact)),
         (
             "single-view",
-            splatter(SplatMethod::SingleView, SplatDepth::Exact),
+            splatter(Method::SingleView, SplatDepth::Exact),
         ),
     ];
     for views in [2u32, 8, 64] {
@@ -76,8 +76,9 @@ fn bench(c: &mut Criterion) {
                 continue;
             }
             group.bench_function(*name, |b| {
+                renderer.prepare(device, queue, &scene, &frame).unwrap();
                 gpu_iter(b, &timer, device, queue, |e| {
-                    renderer.encode(device, queue, e, &scene, &frame, &target)
+                    renderer.encode(device, e, &scene, &frame, &target)
                 })
             });
         }

@@ -13,9 +13,7 @@ use autostereo::camera::MultiViewCamera;
 use autostereo::display::Display;
 use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
-use autostereo::render::{
-    AlphaMode, Renderer, VolumeMethod, VolumeRaycaster, VolumeScene, VolumeSlicer,
-};
+use autostereo::render::{AlphaMode, Method, Renderer, VolumeRaycaster, VolumeScene, VolumeSlicer};
 use autostereo::target::SpatialTarget;
 use autostereo::timing::FrameTimer;
 use autostereo::volume::{load, phantom, TransferFunction, Volume};
@@ -45,14 +43,10 @@ fn bench(c: &mut Criterion) {
     };
     // (name, renderer, empty-space skipping)
     let mut methods: Vec<(&str, Box<dyn Renderer<VolumeScene>>, bool)> = vec![
-        (
-            "single-pass (compute)",
-            raycaster(VolumeMethod::SinglePass),
-            true,
-        ),
+        ("single-pass (compute)", raycaster(Method::SinglePass), true),
         (
             "single-pass (compute, no skipping)",
-            raycaster(VolumeMethod::SinglePass),
+            raycaster(Method::SinglePass),
             false,
         ),
         (
@@ -65,8 +59,8 @@ fn bench(c: &mut Criterion) {
             Box::new(VolumeSlicer::new(device, AlphaMode::Paper).unwrap()),
             true,
         ),
-        ("n-pass", raycaster(VolumeMethod::NPass), true),
-        ("single-view", raycaster(VolumeMethod::SingleView), true),
+        ("n-pass", raycaster(Method::NPass), true),
+        ("single-view", raycaster(Method::SingleView), true),
     ];
     for (name, volume, tf) in data_sets() {
         let transfer = TransferFunction::preset(tf).unwrap();
@@ -86,8 +80,9 @@ fn bench(c: &mut Criterion) {
             for (method, renderer, skip_empty) in &mut methods {
                 scene.skip_empty = *skip_empty;
                 group.bench_function(*method, |b| {
+                    renderer.prepare(device, queue, &scene, &frame).unwrap();
                     gpu_iter(b, &timer, device, queue, |e| {
-                        renderer.encode(device, queue, e, &scene, &frame, &target)
+                        renderer.encode(device, e, &scene, &frame, &target)
                     })
                 });
             }

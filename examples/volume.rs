@@ -9,7 +9,7 @@ use autostereo::display::Display;
 use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::image_io::compare;
-use autostereo::render::{Renderer, VolumeMethod, VolumeRaycaster, VolumeScene};
+use autostereo::render::{Method, Renderer, VolumeRaycaster, VolumeScene};
 use autostereo::target::SpatialTarget;
 use autostereo::volume::{load, phantom, TransferFunction};
 use glam::Mat4;
@@ -45,7 +45,7 @@ fn main() -> Result<()> {
 
     // One single-pass frame, straight into the spatial image.
     let target = SpatialTarget::new(&ctx.device, size)?;
-    let mut single_pass = VolumeRaycaster::new(&ctx.device, VolumeMethod::SinglePass)?;
+    let mut single_pass = VolumeRaycaster::new(&ctx.device, Method::SinglePass)?;
     single_pass.render(&ctx.device, &ctx.queue, &scene, &frame, &target)?;
     let image = target.read(&ctx.device, &ctx.queue)?;
     let out = args.get(1).map(String::as_str).unwrap_or("volume.png");
@@ -53,7 +53,7 @@ fn main() -> Result<()> {
 
     // The N-pass oracle: one render per view, composited with the same mask.
     let reference = SpatialTarget::new(&ctx.device, size)?;
-    VolumeRaycaster::new(&ctx.device, VolumeMethod::NPass)?.render(
+    VolumeRaycaster::new(&ctx.device, Method::NPass)?.render(
         &ctx.device,
         &ctx.queue,
         &scene,

@@ -109,6 +109,18 @@ pub enum Error {
         /// The OS error.
         error: std::io::Error,
     },
+    /// `Renderer::encode` was called for a frame its renderer was not prepared for.
+    #[error(
+        "{renderer}: encode needs prepare() for this frame first ({frame}; prepared: {prepared})"
+    )]
+    NotPrepared {
+        /// The renderer.
+        renderer: &'static str,
+        /// What the frame needs (display specialisation, size, scene).
+        frame: String,
+        /// What the renderer was last prepared for.
+        prepared: String,
+    },
     /// The GPU reported a validation or out-of-memory error for an operation.
     #[error("GPU error during {operation}: {message}")]
     Gpu {

@@ -45,6 +45,11 @@ pub struct LightUniform {
     specular: [f32; 4],
 }
 const _: () = assert!(std::mem::size_of::<LightUniform>() == 64);
+crate::shader::gpu_layout!(
+    LightUniform,
+    "Light",
+    [direction, ambient, diffuse, specular]
+);
 
 impl From<&Light> for LightUniform {
     fn from(l: &Light) -> Self {
@@ -68,6 +73,7 @@ pub struct FrameUniform {
     background: [f32; 4],
 }
 const _: () = assert!(std::mem::size_of::<FrameUniform>() == 288);
+crate::shader::gpu_layout!(FrameUniform, "Frame", [camera, mask, light, background]);
 
 impl FrameUniform {
     /// Replace the display mask (tools that need only the mask start from a zeroed uniform).
@@ -158,40 +164,54 @@ pub fn frame_bind_group_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
     })
 }
 
-/// A uniform buffer holding a [`FrameUniform`] and its group-0 bind group.
+/// A uniform buffer holding a [`FrameUniform`] and its group-0 bind group. Each
+/// [`FrameBinding::write`] makes a new buffer with the frame's constants instead of a queue
+/// write, so frames encoded one after the other before one submit each keep their own
+/// (`src/render/pass_params.rs`).
 pub struct FrameBinding {
-    buffer: wgpu::Buffer,
+    layout: wgpu::BindGroupLayout,
     /// Bind group for group 0.
     pub bind_group: wgpu::BindGroup,
 }
 
 impl FrameBinding {
-    /// Allocate for `layout` (from [`frame_bind_group_layout`]).
+    /// Allocate for `layout` (from [`frame_bind_group_layout`]), zeroed until the first write.
     pub fn new(device: &wgpu::Device, layout: &wgpu::BindGroupLayout) -> Self {
-        let buffer = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("frame uniform"),
-            size: std::mem::size_of::<FrameUniform>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        let bind_group = Self::bind(device, layout, &FrameUniform::zeroed());
+        Self {
+            layout: layout.clone(),
+            bind_group,
+        }
+    }
+
+    fn bind(
+        device: &wgpu::Device,
+        layout: &wgpu::BindGroupLayout,
+        uniform: &FrameUniform,
+    ) -> wgpu::BindGroup {
+        let buffer = crate::render::pass_params::constants_buffer(
+            device,
+            "frame uniform",
+            wgpu::BufferUsages::UNIFORM,
+            bytemuck::bytes_of(uniform),
+        );
+        device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("frame"),
             layout,
             entries: &[wgpu::BindGroupEntry {
                 binding: 0,
                 resource: buffer.as_entire_binding(),
             }],
-        });
-        Self { buffer, bind_group }
+        })
     }
 
-    /// Upload `frame`'s constants.
-    pub fn write(&self, queue: &wgpu::Queue, frame: &Frame) {
-        self.write_uniform(queue, &frame.uniform());
+    /// `frame`'s constants, for the passes recorded next.
+    pub fn write(&mut self, device: &wgpu::Device, frame: &Frame) {
+        self.write_uniform(device, &frame.uniform());
     }
 
-    /// Upload a prepared uniform.
-    pub fn write_uniform(&self, queue: &wgpu::Queue, uniform: &FrameUniform) {
-        queue.write_buffer(&self.buffer, 0, bytemuck::bytes_of(uniform));
+    /// A prepared uniform, for the passes recorded next.
+    pub fn write_uniform(&mut self, device: &wgpu::Device, uniform: &FrameUniform) {
+        self.bind_group = Self::bind(device, &self.layout, uniform);
     }
 }

@@ -15,7 +15,8 @@ macro_rules! wgsl {
     };
 }
 
-/// Shared WGSL, by import path.
+/// Shared WGSL, by import path: frame-level code in `shared/`, each primitive's own in
+/// `PRIMITIVE/shared/`. Shared files hold types, constants and functions, never bindings.
 const SHARED: &[(&str, &str)] = &[
     wgsl!("shared/camera.wgsl"),
     wgsl!("shared/mask.wgsl"),
@@ -23,43 +24,76 @@ const SHARED: &[(&str, &str)] = &[
     wgsl!("shared/frame.wgsl"),
     wgsl!("shared/multiview.wgsl"),
     wgsl!("shared/ray.wgsl"),
-    wgsl!("shared/mesh_data.wgsl"),
-    wgsl!("shared/eye_triangle.wgsl"),
-    wgsl!("shared/cover_bounds.wgsl"),
-    wgsl!("shared/cover_data.wgsl"),
-    wgsl!("shared/cover.wgsl"),
-    wgsl!("shared/resolve.wgsl"),
-    wgsl!("shared/volume.wgsl"),
-    wgsl!("shared/splat.wgsl"),
-    wgsl!("shared/splat_quad.wgsl"),
+    wgsl!("mesh/shared/mesh_data.wgsl"),
+    wgsl!("mesh/shared/eye_triangle.wgsl"),
+    wgsl!("mesh/shared/cover_bounds.wgsl"),
+    wgsl!("mesh/shared/cover_data.wgsl"),
+    wgsl!("mesh/shared/cover.wgsl"),
+    wgsl!("mesh/shared/resolve.wgsl"),
+    wgsl!("volume/shared/volume.wgsl"),
+    wgsl!("points/shared/splat.wgsl"),
+    wgsl!("points/shared/splat_quad.wgsl"),
 ];
 
-/// One WGSL file per pipeline stage, by file name.
+/// One WGSL file per pipeline stage, by path under `wgsl/`: `render/` for the frame-level
+/// passes, `PRIMITIVE/` for each primitive's, named after the Rust module that drives them.
+/// Each declares every `@group/@binding` it uses at its top.
 pub const STAGES: &[(&str, &str)] = &[
-    wgsl!("mask_image.wgsl"),
-    wgsl!("mesh_view.wgsl"),
-    wgsl!("composite.wgsl"),
-    wgsl!("mesh_cover.wgsl"),
-    wgsl!("mesh_single_pass_fast.wgsl"),
-    wgsl!("mesh_single_pass_subpixel.wgsl"),
-    wgsl!("mesh_single_pass_subpixel_resolve.wgsl"),
-    wgsl!("mesh_single_pass_atomic.wgsl"),
-    wgsl!("mesh_single_pass_atomic_resolve.wgsl"),
-    wgsl!("mesh_single_pass_compute.wgsl"),
-    wgsl!("volume_raycast.wgsl"),
-    wgsl!("volume_slices.wgsl"),
-    wgsl!("volume_slices_resolve.wgsl"),
-    wgsl!("splat_cover.wgsl"),
-    wgsl!("splat_pixel.wgsl"),
-    wgsl!("splat_subpixel.wgsl"),
-    wgsl!("splat_composite.wgsl"),
+    wgsl!("render/mask_image.wgsl"),
+    wgsl!("mesh/npass.wgsl"),
+    wgsl!("render/composite.wgsl"),
+    wgsl!("render/output.wgsl"),
+    wgsl!("mesh/single_pass_cover.wgsl"),
+    wgsl!("mesh/single_pass_fast.wgsl"),
+    wgsl!("mesh/single_pass_subpixel.wgsl"),
+    wgsl!("mesh/single_pass_subpixel_resolve.wgsl"),
+    wgsl!("mesh/single_pass_atomic.wgsl"),
+    wgsl!("mesh/single_pass_atomic_resolve.wgsl"),
+    wgsl!("mesh/single_pass_compute.wgsl"),
+    wgsl!("volume/raycast.wgsl"),
+    wgsl!("volume/slices.wgsl"),
+    wgsl!("volume/slices_resolve.wgsl"),
+    wgsl!("points/cover.wgsl"),
+    wgsl!("points/pixel.wgsl"),
+    wgsl!("points/subpixel.wgsl"),
+    wgsl!("points/composite.wgsl"),
 ];
+
+/// The byte layout of a `#[repr(C)]` Rust struct that mirrors WGSL struct `wgsl`: its size and
+/// the offset of each named (non-padding) field. The naga layout test compares it with the
+/// offsets naga computes for the WGSL struct, member by member and by name.
+#[derive(Debug)]
+pub struct GpuLayout {
+    /// The WGSL struct's name.
+    pub wgsl: &'static str,
+    /// `size_of` the Rust struct.
+    pub size: usize,
+    /// (field name, byte offset); padding fields left out.
+    pub fields: &'static [(&'static str, usize)],
+}
+
+/// `impl Type { pub const GPU_LAYOUT: GpuLayout }` from the field list, with `offset_of!`, in
+/// the module that defines `Type` (private fields are visible there).
+macro_rules! gpu_layout {
+    ($ty:ty, $wgsl:literal, [$($field:ident),* $(,)?]) => {
+        impl $ty {
+            /// Byte layout, checked against the WGSL struct by `src/shader.rs`'s tests.
+            #[allow(dead_code)]
+            pub(crate) const GPU_LAYOUT: $crate::shader::GpuLayout = $crate::shader::GpuLayout {
+                wgsl: $wgsl,
+                size: ::std::mem::size_of::<$ty>(),
+                fields: &[$((stringify!($field), ::std::mem::offset_of!($ty, $field))),*],
+            };
+        }
+    };
+}
+pub(crate) use gpu_layout;
 
 fn lookup(table: &[(&str, &'static str)], name: &str) -> Option<&'static str> {
     table.iter().find(|(n, _)| *n == name).map(|(_, s)| *s)
 }
 
-/// The stage `name` (e.g. `"composite.wgsl"`) with its imports resolved.
+/// The stage `name` (e.g. `"render/composite.wgsl"`) with its imports resolved.
 pub fn compose(name: &str) -> Result<String> {
     let source = lookup(STAGES, name).ok_or_else(|| shader_error(name, "no such stage"))?;
     let mut enables = Vec::new();
@@ -146,22 +180,26 @@ mod tests {
     /// Every file under wgsl/ is registered, so none escapes naga validation.
     #[test]
     fn every_wgsl_file_is_registered() {
-        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("wgsl");
-        let mut on_disk = Vec::new();
-        for dir in [root.clone(), root.join("shared")] {
-            for entry in std::fs::read_dir(&dir).unwrap() {
+        fn walk(dir: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
+            for entry in std::fs::read_dir(dir).unwrap() {
                 let path = entry.unwrap().path();
-                if path.extension().is_some_and(|e| e == "wgsl") {
-                    let rel = path
-                        .strip_prefix(&root)
-                        .unwrap()
-                        .to_string_lossy()
-                        .replace('\\', "/");
-                    on_disk.push(rel);
+                if path.is_dir() {
+                    walk(&path, out);
+                } else if path.extension().is_some_and(|e| e == "wgsl") {
+                    out.push(path);
                 }
             }
         }
-        for file in on_disk {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("wgsl");
+        let mut on_disk = Vec::new();
+        walk(&root, &mut on_disk);
+        assert!(on_disk.len() >= SHARED.len() + STAGES.len());
+        for path in on_disk {
+            let file = path
+                .strip_prefix(&root)
+                .unwrap()
+                .to_string_lossy()
+                .replace('\\', "/");
             assert!(
                 SHARED.iter().chain(STAGES).any(|(name, _)| *name == file),
                 "wgsl/{file} is not listed in src/shader.rs"
@@ -169,50 +207,77 @@ mod tests {
         }
     }
 
+    /// Shared files hold only types, constants and functions: bindings live in the stages.
+    #[test]
+    fn shared_files_declare_no_bindings() {
+        for (name, source) in SHARED {
+            for line in source.lines() {
+                assert!(
+                    !line.trim_start().starts_with("@group"),
+                    "wgsl/{name} declares a binding: {line}"
+                );
+            }
+        }
+    }
+
     #[test]
     fn imports_are_inserted_once_and_enables_hoisted() {
-        let text = compose("composite.wgsl").unwrap();
+        let text = compose("render/composite.wgsl").unwrap();
         assert_eq!(text.matches("struct DisplayMask").count(), 1);
         assert!(!text.contains("#import"));
     }
 
-    /// Struct sizes seen by naga equal the Rust `#[repr(C)]` sizes.
+    /// Every Rust struct that mirrors a WGSL struct has naga's size and, member by member and
+    /// by name, naga's offsets (padding members, named `_…`, excepted).
     #[test]
     fn gpu_struct_layouts_match_rust() {
-        /// Size naga computes for struct `name` of stage `stage`.
-        fn wgsl_size(stage: &str, name: &str) -> usize {
+        let cases: &[(&str, GpuLayout)] = &[
+            ("mesh/npass.wgsl", crate::camera::CameraUniform::GPU_LAYOUT),
+            ("mesh/npass.wgsl", crate::camera::ViewUniform::GPU_LAYOUT),
+            ("mesh/npass.wgsl", crate::display::MaskUniform::GPU_LAYOUT),
+            ("mesh/npass.wgsl", crate::frame::LightUniform::GPU_LAYOUT),
+            ("mesh/npass.wgsl", crate::frame::FrameUniform::GPU_LAYOUT),
+            (
+                "mesh/single_pass_compute.wgsl",
+                crate::mesh::GpuVertex::GPU_LAYOUT,
+            ),
+            (
+                "volume/raycast.wgsl",
+                crate::render::VolumeParams::GPU_LAYOUT,
+            ),
+            (
+                "volume/slices.wgsl",
+                crate::volume::passes::slices::SLICE_LAYOUT,
+            ),
+            ("points/cover.wgsl", crate::points::GpuSplat::GPU_LAYOUT),
+            (
+                "points/composite.wgsl",
+                crate::points::passes::SplatParams::GPU_LAYOUT,
+            ),
+        ];
+        for (stage, rust) in cases {
             let module = validate(stage).unwrap();
             let mut layouter = naga::proc::Layouter::default();
             layouter.update(module.to_ctx()).unwrap();
-            let (handle, _) = module
+            let (handle, ty) = module
                 .types
                 .iter()
-                .find(|(_, t)| t.name.as_deref() == Some(name))
-                .unwrap_or_else(|| panic!("type {name} in {stage}"));
-            layouter[handle].size as usize
+                .find(|(_, t)| t.name.as_deref() == Some(rust.wgsl))
+                .unwrap_or_else(|| panic!("struct {} in {stage}", rust.wgsl));
+            assert_eq!(
+                layouter[handle].size as usize, rust.size,
+                "size of {}",
+                rust.wgsl
+            );
+            let naga::TypeInner::Struct { members, .. } = &ty.inner else {
+                panic!("{} is not a struct", rust.wgsl);
+            };
+            let wgsl: Vec<(&str, usize)> = members
+                .iter()
+                .filter_map(|m| Some((m.name.as_deref()?, m.offset as usize)))
+                .filter(|(name, _)| !name.starts_with('_'))
+                .collect();
+            assert_eq!(wgsl, rust.fields, "members of {} ({stage})", rust.wgsl);
         }
-        use std::mem::size_of as rs;
-        let mesh = |name| wgsl_size("mesh_view.wgsl", name);
-        assert_eq!(mesh("Camera"), rs::<crate::camera::CameraUniform>());
-        assert_eq!(mesh("View"), rs::<crate::camera::ViewUniform>());
-        assert_eq!(mesh("DisplayMask"), rs::<crate::display::MaskUniform>());
-        assert_eq!(mesh("Light"), rs::<crate::frame::LightUniform>());
-        assert_eq!(mesh("Frame"), rs::<crate::frame::FrameUniform>());
-        assert_eq!(
-            wgsl_size("mesh_single_pass_compute.wgsl", "MeshVertex"),
-            rs::<crate::mesh::GpuVertex>()
-        );
-        assert_eq!(
-            wgsl_size("volume_raycast.wgsl", "VolumeParams"),
-            rs::<crate::render::VolumeParams>()
-        );
-        assert_eq!(
-            wgsl_size("splat_cover.wgsl", "Splat"),
-            rs::<crate::points::GpuSplat>()
-        );
-        assert_eq!(
-            wgsl_size("splat_composite.wgsl", "SplatParams"),
-            rs::<crate::render::splat::SplatParams>()
-        );
     }
 }

@@ -157,7 +157,7 @@ fn volumes_and_transfer_functions_with_inconsistent_fields_are_errors() {
         assert!(err.contains(expect), "{err}");
     }
     // Public fields changed after construction are checked before every frame.
-    use autostereo::render::{Renderer, VolumeMethod, VolumeRaycaster};
+    use autostereo::render::{Method, Renderer, VolumeRaycaster};
     let mut scene = VolumeScene::new(
         &ctx.device,
         &ctx.queue,
@@ -170,7 +170,7 @@ fn volumes_and_transfer_functions_with_inconsistent_fields_are_errors() {
     scene.step = 0.0;
     let frame = common::frame(head.bounds(), "hubner8", 0.05, 1.0, [16, 16]);
     let target = autostereo::target::SpatialTarget::new(&ctx.device, [16, 16]).unwrap();
-    let mut renderer = VolumeRaycaster::new(&ctx.device, VolumeMethod::SinglePass).unwrap();
+    let mut renderer = VolumeRaycaster::new(&ctx.device, Method::SinglePass).unwrap();
     let err = renderer.render(&ctx.device, &ctx.queue, &scene, &frame, &target);
     assert!(err.unwrap_err().to_string().contains("sampling step"));
 }
@@ -179,7 +179,7 @@ fn volumes_and_transfer_functions_with_inconsistent_fields_are_errors() {
 fn a_target_of_another_size_than_the_frame_is_an_error_for_every_mesh_renderer() {
     use autostereo::mesh::MeshBuffers;
     use autostereo::render::{
-        MeshBaseline, MeshBaselineMethod, MeshSinglePass, MeshSinglePassOptions, Renderer,
+        MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Method, Renderer,
     };
     use autostereo::target::SpatialTarget;
     let ctx = common::gpu();
@@ -188,8 +188,8 @@ fn a_target_of_another_size_than_the_frame_is_an_error_for_every_mesh_renderer()
     let frame = common::frame(mesh.bounds().unwrap(), "hubner8", 0.05, 1.0, [32, 32]);
     let target = SpatialTarget::new(&ctx.device, [48, 32]).unwrap();
     let mut renderers: Vec<Box<dyn Renderer<MeshBuffers>>> = vec![
-        Box::new(MeshBaseline::new(&ctx.device, MeshBaselineMethod::NPass).unwrap()),
-        Box::new(MeshBaseline::new(&ctx.device, MeshBaselineMethod::SingleView).unwrap()),
+        Box::new(MeshBaseline::new(&ctx.device, Method::NPass).unwrap()),
+        Box::new(MeshBaseline::new(&ctx.device, Method::SingleView).unwrap()),
         Box::new(MeshSinglePass::new(&ctx.device, MeshSinglePassOptions::default()).unwrap()),
     ];
     for renderer in &mut renderers {
@@ -389,7 +389,7 @@ fn cli_reports_bad_input_without_panicking() {
 #[test]
 fn bad_point_clouds_and_splat_settings_are_errors() {
     use autostereo::points::PointCloud;
-    use autostereo::render::{PointSplatter, SplatDepth, SplatMethod, SplatOptions};
+    use autostereo::render::{Method, PointSplatter, SplatDepth, SplatOptions};
     let missing = PointCloud::load("no/such/cloud.ply".as_ref()).unwrap_err();
     assert!(matches!(missing, Error::Io { .. }), "{missing}");
     let ply = temp_file("not_ply.ply", "hello\n");
@@ -431,7 +431,7 @@ fn bad_point_clouds_and_splat_settings_are_errors() {
         depth: SplatDepth::Exact,
         epsilon: f32::NAN,
     };
-    let err = PointSplatter::new(&ctx.device, SplatMethod::SinglePass, options)
+    let err = PointSplatter::new(&ctx.device, Method::SinglePass, options)
         .err()
         .unwrap();
     assert!(err.to_string().contains("epsilon"), "{err}");

@@ -9,7 +9,7 @@ use autostereo::frame::Frame;
 use autostereo::gpu::{GpuContext, GpuOptions};
 use autostereo::image_io::{compare, RgbImage};
 use autostereo::mesh::{Mesh, MeshBuffers};
-use autostereo::render::{MaskImageRenderer, MeshBaseline, MeshBaselineMethod, Renderer};
+use autostereo::render::{MaskImageRenderer, MeshBaseline, Method, Renderer};
 use autostereo::target::SpatialTarget;
 
 /// One GL context per process, shared by the tests (docs/DESIGN.md §7: a second device from the same
@@ -31,7 +31,7 @@ fn gl() -> std::sync::MutexGuard<'static, GpuContext> {
 fn render_npass(ctx: &GpuContext, frame: &Frame, mesh: &Mesh) -> RgbImage {
     let buffers = MeshBuffers::new(&ctx.device, mesh).unwrap();
     let target = SpatialTarget::new(&ctx.device, frame.size).unwrap();
-    let mut renderer = MeshBaseline::new(&ctx.device, MeshBaselineMethod::NPass).unwrap();
+    let mut renderer = MeshBaseline::new(&ctx.device, Method::NPass).unwrap();
     renderer
         .render(&ctx.device, &ctx.queue, &buffers, frame, &target)
         .unwrap();
@@ -87,8 +87,8 @@ fn gl_backend_renders_masks_and_meshes() {
 #[test]
 fn gl_backend_runs_the_single_pass_renderers() {
     use autostereo::render::{
-        AlphaMode, MeshSinglePass, MeshSinglePassOptions, Visibility, VolumeMethod,
-        VolumeRaycaster, VolumeScene, VolumeSlicer,
+        AlphaMode, MeshSinglePass, MeshSinglePassOptions, Method, Visibility, VolumeRaycaster,
+        VolumeScene, VolumeSlicer,
     };
     use autostereo::volume::{phantom, TransferFunction};
 
@@ -135,8 +135,8 @@ fn gl_backend_runs_the_single_pass_renderers() {
             .unwrap();
         read(&target)
     };
-    let npass = render(&mut VolumeRaycaster::new(device, VolumeMethod::NPass).unwrap());
-    let compute = render(&mut VolumeRaycaster::new(device, VolumeMethod::SinglePass).unwrap());
+    let npass = render(&mut VolumeRaycaster::new(device, Method::NPass).unwrap());
+    let compute = render(&mut VolumeRaycaster::new(device, Method::SinglePass).unwrap());
     let slices = render(&mut VolumeSlicer::new(device, AlphaMode::Exact).unwrap());
     assert!(
         npass.data.iter().filter(|&&v| v > 8).count() > 1000,
@@ -153,7 +153,7 @@ fn gl_backend_runs_the_single_pass_renderers() {
 #[test]
 fn gl_backend_splats_points() {
     use autostereo::points::{GroupCount, PointCloud, SplatScene};
-    use autostereo::render::{PointSplatter, SplatDepth, SplatMethod, SplatOptions};
+    use autostereo::render::{Method, PointSplatter, SplatDepth, SplatOptions};
 
     let gl = gl();
     let (device, queue) = (&gl.device, &gl.queue);
@@ -173,13 +173,13 @@ fn gl_backend_splats_points() {
             .unwrap();
         target.read(device, queue).unwrap()
     };
-    let npass = render(SplatMethod::NPass, SplatDepth::Exact);
+    let npass = render(Method::NPass, SplatDepth::Exact);
     assert!(
         npass.data.iter().filter(|&&v| v > 8).count() > 1000,
         "GL splats are empty"
     );
-    let exact = compare(&render(SplatMethod::SinglePass, SplatDepth::Exact), &npass).unwrap();
+    let exact = compare(&render(Method::SinglePass, SplatDepth::Exact), &npass).unwrap();
     assert!(exact.psnr_db >= 45.0, "GL splats exact: {exact:?}");
-    let paper = compare(&render(SplatMethod::SinglePass, SplatDepth::Paper), &npass).unwrap();
+    let paper = compare(&render(Method::SinglePass, SplatDepth::Paper), &npass).unwrap();
     assert!(paper.psnr_db >= 20.0, "GL splats paper: {paper:?}");
 }

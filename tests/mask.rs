@@ -137,7 +137,7 @@ fn looking_glass_mapping_reproduces_the_holoplay_formula() {
 #[test]
 fn wgsl_mask_equals_rust_mask_on_an_8k_panel() {
     let ctx = common::gpu();
-    let renderer = MaskImageRenderer::new(&ctx.device).unwrap();
+    let mut renderer = MaskImageRenderer::new(&ctx.device).unwrap();
     let lkg = DisplayKind::LookingGlass {
         views: 45,
         calibration: sample_calibration(),

@@ -7,7 +7,7 @@ mod common;
 use autostereo::frame::Frame;
 use autostereo::image_io::{compare, RgbImage};
 use autostereo::points::{GroupCount, PointCloud, SplatScene, Splats};
-use autostereo::render::{PointSplatter, Renderer, SplatDepth, SplatMethod, SplatOptions};
+use autostereo::render::{Method, PointSplatter, Renderer, SplatDepth, SplatOptions};
 use autostereo::target::SpatialTarget;
 use glam::Vec3;
 
@@ -34,7 +34,7 @@ fn frame(splats: &Splats, spec: &str, separation_share: f32, focal_scale: f32) -
     )
 }
 
-fn render(scene: &SplatScene, frame: &Frame, method: SplatMethod, depth: SplatDepth) -> RgbImage {
+fn render(scene: &SplatScene, frame: &Frame, method: Method, depth: SplatDepth) -> RgbImage {
     let ctx = common::gpu();
     let target = SpatialTarget::new(&ctx.device, frame.size).unwrap();
     let options = SplatOptions {
@@ -94,8 +94,8 @@ fn exact_single_pass_matches_npass_with_normals_given_and_estimated() {
             ("lenticular:2", 1.0),
         ] {
             let f = frame(&s, spec, 0.05, focal);
-            let single = render(&scene, &f, SplatMethod::SinglePass, SplatDepth::Exact);
-            let npass = render(&scene, &f, SplatMethod::NPass, SplatDepth::Exact);
+            let single = render(&scene, &f, Method::SinglePass, SplatDepth::Exact);
+            let npass = render(&scene, &f, Method::NPass, SplatDepth::Exact);
             let d = compare(&single, &npass).unwrap();
             let tag = format!("points-{name}-{}-f{focal}", spec.replace([':', ','], "_"));
             eprintln!(
@@ -127,13 +127,13 @@ fn paper_depth_is_exact_for_k1_and_bounded_for_k3() {
     let s = splats(&torus());
     let scene = scene(&s);
     let k1 = frame(&s, "lenticular:8", 0.05, 1.0);
-    let paper = render(&scene, &k1, SplatMethod::SinglePass, SplatDepth::Paper);
-    let npass = render(&scene, &k1, SplatMethod::NPass, SplatDepth::Paper);
+    let paper = render(&scene, &k1, Method::SinglePass, SplatDepth::Paper);
+    let npass = render(&scene, &k1, Method::NPass, SplatDepth::Paper);
     assert_eq!(compare(&paper, &npass).unwrap().psnr_db, 1000.0);
     for focal in [0.8, 1.3] {
         let k3 = frame(&s, "hubner8", 0.05, focal);
-        let paper = render(&scene, &k3, SplatMethod::SinglePass, SplatDepth::Paper);
-        let npass = render(&scene, &k3, SplatMethod::NPass, SplatDepth::Exact);
+        let paper = render(&scene, &k3, Method::SinglePass, SplatDepth::Paper);
+        let npass = render(&scene, &k3, Method::NPass, SplatDepth::Exact);
         let d = compare(&paper, &npass).unwrap();
         eprintln!(
             "paper depth, K = 3, focal ×{focal}: {:.1} dB, {:.3} % off > 2/255",
@@ -149,8 +149,8 @@ fn zero_separation_equals_single_view() {
     let s = splats(&torus());
     let scene = scene(&s);
     let f = frame(&s, "hubner8", 0.0, 1.0);
-    let single = render(&scene, &f, SplatMethod::SinglePass, SplatDepth::Exact);
-    let sv = render(&scene, &f, SplatMethod::SingleView, SplatDepth::Exact);
+    let single = render(&scene, &f, Method::SinglePass, SplatDepth::Exact);
+    let sv = render(&scene, &f, Method::SingleView, SplatDepth::Exact);
     assert_eq!(compare(&single, &sv).unwrap().psnr_db, 1000.0);
 }
 
@@ -305,7 +305,7 @@ fn degenerate_splats_match_the_cpu_reference() {
             depth: SplatDepth::Exact,
             epsilon,
         };
-        PointSplatter::new(&ctx.device, SplatMethod::SinglePass, options)
+        PointSplatter::new(&ctx.device, Method::SinglePass, options)
             .unwrap()
             .render(&ctx.device, &ctx.queue, &scene, &f, &target)
             .unwrap();
@@ -344,7 +344,7 @@ fn a_million_points_render_at_512() {
     let target = SpatialTarget::new(&ctx.device, f.size).unwrap();
     let mut splatter = PointSplatter::new(
         &ctx.device,
-        SplatMethod::SinglePass,
+        Method::SinglePass,
         SplatOptions::for_scene(&scene, 0.01),
     )
     .unwrap();

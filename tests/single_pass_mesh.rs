@@ -10,7 +10,7 @@ use autostereo::frame::Frame;
 use autostereo::image_io::{compare, ImageDiff, RgbImage};
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::{
-    CoverBounds, MeshBaseline, MeshBaselineMethod, MeshSinglePassOptions, Renderer, Visibility,
+    CoverBounds, MeshBaseline, MeshSinglePassOptions, Method, Renderer, Visibility,
 };
 use autostereo::target::SpatialTarget;
 use glam::{Mat4, Vec3};
@@ -49,7 +49,7 @@ fn render(mesh: &Mesh, frame: &Frame, how: Option<MeshSinglePassOptions>) -> Opt
         Some(options) => common::mesh_single_pass(&ctx.device, options)?
             .render(&ctx.device, &ctx.queue, &buffers, frame, &target)
             .unwrap(),
-        None => MeshBaseline::new(&ctx.device, MeshBaselineMethod::NPass)
+        None => MeshBaseline::new(&ctx.device, Method::NPass)
             .unwrap()
             .render(&ctx.device, &ctx.queue, &buffers, frame, &target)
             .unwrap(),
@@ -250,7 +250,7 @@ fn zero_separation_equals_single_view() {
     let ctx = common::gpu();
     let buffers = MeshBuffers::new(&ctx.device, &mesh).unwrap();
     let target = SpatialTarget::new(&ctx.device, SIZE).unwrap();
-    MeshBaseline::new(&ctx.device, MeshBaselineMethod::SingleView)
+    MeshBaseline::new(&ctx.device, Method::SingleView)
         .unwrap()
         .render(&ctx.device, &ctx.queue, &buffers, &frame, &target)
         .unwrap();

@@ -15,8 +15,8 @@ use autostereo::image_io::{compare, ImageDiff, RgbImage};
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::points::{GroupCount, PointCloud, SplatScene};
 use autostereo::render::{
-    MeshBaseline, MeshBaselineMethod, MeshSinglePass, MeshSinglePassOptions, PointSplatter,
-    Renderer, SplatMethod, SplatOptions, Visibility, VolumeMethod, VolumeRaycaster, VolumeScene,
+    MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Method, PointSplatter, Renderer,
+    SplatOptions, Visibility, VolumeRaycaster, VolumeScene,
 };
 use autostereo::target::SpatialTarget;
 use autostereo::volume::{phantom, TransferFunction, Volume};
@@ -159,15 +159,15 @@ fn render_pair(p: &Primitive, frame: &Frame) -> (RgbImage, RgbImage) {
                     };
                     Box::new(MeshSinglePass::new(device, options).unwrap())
                 } else {
-                    Box::new(MeshBaseline::new(device, MeshBaselineMethod::NPass).unwrap())
+                    Box::new(MeshBaseline::new(device, Method::NPass).unwrap())
                 };
                 r.render(device, queue, buffers, frame, &target).unwrap();
             }
             Scene::Volume { skipping, marching } => {
                 let (method, scene) = if single {
-                    (VolumeMethod::SinglePass, skipping)
+                    (Method::SinglePass, skipping)
                 } else {
-                    (VolumeMethod::NPass, marching)
+                    (Method::NPass, marching)
                 };
                 VolumeRaycaster::new(device, method)
                     .unwrap()
@@ -176,9 +176,9 @@ fn render_pair(p: &Primitive, frame: &Frame) -> (RgbImage, RgbImage) {
             }
             Scene::Points(scene) => {
                 let method = if single {
-                    SplatMethod::SinglePass
+                    Method::SinglePass
                 } else {
-                    SplatMethod::NPass
+                    Method::NPass
                 };
                 PointSplatter::new(device, method, SplatOptions::for_scene(scene, 0.01))
                     .unwrap()

@@ -6,9 +6,7 @@ mod common;
 
 use autostereo::frame::Frame;
 use autostereo::image_io::{compare, RgbImage};
-use autostereo::render::{
-    AlphaMode, Renderer, VolumeMethod, VolumeRaycaster, VolumeScene, VolumeSlicer,
-};
+use autostereo::render::{AlphaMode, Method, Renderer, VolumeRaycaster, VolumeScene, VolumeSlicer};
 use autostereo::target::SpatialTarget;
 use autostereo::volume::{phantom, TransferFunction, Volume};
 use glam::Mat4;
@@ -32,7 +30,7 @@ fn frame(volume: &Volume, spec: &str, separation_share: f32, focal_scale: f32) -
     common::frame(volume.bounds(), spec, separation_share, focal_scale, SIZE)
 }
 
-fn render(scene: &VolumeScene, frame: &Frame, method: VolumeMethod) -> RgbImage {
+fn render(scene: &VolumeScene, frame: &Frame, method: Method) -> RgbImage {
     let ctx = common::gpu();
     let target = SpatialTarget::new(&ctx.device, frame.size).unwrap();
     VolumeRaycaster::new(&ctx.device, method)
@@ -66,8 +64,8 @@ fn single_pass_matches_npass_rotated_with_focal_plane_in_front_inside_and_behind
         for (place, scale) in [("front", 0.75), ("inside", 1.0), ("behind", 1.3)] {
             for spec in ["hubner8", "lenticular:5", "slanted:16,7.5,-0.5,0.3"] {
                 let frame = frame(volume, spec, 0.06, scale);
-                let npass = render(&scene, &frame, VolumeMethod::NPass);
-                let single = render(&scene, &frame, VolumeMethod::SinglePass);
+                let npass = render(&scene, &frame, Method::NPass);
+                let single = render(&scene, &frame, Method::SinglePass);
                 assert!(
                     lit(&npass) > npass.data.len() / 10,
                     "{name}: the volume must be visible"
@@ -81,8 +79,8 @@ fn single_pass_matches_npass_rotated_with_focal_plane_in_front_inside_and_behind
         }
         // The views really differ: the test is not comparing N copies of one image.
         let frame = frame(volume, "hubner8", 0.06, 1.3);
-        let mono = render(&scene, &frame, VolumeMethod::SingleView);
-        let single = render(&scene, &frame, VolumeMethod::SinglePass);
+        let mono = render(&scene, &frame, Method::SingleView);
+        let single = render(&scene, &frame, Method::SinglePass);
         assert!(
             compare(&single, &mono).unwrap().frac_off_2 > 0.01,
             "{name}: no parallax?"
@@ -149,11 +147,7 @@ fn empty_space_skipping_changes_no_pixel() {
         );
         for (spec, scale) in [("hubner8", 0.75), ("lenticular:5", 1.3)] {
             let frame = common::frame(volume.bounds(), spec, 0.06, scale, size);
-            for method in [
-                VolumeMethod::SinglePass,
-                VolumeMethod::NPass,
-                VolumeMethod::SingleView,
-            ] {
+            for method in [Method::SinglePass, Method::NPass, Method::SingleView] {
                 scene.skip_empty = true;
                 let skipped = render(&scene, &frame, method);
                 scene.skip_empty = false;
@@ -177,8 +171,8 @@ fn zero_separation_equals_single_view() {
     let head = phantom::ct_head(32).unwrap();
     let scene = scene(&head, "ct-skin", Mat4::from_rotation_z(0.3));
     let frame = frame(&head, "hubner8", 0.0, 1.0);
-    let single = render(&scene, &frame, VolumeMethod::SinglePass);
-    let mono = render(&scene, &frame, VolumeMethod::SingleView);
+    let single = render(&scene, &frame, Method::SinglePass);
+    let mono = render(&scene, &frame, Method::SingleView);
     assert_eq!(single, mono);
     for alpha in [AlphaMode::Exact, AlphaMode::Paper] {
         let slices = render_slices(&scene, &frame, alpha);
@@ -197,8 +191,8 @@ fn tiny_and_flat_volumes_render_without_garbage() {
         let volume = Volume::new(dims, [1.0; 3], data).unwrap();
         let scene = scene(&volume, "ct-bone", Mat4::from_rotation_y(0.4));
         let frame = frame(&volume, "hubner8", 0.05, 1.0);
-        let single = render(&scene, &frame, VolumeMethod::SinglePass);
-        let npass = render(&scene, &frame, VolumeMethod::NPass);
+        let single = render(&scene, &frame, Method::SinglePass);
+        let npass = render(&scene, &frame, Method::NPass);
         assert!(
             compare(&single, &npass).unwrap().psnr_db >= 45.0,
             "{dims:?}"
@@ -218,7 +212,7 @@ fn slice_path_matches_npass_with_exact_alpha_and_bounds_the_paper_alpha() {
         for (place, scale) in [("front", 0.75), ("inside", 1.0), ("behind", 1.3)] {
             for spec in ["hubner8", "lenticular:5"] {
                 let frame = frame(volume, spec, 0.06, scale);
-                let npass = render(&scene, &frame, VolumeMethod::NPass);
+                let npass = render(&scene, &frame, Method::NPass);
                 let exact = render_slices(&scene, &frame, AlphaMode::Exact);
                 let diff = compare(&exact, &npass).unwrap();
                 if diff.psnr_db < 45.0 {

@@ -32,6 +32,21 @@ pub struct CameraUniform {
     pub _pad: [f32; 3],
 }
 const _: () = assert!(std::mem::size_of::<CameraUniform>() == 176);
+crate::shader::gpu_layout!(
+    CameraUniform,
+    "Camera",
+    [
+        eye_from_world,
+        normal_from_world,
+        focal_window,
+        focal_distance,
+        separation,
+        viewport,
+        views,
+        near,
+        far
+    ]
+);
 
 impl CameraUniform {
     pub(super) fn new(c: &MultiViewCamera, size: [u32; 2]) -> Self {
@@ -62,6 +77,7 @@ pub struct ViewUniform {
     pub origin: [f32; 4],
 }
 const _: () = assert!(std::mem::size_of::<ViewUniform>() == 80);
+crate::shader::gpu_layout!(ViewUniform, "View", [clip_from_eye, origin]);
 
 impl ViewUniform {
     pub(super) fn new(clip_from_eye: Mat4, vd: f32) -> Self {

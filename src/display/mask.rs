@@ -46,6 +46,19 @@ pub struct MaskUniform {
     _pad: u32,
 }
 const _: () = assert!(std::mem::size_of::<MaskUniform>() == 32);
+crate::shader::gpu_layout!(
+    MaskUniform,
+    "DisplayMask",
+    [
+        step_column,
+        step_row,
+        phase,
+        views,
+        origin_x,
+        origin_y,
+        flags
+    ]
+);
 
 /// `frac(v)` in 0.32 fixed point, rounded up (see the module docs).
 fn fixed_frac_ceil(v: f64) -> u32 {

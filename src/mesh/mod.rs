@@ -1,11 +1,12 @@
 //! Triangle meshes: loading (OBJ), generated test shapes, GPU buffers.
 
 mod generate;
-mod gpu;
 mod obj;
 mod order;
+pub mod passes;
+mod scene;
 
-pub use gpu::{GpuVertex, MeshBuffers};
+pub use scene::{GpuVertex, MeshBuffers};
 
 use glam::Vec3;
 

@@ -6,18 +6,19 @@
 
 pub mod estimate;
 mod generate;
-mod gpu;
 mod grid;
 pub mod groups;
+pub mod passes;
 pub mod ply;
+mod scene;
 
 use std::path::Path;
 use std::time::Instant;
 
 use glam::Vec3;
 
-pub use gpu::{GpuSplat, SplatScene};
 pub use groups::{GroupCount, Grouping};
+pub use scene::{GpuSplat, SplatScene};
 
 use crate::camera::Bounds;
 use crate::error::{Error, Result};

@@ -27,7 +27,7 @@ impl Compositor {
                 count: None,
             }],
         });
-        let module = crate::shader::module(device, "composite.wgsl")?;
+        let module = crate::shader::module(device, "render/composite.wgsl")?;
         let pipeline = fullscreen_pipeline(
             device,
             "composite",

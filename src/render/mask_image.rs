@@ -21,7 +21,7 @@ impl MaskImageRenderer {
     /// Build the pipeline.
     pub fn new(device: &wgpu::Device) -> Result<Self> {
         let layout = frame_bind_group_layout(device);
-        let module = crate::shader::module(device, "mask_image.wgsl")?;
+        let module = crate::shader::module(device, "render/mask_image.wgsl")?;
         let pipeline = fullscreen_pipeline(device, "mask image", &module, &[Some(&layout)], FORMAT);
         Ok(Self {
             pipeline,
@@ -31,7 +31,7 @@ impl MaskImageRenderer {
 
     /// View-index image of `display` for a `size` window: channel c = view of subpixel c.
     pub fn render(
-        &self,
+        &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         display: &Display,
@@ -46,7 +46,7 @@ impl MaskImageRenderer {
         }
         let mut uniform: FrameUniform = bytemuck::Zeroable::zeroed();
         uniform.set_mask(display.mask().uniform());
-        self.frame.write_uniform(queue, &uniform);
+        self.frame.write_uniform(device, &uniform);
         let (texture, view) = texture_2d(
             device,
             "mask image",

@@ -1,34 +1,38 @@
-//! Passes that turn scene data into images.
+//! The renderer kit every primitive's passes share, and the one interface they implement.
 //!
+//! - [`Renderer`]: one frame of a scene into a spatial target.
 //! - [`mask_image`]: the display mask as a view-index image (GPU side of the mask oracle).
-//! - [`composite`]: N per-view layers → spatial image (shared by every N-pass baseline).
-//! - [`mesh_npass`]: the N-pass and single-view mesh baselines.
-//! - [`mesh_single_pass`]: single-pass meshes (covering quads + ray-triangle tests).
-//! - [`splat`]: point splats (single pass, N-pass, single view; ε-z deferred compositing).
-//! - [`volume_raycast`]: volumes by ray marching (single pass, N-pass, single view).
+//! - [`composite`]: N per-view layers → spatial image (every N-pass method).
+//! - [`output`]: the spatial image into a caller's texture or surface (BGRA8, sRGB…).
+//! - [`ViewLayers`]: the per-view (or per-group) layers those passes render into.
+//! - pipeline, texture, pass-parameter and specialisation helpers (crate-internal).
+//!
+//! The passes themselves live with their primitive: [`crate::mesh::passes`],
+//! [`crate::points::passes`], [`crate::volume::passes`]; they are re-exported here so that one
+//! `use autostereo::render::…` reaches every renderer.
 
 pub mod composite;
 pub mod mask_image;
-pub mod mesh_npass;
-pub mod mesh_single_pass;
-mod pass_params;
-mod pipeline;
+mod method;
+pub mod output;
+pub(crate) mod pass_params;
+pub(crate) mod pipeline;
 mod renderer;
-mod specialize;
-pub mod splat;
+pub(crate) mod specialize;
 pub(crate) mod texture;
-mod view_layers;
-pub mod volume_raycast;
-mod volume_resources;
-pub mod volume_slices;
+pub(crate) mod view_layers;
 
 pub use composite::Compositor;
 pub use mask_image::MaskImageRenderer;
-pub use mesh_npass::{MeshBaseline, MeshBaselineMethod};
-pub use mesh_single_pass::{CoverBounds, MeshSinglePass, MeshSinglePassOptions, Visibility};
+pub use method::Method;
+pub use output::{OutputBlit, OUTPUT_FORMATS};
 pub use renderer::Renderer;
-pub use splat::{PointSplatter, SplatDepth, SplatMethod, SplatOptions};
+pub(crate) use renderer::{check_prepared, check_target};
 pub use view_layers::ViewLayers;
-pub use volume_raycast::{VolumeMethod, VolumeRaycaster, VolumeScene};
-pub use volume_resources::VolumeParams;
-pub use volume_slices::{AlphaMode, VolumeSlicer};
+
+pub use crate::mesh::passes::{
+    CoverBounds, MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Visibility,
+};
+pub use crate::points::passes::{PointSplatter, SplatDepth, SplatOptions};
+pub use crate::volume::passes::{AlphaMode, VolumeParams, VolumeRaycaster, VolumeSlicer};
+pub use crate::volume::VolumeScene;

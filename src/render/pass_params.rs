@@ -1,5 +1,10 @@
 //! One uniform struct per pass of a frame (one per camera of an N-pass render), in one buffer
 //! bound with a dynamic offset, so a frame uploads its constants once.
+//!
+//! Per-frame constants never go through `Queue::write_buffer`: a queue write lands before the
+//! next submit, so two frames encoded before one submit would both see the last one. Each
+//! frame's constants get a buffer of their own, created with its contents
+//! ([`constants_buffer`]); the commands recorded for the frame keep it alive.
 
 use std::marker::PhantomData;
 
@@ -39,24 +44,16 @@ impl<T: Pod> PassParams<T> {
         }
     }
 
-    /// Upload one `T` per pass (the buffer grows as needed).
-    pub fn write(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, passes: &[T]) {
+    /// This frame's constants, one `T` per pass, in a buffer of their own (module docs).
+    pub fn write(&mut self, device: &wgpu::Device, passes: &[T]) {
         let count = passes.len().max(1);
-        if self.buffer.as_ref().is_none_or(|(_, c)| *c < count) {
-            let buffer = device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some(self.label),
-                size: self.stride * count as u64,
-                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-                mapped_at_creation: false,
-            });
-            self.buffer = Some((buffer, count));
-        }
         let mut bytes = vec![0u8; (self.stride * count as u64) as usize];
         for (i, p) in passes.iter().enumerate() {
             let at = i * self.stride as usize;
             bytes[at..at + std::mem::size_of::<T>()].copy_from_slice(bytemuck::bytes_of(p));
         }
-        queue.write_buffer(self.buffer(), 0, &bytes);
+        let buffer = constants_buffer(device, self.label, wgpu::BufferUsages::UNIFORM, &bytes);
+        self.buffer = Some((buffer, count));
     }
 
     fn buffer(&self) -> &wgpu::Buffer {
@@ -76,4 +73,20 @@ impl<T: Pod> PassParams<T> {
     pub fn offset(&self, i: usize) -> u32 {
         (i as u64 * self.stride) as u32
     }
+}
+
+/// A buffer of `usage` holding `bytes` from its creation: how every per-frame constant reaches
+/// the GPU (module docs).
+pub(crate) fn constants_buffer(
+    device: &wgpu::Device,
+    label: &str,
+    usage: wgpu::BufferUsages,
+    bytes: &[u8],
+) -> wgpu::Buffer {
+    use wgpu::util::DeviceExt;
+    device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some(label),
+        contents: bytes,
+        usage,
+    })
 }

@@ -7,19 +7,35 @@ use crate::frame::Frame;
 use crate::target::SpatialTarget;
 
 /// Renders scenes of type `S` (single pass, N-pass, single view…).
+///
+/// Prepare, then record: [`Renderer::prepare`] does everything that compiles, allocates or
+/// uploads (pipelines for the frame's display, scratch for its size, tables derived from the
+/// scene); [`Renderer::encode`] only records into the caller's encoder. Encode writes nothing
+/// through the queue (each frame's constants get buffers of their own), so several frames,
+/// even with different cameras, can be encoded before one submit.
 pub trait Renderer<S: ?Sized> {
-    /// Record one frame into the caller's `encoder` (uniforms go through `queue`).
-    fn encode(
+    /// Get ready for frames like `frame` of `scene`: call it once, and again when the display,
+    /// the size or the scene changes. Cheap when nothing changed.
+    fn prepare(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
+        scene: &S,
+        frame: &Frame,
+    ) -> Result<()>;
+
+    /// Record one frame into the caller's `encoder`. Fails with [`Error::NotPrepared`] when
+    /// [`Renderer::prepare`] was not called for this frame's display, size and scene.
+    fn encode(
+        &mut self,
+        device: &wgpu::Device,
         encoder: &mut wgpu::CommandEncoder,
         scene: &S,
         frame: &Frame,
         target: &SpatialTarget,
     ) -> Result<()>;
 
-    /// Encode one frame, submit it and wait for the GPU.
+    /// Prepare, encode one frame, submit it and wait for the GPU.
     fn render(
         &mut self,
         device: &wgpu::Device,
@@ -28,13 +44,33 @@ pub trait Renderer<S: ?Sized> {
         frame: &Frame,
         target: &SpatialTarget,
     ) -> Result<()> {
+        self.prepare(device, queue, scene, frame)?;
         let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
             label: Some("frame"),
         });
-        self.encode(device, queue, &mut encoder, scene, frame, target)?;
+        self.encode(device, &mut encoder, scene, frame, target)?;
         queue.submit([encoder.finish()]);
         crate::readback::wait_idle(device)
     }
+}
+
+/// `Err(NotPrepared)` unless `prepared` (what [`Renderer::prepare`] last got ready) equals
+/// `wanted` (what this frame needs).
+pub(crate) fn check_prepared<K: PartialEq + std::fmt::Debug>(
+    renderer: &'static str,
+    prepared: &Option<K>,
+    wanted: &K,
+) -> Result<()> {
+    if prepared.as_ref() == Some(wanted) {
+        return Ok(());
+    }
+    Err(Error::NotPrepared {
+        renderer,
+        frame: format!("{wanted:?}"),
+        prepared: prepared
+            .as_ref()
+            .map_or_else(|| "nothing".to_string(), |p| format!("{p:?}")),
+    })
 }
 
 /// The target must have the frame's size.

@@ -47,3 +47,20 @@ pub(crate) fn cached_texture_2d<'a>(
     }
     &slot.as_ref().expect("allocated above").1
 }
+
+/// A bind-group-layout entry for a non-filtered `texture_2d<f32>` read with `textureLoad`.
+pub(crate) fn texture_2d_layout_entry(
+    binding: u32,
+    stages: wgpu::ShaderStages,
+) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: stages,
+        ty: wgpu::BindingType::Texture {
+            sample_type: wgpu::TextureSampleType::Float { filterable: false },
+            view_dimension: wgpu::TextureViewDimension::D2,
+            multisampled: false,
+        },
+        count: None,
+    }
+}

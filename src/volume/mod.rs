@@ -2,14 +2,17 @@
 //! functions with pre-integration, and their GPU textures.
 
 pub mod bricks;
-mod gpu;
 mod gradient;
 pub mod load;
+pub mod passes;
 pub mod phantom;
+mod scene;
 pub mod transfer;
 
 pub use bricks::BrickRanges;
-pub use gpu::{PreintegrationTexture, TransparentBrickTexture, VolumeTexture};
+pub use scene::{
+    PreintegrationTexture, TransparentBrickTexture, VolumeScene, VolumeTexture, MAX_SAMPLES_PER_RAY,
+};
 pub use transfer::{PreintegrationTable, TransferFunction};
 
 use glam::Vec3;

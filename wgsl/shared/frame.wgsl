@@ -11,8 +11,6 @@ struct Frame {
     background: vec4<f32>,
 }
 
-@group(0) @binding(0) var<uniform> frame: Frame;
-
 // Full-screen triangle covering the viewport; no vertex buffer. The vertex stage of every
 // full-screen pass (compositing, mask image, resolves).
 @vertex

@@ -1,6 +1,8 @@
 //! Flags shared by several subcommands, and their parsers.
 
 use anyhow::{bail, Context, Result};
+use autostereo::render::Method;
+use clap::builder::TypedValueParser;
 use std::path::PathBuf;
 
 use autostereo::camera::MultiViewCamera;
@@ -144,26 +146,10 @@ impl CameraArgs {
     }
 }
 
-/// Rendering method of the render commands.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Method {
-    /// One pass: every (sub)pixel evaluates its own view directly.
-    SinglePass,
-    /// One render per view + mask compositing (the oracle), same sampling and shading.
-    NPass,
-    /// The centre view only.
-    SingleView,
-}
-
-impl Method {
-    /// Name as the CLI spells it.
-    pub fn name(self) -> &'static str {
-        match self {
-            Method::SinglePass => "single-pass",
-            Method::NPass => "n-pass",
-            Method::SingleView => "single-view",
-        }
-    }
+/// `--method NAME`: one of the library's [`Method`] names.
+fn method_parser() -> impl clap::builder::TypedValueParser<Value = Method> {
+    clap::builder::PossibleValuesParser::new(Method::ALL.map(|m| m.name()))
+        .map(|name| name.parse::<Method>().expect("one of the possible values"))
 }
 
 /// Flags every render command shares (extend, don't break: tools and benchmarks use them).
@@ -176,8 +162,8 @@ pub struct RenderArgs {
     /// Image size WxH in pixels.
     #[arg(long, value_parser = parse_size, default_value = "512x512")]
     pub size: [u32; 2],
-    /// Rendering method.
-    #[arg(long, value_enum, default_value = "single-pass")]
+    /// Rendering method: single-pass | n-pass | single-view.
+    #[arg(long, value_parser = method_parser(), default_value = "single-pass")]
     pub method: Method,
     /// Also render N-pass and report psnr_db, max_abs_err, frac_off_2 against it.
     #[arg(long)]

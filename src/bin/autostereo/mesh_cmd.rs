@@ -5,11 +5,10 @@ use std::path::PathBuf;
 use anyhow::{Context, Result};
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::{
-    CoverBounds, MeshBaseline, MeshBaselineMethod, MeshSinglePass, MeshSinglePassOptions, Renderer,
-    Visibility,
+    CoverBounds, MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Method, Renderer, Visibility,
 };
 
-use crate::args::{gpu, Method, RenderArgs};
+use crate::args::{gpu, RenderArgs};
 use crate::run::{compare_with, report, run_fields, run_summary, timed};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -77,7 +76,7 @@ pub fn run(args: MeshArgs) -> Result<()> {
         run.image.save_png(out)?;
     }
     let diff = if args.common.compare {
-        let mut npass = MeshBaseline::new(device, MeshBaselineMethod::NPass)?;
+        let mut npass = MeshBaseline::new(device, Method::NPass)?;
         Some(compare_with(
             &ctx, &mut npass, &buffers, &frame, &run.image,
         )?)
@@ -108,8 +107,8 @@ pub fn run(args: MeshArgs) -> Result<()> {
 /// The renderer a `--method` selects.
 fn renderer(device: &wgpu::Device, args: &MeshArgs) -> Result<Box<dyn Renderer<MeshBuffers>>> {
     Ok(match args.common.method {
-        Method::NPass => Box::new(MeshBaseline::new(device, MeshBaselineMethod::NPass)?),
-        Method::SingleView => Box::new(MeshBaseline::new(device, MeshBaselineMethod::SingleView)?),
+        Method::NPass => Box::new(MeshBaseline::new(device, Method::NPass)?),
+        Method::SingleView => Box::new(MeshBaseline::new(device, Method::SingleView)?),
         Method::SinglePass => Box::new(MeshSinglePass::new(
             device,
             single_pass_options(device, args),

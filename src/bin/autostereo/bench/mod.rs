@@ -391,6 +391,7 @@ pub(crate) fn time_frame(
     frames: u32,
 ) -> Result<f64> {
     let target = SpatialTarget::new(&ctx.device, frame.size)?;
+    renderer.prepare(ctx, &scene.data, frame)?;
     let mut samples = Vec::new();
     for i in 0..frames + 2 {
         let ms = timer.time_frame(&ctx.device, &ctx.queue, |e| {

@@ -9,9 +9,8 @@ use autostereo::frame::Frame;
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::points::{GroupCount, PointCloud, SplatScene};
 use autostereo::render::{
-    AlphaMode, MeshBaseline, MeshBaselineMethod, MeshSinglePass, MeshSinglePassOptions,
-    PointSplatter, Renderer, SplatDepth, SplatMethod, SplatOptions, Visibility, VolumeMethod,
-    VolumeRaycaster, VolumeScene, VolumeSlicer,
+    AlphaMode, MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Method, PointSplatter,
+    Renderer, SplatDepth, SplatOptions, Visibility, VolumeRaycaster, VolumeScene, VolumeSlicer,
 };
 use autostereo::target::SpatialTarget;
 use autostereo::volume::{load, phantom, TransferFunction, Volume};
@@ -56,6 +55,21 @@ impl AnyRenderer {
         Self::Points(Box::new(splatter))
     }
 
+    pub fn prepare(
+        &mut self,
+        ctx: &autostereo::gpu::GpuContext,
+        scene: &SceneData,
+        frame: &Frame,
+    ) -> autostereo::Result<()> {
+        let (d, q) = (&ctx.device, &ctx.queue);
+        match (self, scene) {
+            (Self::Volume(r), SceneData::Volume(s)) => r.prepare(d, q, s, frame),
+            (Self::Points(r), SceneData::Points(s)) => r.prepare(d, q, s, frame),
+            (Self::Mesh(r), SceneData::Mesh(s)) => r.prepare(d, q, s, frame),
+            _ => unreachable!("renderers are made per primitive"),
+        }
+    }
+
     pub fn encode(
         &mut self,
         ctx: &autostereo::gpu::GpuContext,
@@ -64,11 +78,11 @@ impl AnyRenderer {
         frame: &Frame,
         target: &SpatialTarget,
     ) -> autostereo::Result<()> {
-        let (d, q) = (&ctx.device, &ctx.queue);
+        let d = &ctx.device;
         match (self, scene) {
-            (Self::Volume(r), SceneData::Volume(s)) => r.encode(d, q, encoder, s, frame, target),
-            (Self::Points(r), SceneData::Points(s)) => r.encode(d, q, encoder, s, frame, target),
-            (Self::Mesh(r), SceneData::Mesh(s)) => r.encode(d, q, encoder, s, frame, target),
+            (Self::Volume(r), SceneData::Volume(s)) => r.encode(d, encoder, s, frame, target),
+            (Self::Points(r), SceneData::Points(s)) => r.encode(d, encoder, s, frame, target),
+            (Self::Mesh(r), SceneData::Mesh(s)) => r.encode(d, encoder, s, frame, target),
             _ => unreachable!("renderers are made per primitive"),
         }
     }
@@ -80,6 +94,7 @@ impl AnyRenderer {
         frame: &Frame,
         target: &SpatialTarget,
     ) -> autostereo::Result<()> {
+        self.prepare(ctx, scene, frame)?;
         let mut encoder = ctx.device.create_command_encoder(&Default::default());
         self.encode(ctx, &mut encoder, scene, frame, target)?;
         ctx.queue.submit([encoder.finish()]);
@@ -218,7 +233,7 @@ pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEn
                 entry(
                     "single-pass (compute)",
                     Kind::SinglePass,
-                    ray(VolumeMethod::SinglePass)?,
+                    ray(Method::SinglePass)?,
                 ),
                 entry(
                     "single-pass (slices, exact α)",
@@ -230,12 +245,8 @@ pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEn
                     Kind::SinglePass,
                     slices(AlphaMode::Paper)?,
                 ),
-                entry("n-pass", Kind::NPass, ray(VolumeMethod::NPass)?),
-                entry(
-                    "single-view",
-                    Kind::SingleView,
-                    ray(VolumeMethod::SingleView)?,
-                ),
+                entry("n-pass", Kind::NPass, ray(Method::NPass)?),
+                entry("single-view", Kind::SingleView, ray(Method::SingleView)?),
             ]
         }
         SceneData::Points(s) => {
@@ -250,22 +261,22 @@ pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEn
                 entry(
                     "single-pass (exact depth)",
                     Kind::SinglePass,
-                    splat(SplatMethod::SinglePass, SplatDepth::Exact)?,
+                    splat(Method::SinglePass, SplatDepth::Exact)?,
                 ),
                 entry(
                     "single-pass (paper depth)",
                     Kind::SinglePass,
-                    splat(SplatMethod::SinglePass, SplatDepth::Paper)?,
+                    splat(Method::SinglePass, SplatDepth::Paper)?,
                 ),
                 entry(
                     "n-pass",
                     Kind::NPass,
-                    splat(SplatMethod::NPass, SplatDepth::Exact)?,
+                    splat(Method::NPass, SplatDepth::Exact)?,
                 ),
                 entry(
                     "single-view",
                     Kind::SingleView,
-                    splat(SplatMethod::SingleView, SplatDepth::Exact)?,
+                    splat(Method::SingleView, SplatDepth::Exact)?,
                 ),
             ]
         }
@@ -293,15 +304,11 @@ pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEn
             let base = |m| -> Result<AnyRenderer> {
                 Ok(AnyRenderer::Mesh(Box::new(MeshBaseline::new(device, m)?)))
             };
-            v.push(entry(
-                "n-pass",
-                Kind::NPass,
-                base(MeshBaselineMethod::NPass)?,
-            ));
+            v.push(entry("n-pass", Kind::NPass, base(Method::NPass)?));
             v.push(entry(
                 "single-view",
                 Kind::SingleView,
-                base(MeshBaselineMethod::SingleView)?,
+                base(Method::SingleView)?,
             ));
             v
         }

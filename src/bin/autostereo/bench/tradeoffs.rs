@@ -6,9 +6,9 @@ use autostereo::frame::Frame;
 use autostereo::image_io::{compare, RgbImage};
 use autostereo::points::{GroupCount, SplatScene};
 use autostereo::render::{
-    AlphaMode, CoverBounds, MeshBaseline, MeshBaselineMethod, MeshSinglePass,
-    MeshSinglePassOptions, PointSplatter, SplatDepth, SplatMethod, SplatOptions, Visibility,
-    VolumeMethod, VolumeRaycaster, VolumeScene, VolumeSlicer,
+    AlphaMode, CoverBounds, MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Method,
+    PointSplatter, SplatDepth, SplatOptions, Visibility, VolumeRaycaster, VolumeScene,
+    VolumeSlicer,
 };
 use autostereo::target::SpatialTarget;
 use autostereo::timing::FrameTimer;
@@ -138,7 +138,7 @@ fn volume_studies(
         old
     };
     let default_step = step_of(scene, Some(0.25));
-    let npass = AnyRenderer::Volume(Box::new(VolumeRaycaster::new(device, VolumeMethod::NPass)?));
+    let npass = AnyRenderer::Volume(Box::new(VolumeRaycaster::new(device, Method::NPass)?));
     let p = probe(ctx, timer, scene, plan, "volume sampling", npass)?;
     let steps: &[f32] = if plan.quick {
         &[0.5, 1.0, 2.0]
@@ -150,10 +150,7 @@ fn volume_studies(
         let paths: [(&str, AnyRenderer); 3] = [
             (
                 "compute",
-                AnyRenderer::Volume(Box::new(VolumeRaycaster::new(
-                    device,
-                    VolumeMethod::SinglePass,
-                )?)),
+                AnyRenderer::Volume(Box::new(VolumeRaycaster::new(device, Method::SinglePass)?)),
             ),
             (
                 "slices, exact α",
@@ -198,13 +195,13 @@ fn splat_studies(
             device, method, options,
         )?))
     };
-    let exact = |fraction| splatter(SplatMethod::SinglePass, SplatDepth::Exact, fraction);
-    let reference = splatter(SplatMethod::NPass, SplatDepth::Exact, 0.01)?;
+    let exact = |fraction| splatter(Method::SinglePass, SplatDepth::Exact, fraction);
+    let reference = splatter(Method::NPass, SplatDepth::Exact, 0.01)?;
     let mut p = probe(ctx, timer, scene, plan, "splat depth", reference)?;
     for depth in [SplatDepth::Exact, SplatDepth::Paper] {
         out.push(p.run(
             scene,
-            splatter(SplatMethod::SinglePass, depth, 0.01)?,
+            splatter(Method::SinglePass, depth, 0.01)?,
             depth.name().into(),
         )?);
     }
@@ -244,10 +241,7 @@ fn mesh_studies(
     out: &mut Vec<Tradeoff>,
 ) -> Result<()> {
     let device = &ctx.device;
-    let npass = AnyRenderer::Mesh(Box::new(MeshBaseline::new(
-        device,
-        MeshBaselineMethod::NPass,
-    )?));
+    let npass = AnyRenderer::Mesh(Box::new(MeshBaseline::new(device, Method::NPass)?));
     let p = probe(ctx, timer, scene, plan, "mesh visibility", npass)?;
     let modes = [
         (Visibility::Compute, CoverBounds::Exact),
@@ -290,7 +284,7 @@ pub fn economy(
             let frame = scenes::frame(scene.bounds, "hubner8", plan.size)?;
             let mut r = AnyRenderer::Volume(Box::new(VolumeRaycaster::new(
                 &ctx.device,
-                VolumeMethod::SinglePass,
+                Method::SinglePass,
             )?));
             // (what, the scene's switch, its value with the feature used)
             type Switch = fn(&mut VolumeScene) -> &mut bool;

@@ -1,0 +1,264 @@
+//! The mesh baselines: N-pass (one ordinary render per view into its own layer, then mask
+//! compositing) and single view (the centre camera straight into the target).
+//! Shading is `wgsl/shared/shading.wgsl`, the same the single-pass path uses.
+
+use crate::camera::ViewUniform;
+use crate::error::Result;
+use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
+use crate::mesh::MeshBuffers;
+use crate::render::pass_params::constants_buffer;
+use crate::render::pipeline::{begin_pass, cleared};
+use crate::render::texture::{cached_texture_2d, Texture2d};
+use crate::render::view_layers::{nearest_depth_test, DEPTH_FORMAT};
+use crate::render::Method;
+use crate::render::{check_prepared, check_target, Renderer};
+use crate::render::{Compositor, ViewLayers};
+use crate::target::{SpatialTarget, SPATIAL_FORMAT};
+
+/// N-pass or single-view mesh renderer. Holds pipelines and lazily sized scratch resources.
+pub struct MeshBaseline {
+    method: Method,
+    pipeline: wgpu::RenderPipeline,
+    view_layout: wgpu::BindGroupLayout,
+    frame: FrameBinding,
+    compositor: Compositor,
+    layers: Option<ViewLayers>,
+    single_view_depth: Option<Texture2d>,
+    /// This frame's view uniforms (one per view, dynamic offsets).
+    view_uniforms: Option<wgpu::BindGroup>,
+    view_stride: u64,
+    /// (size, views) prepared for.
+    prepared: Option<([u32; 2], u32)>,
+}
+
+impl MeshBaseline {
+    /// Build the pipelines for `method`: [`Method::NPass`] or [`Method::SingleView`] (the mesh
+    /// single pass is [`crate::mesh::passes::MeshSinglePass`]).
+    pub fn new(device: &wgpu::Device, method: Method) -> Result<Self> {
+        if !matches!(method, Method::NPass | Method::SingleView) {
+            return Err(crate::Error::invalid(
+                "method",
+                format!(
+                    "{method}: MeshBaseline renders n-pass and single-view; use MeshSinglePass"
+                ),
+            ));
+        }
+        let frame_layout = frame_bind_group_layout(device);
+        let view_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("view"),
+            entries: &[wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Uniform,
+                    has_dynamic_offset: true,
+                    min_binding_size: wgpu::BufferSize::new(
+                        std::mem::size_of::<ViewUniform>() as u64
+                    ),
+                },
+                count: None,
+            }],
+        });
+        let module = crate::shader::module(device, "mesh/npass.wgsl")?;
+        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("mesh view"),
+            bind_group_layouts: &[Some(&frame_layout), Some(&view_layout)],
+            immediate_size: 0,
+        });
+        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("mesh view"),
+            layout: Some(&layout),
+            vertex: wgpu::VertexState {
+                module: &module,
+                entry_point: Some("vs_main"),
+                compilation_options: Default::default(),
+                buffers: &[Some(MeshBuffers::vertex_layout())],
+            },
+            // No culling: OBJ winding is not reliable; shading is two-sided.
+            primitive: wgpu::PrimitiveState::default(),
+            depth_stencil: Some(nearest_depth_test()),
+            multisample: Default::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: &module,
+                entry_point: Some("fs_main"),
+                compilation_options: Default::default(),
+                targets: &[Some(SPATIAL_FORMAT.into())],
+            }),
+            multiview_mask: None,
+            cache: None,
+        });
+        let align = device.limits().min_uniform_buffer_offset_alignment as u64;
+        Ok(Self {
+            method,
+            pipeline,
+            compositor: Compositor::new(device, &frame_layout)?,
+            frame: FrameBinding::new(device, &frame_layout),
+            view_layout,
+            layers: None,
+            single_view_depth: None,
+            view_uniforms: None,
+            prepared: None,
+            view_stride: (std::mem::size_of::<ViewUniform>() as u64).div_ceil(align) * align,
+        })
+    }
+
+    /// Per-view images of the last N-pass render (layer i = view i), if any.
+    pub fn view_layers(&self) -> Option<&ViewLayers> {
+        self.layers.as_ref()
+    }
+
+    /// N view passes into the layers, then compositing.
+    fn encode_npass(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        mesh: &MeshBuffers,
+        frame: &Frame,
+        target: &SpatialTarget,
+    ) -> Result<()> {
+        frame.validate()?;
+        self.frame.write(device, frame);
+        let camera = &frame.camera;
+        let offsets: Vec<f32> = (0..camera.views).map(|i| camera.view_offset(i)).collect();
+        self.write_views(device, &offsets, |vd| camera.view_uniform(vd));
+        let layers = self.layers.as_ref().expect("allocated by prepare");
+        for (i, layer) in layers.layer_views.iter().enumerate() {
+            self.draw(encoder, mesh, frame, i as u32, layer, &layers.depth_view);
+        }
+        self.compositor
+            .encode(device, encoder, &self.frame, &layers.array_view, target);
+        Ok(())
+    }
+
+    /// The centre camera straight into `target`.
+    fn encode_single_view(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        mesh: &MeshBuffers,
+        frame: &Frame,
+        target: &SpatialTarget,
+    ) -> Result<()> {
+        frame.validate()?;
+        self.frame.write(device, frame);
+        let camera = &frame.camera;
+        self.write_views(device, &[0.0], |vd| camera.view_uniform(vd));
+        let depth = self
+            .single_view_depth
+            .as_ref()
+            .expect("allocated by prepare")
+            .1
+            .clone();
+        self.draw(encoder, mesh, frame, 0, &target.view, &depth);
+        Ok(())
+    }
+
+    /// This frame's view uniforms, in a buffer of their own (`src/render/pass_params.rs`).
+    fn write_views(
+        &mut self,
+        device: &wgpu::Device,
+        offsets: &[f32],
+        uniform: impl Fn(f32) -> ViewUniform,
+    ) {
+        let count = offsets.len() as u32;
+        let mut bytes = vec![0u8; (self.view_stride * count as u64) as usize];
+        for (i, &vd) in offsets.iter().enumerate() {
+            let at = i * self.view_stride as usize;
+            let u = uniform(vd);
+            let src = bytemuck::bytes_of(&u);
+            bytes[at..at + src.len()].copy_from_slice(src);
+        }
+        let buffer = constants_buffer(device, "view uniforms", wgpu::BufferUsages::UNIFORM, &bytes);
+        let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("view"),
+            layout: &self.view_layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+                    buffer: &buffer,
+                    offset: 0,
+                    size: wgpu::BufferSize::new(std::mem::size_of::<ViewUniform>() as u64),
+                }),
+            }],
+        });
+        self.view_uniforms = Some(group);
+    }
+
+    fn draw(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        mesh: &MeshBuffers,
+        frame: &Frame,
+        view: u32,
+        color: &wgpu::TextureView,
+        depth: &wgpu::TextureView,
+    ) {
+        let view_group = self.view_uniforms.as_ref().expect("written before drawing");
+        let mut pass = begin_pass(
+            encoder,
+            "mesh view",
+            cleared(color, frame.background),
+            Some(depth),
+        );
+        pass.set_pipeline(&self.pipeline);
+        pass.set_bind_group(0, &self.frame.bind_group, &[]);
+        pass.set_bind_group(1, view_group, &[(view as u64 * self.view_stride) as u32]);
+        pass.set_vertex_buffer(0, mesh.vertices.slice(..));
+        pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
+        pass.draw_indexed(0..mesh.index_count, 0, 0..1);
+    }
+}
+
+impl Renderer<MeshBuffers> for MeshBaseline {
+    fn prepare(
+        &mut self,
+        device: &wgpu::Device,
+        _queue: &wgpu::Queue,
+        _mesh: &MeshBuffers,
+        frame: &Frame,
+    ) -> Result<()> {
+        frame.validate()?;
+        let views = frame.camera.views;
+        match self.method {
+            Method::NPass => {
+                if self.layers.as_ref().map(|l| l.key()) != Some((frame.size, views)) {
+                    self.layers = None; // free before allocating the replacement
+                    self.layers = Some(ViewLayers::new(device, frame.size, views)?);
+                }
+            }
+            _ => {
+                cached_texture_2d(
+                    &mut self.single_view_depth,
+                    device,
+                    "single-view depth",
+                    frame.size,
+                    DEPTH_FORMAT,
+                    wgpu::TextureUsages::RENDER_ATTACHMENT,
+                );
+            }
+        }
+        self.prepared = Some((frame.size, views));
+        Ok(())
+    }
+
+    fn encode(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        mesh: &MeshBuffers,
+        frame: &Frame,
+        target: &SpatialTarget,
+    ) -> Result<()> {
+        frame.validate()?;
+        check_target(frame, target)?;
+        check_prepared(
+            "MeshBaseline",
+            &self.prepared,
+            &(frame.size, frame.camera.views),
+        )?;
+        match self.method {
+            Method::NPass => self.encode_npass(device, encoder, mesh, frame, target),
+            _ => self.encode_single_view(device, encoder, mesh, frame, target),
+        }
+    }
+}

@@ -1,0 +1,289 @@
+//! Single-pass triangle meshes (paper §3.2, §3.3.3, §3.5.3): one covering rectangle per
+//! triangle, per-subpixel ray-triangle tests, the spatial image written directly.
+//!
+//! Every frame: a compute pass (`wgsl/mesh/single_pass_cover.wgsl`) transforms each triangle once and computes
+//! its covering rectangle (docs/DESIGN.md §3, near-plane clipped); one geometry pass draws the
+//! rectangles; the exact modes add a full-screen resolve that shades each subpixel once.
+//!
+//! Visibility ([`Visibility`]):
+//! - `Exact`: rectangles rasterised at subpixel resolution (K·W × H); each fragment is one
+//!   subpixel's ray; the hardware depth test keeps the nearest triangle id. Matches N-pass;
+//!   needs no optional feature.
+//! - `ExactAtomic`: per-pixel fragments test the K rays and keep the nearest (depth, triangle)
+//!   per subpixel with 64-bit atomics. Also matches N-pass; needs `SHADER_INT64_ATOMIC_MIN_MAX`.
+//! - `Compute`: the rectangles rasterised in software by a compute pass, one invocation per
+//!   triangle, same 64-bit atomics; no hardware rasteriser involved. Matches N-pass.
+//! - `Fast`: the paper's — one depth per fragment (nearest hit subpixel) through the hardware
+//!   depth test; dual-source blending keeps the subpixels a triangle misses. Approximate.
+
+mod pipelines;
+mod scratch;
+
+use std::collections::HashMap;
+
+use crate::error::Result;
+use crate::frame::{Frame, FrameBinding};
+use crate::mesh::MeshBuffers;
+use crate::render::pipeline::{begin_pass, cleared, draw_fullscreen};
+use crate::render::specialize::Specialization;
+use crate::render::{check_prepared, check_target, Renderer};
+use crate::target::SpatialTarget;
+use pipelines::{Layouts, Pipelines};
+use scratch::Scratch;
+
+/// How per-subpixel visibility is resolved.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Visibility {
+    /// Subpixel-resolution rasterisation + hardware depth test + deferred shading. Exact.
+    Exact,
+    /// Per-pixel fragments, per-subpixel 64-bit atomic depth + deferred shading. Exact.
+    ExactAtomic,
+    /// Covering rectangles rasterised by a compute pass, 64-bit atomic depth. Exact.
+    Compute,
+    /// The paper's one depth per fragment; approximate where triangles split a pixel.
+    Fast,
+}
+
+impl Visibility {
+    /// The fastest exact mode `device` supports: compute rasterisation where 64-bit atomics
+    /// exist (fastest on lavapipe by far, docs/MESHES.md), else subpixel rasterisation.
+    pub fn best_exact(device: &wgpu::Device) -> Self {
+        if device
+            .features()
+            .contains(Visibility::Compute.required_features())
+        {
+            Visibility::Compute
+        } else {
+            Visibility::Exact
+        }
+    }
+
+    /// Name as the CLI spells it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Visibility::Exact => "exact",
+            Visibility::ExactAtomic => "atomic",
+            Visibility::Compute => "compute",
+            Visibility::Fast => "fast",
+        }
+    }
+
+    /// Features the mode needs beyond the WebGPU defaults.
+    pub fn required_features(self) -> wgpu::Features {
+        match self {
+            Visibility::Exact => wgpu::Features::empty(),
+            Visibility::ExactAtomic | Visibility::Compute => {
+                wgpu::Features::SHADER_INT64 | wgpu::Features::SHADER_INT64_ATOMIC_MIN_MAX
+            }
+            Visibility::Fast => wgpu::Features::DUAL_SOURCE_BLENDING,
+        }
+    }
+}
+
+/// Horizontal extent of the covering rectangles.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CoverBounds {
+    /// docs/DESIGN.md §3: `x ± vd·|1 − fd/d|` per vertex. Always covers.
+    Exact,
+    /// The paper's printed `(x ∓ vd)·fd/d`: under-covers geometry beyond 2·fd (kept to measure).
+    Paper,
+}
+
+/// Creation-time options.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct MeshSinglePassOptions {
+    /// Visibility mode.
+    pub visibility: Visibility,
+    /// Covering-rectangle bounds.
+    pub bounds: CoverBounds,
+}
+
+impl Default for MeshSinglePassOptions {
+    fn default() -> Self {
+        Self {
+            visibility: Visibility::Exact,
+            bounds: CoverBounds::Exact,
+        }
+    }
+}
+
+/// The single-pass mesh renderer. Pipelines are built per display specialisation (K, N) on
+/// first use and cached; scratch buffers follow the frame size and triangle count.
+pub struct MeshSinglePass {
+    options: MeshSinglePassOptions,
+    frame: FrameBinding,
+    layouts: Layouts,
+    pipelines: HashMap<Specialization, Pipelines>,
+    scratch: Scratch,
+    prepared: Option<PreparedFor>,
+}
+
+impl MeshSinglePass {
+    /// Check that the device can run `options`; prepare the bind group layouts.
+    pub fn new(device: &wgpu::Device, options: MeshSinglePassOptions) -> Result<Self> {
+        crate::gpu::require_features(
+            device,
+            options.visibility.required_features(),
+            &format!(
+                "single-pass meshes with --visibility {}",
+                options.visibility.name()
+            ),
+            "use --visibility exact (Visibility::Exact), which every adapter runs and which \
+             gives the same image",
+        )?;
+        let layouts = Layouts::new(device);
+        Ok(Self {
+            options,
+            frame: FrameBinding::new(device, &layouts.frame),
+            layouts,
+            pipelines: HashMap::new(),
+            scratch: Scratch::default(),
+            prepared: None,
+        })
+    }
+
+    /// The options this renderer was made with.
+    pub fn options(&self) -> MeshSinglePassOptions {
+        self.options
+    }
+}
+
+/// What a [`MeshSinglePass`] was prepared for: display specialisation, size, triangle count.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct PreparedFor {
+    spec: Specialization,
+    size: [u32; 2],
+    triangles: u32,
+}
+
+impl PreparedFor {
+    fn of(frame: &Frame, mesh: &MeshBuffers) -> Self {
+        Self {
+            spec: Specialization::of(frame),
+            size: frame.size,
+            triangles: mesh.index_count / 3,
+        }
+    }
+}
+
+impl Renderer<MeshBuffers> for MeshSinglePass {
+    fn prepare(
+        &mut self,
+        device: &wgpu::Device,
+        _queue: &wgpu::Queue,
+        mesh: &MeshBuffers,
+        frame: &Frame,
+    ) -> Result<()> {
+        frame.validate()?;
+        let key = PreparedFor::of(frame, mesh);
+        if !self.pipelines.contains_key(&key.spec) {
+            let built =
+                crate::gpu::checked(device, "building the single-pass mesh pipelines", || {
+                    pipelines::build(device, &self.layouts, self.options, key.spec)
+                })??;
+            self.pipelines.insert(key.spec, built);
+        }
+        self.scratch
+            .prepare(device, self.options.visibility, frame, key.triangles)?;
+        self.prepared = Some(key);
+        Ok(())
+    }
+
+    fn encode(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        mesh: &MeshBuffers,
+        frame: &Frame,
+        target: &SpatialTarget,
+    ) -> Result<()> {
+        frame.validate()?;
+        check_target(frame, target)?;
+        let key = PreparedFor::of(frame, mesh);
+        check_prepared("MeshSinglePass", &self.prepared, &key)?;
+        let (spec, triangles) = (key.spec, key.triangles);
+        self.frame.write(device, frame);
+        let pipelines = &self.pipelines[&spec];
+        let groups = self
+            .scratch
+            .bind_groups(device, &self.layouts, self.options.visibility, mesh);
+
+        let s = &self.scratch;
+        if let Some(keys) = s.keys_buffer() {
+            encoder.clear_buffer(keys, 0, None);
+        }
+        {
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: Some(pipelines.compute_label),
+                timestamp_writes: None,
+            });
+            pass.set_pipeline(&pipelines.compute);
+            pass.set_bind_group(0, &self.frame.bind_group, &[]);
+            pass.set_bind_group(1, &groups.cover_compute, &[]);
+            if let Some(keys) = &groups.keys_write {
+                pass.set_bind_group(2, keys, &[]);
+            }
+            let [x, y] = dispatch_2d(device, triangles.div_ceil(pipelines::COVER_WORKGROUP));
+            pass.dispatch_workgroups(x, y, 1);
+        }
+        if let Some(geometry) = &pipelines.geometry {
+            let (color, depth, label) = match self.options.visibility {
+                Visibility::Exact => (
+                    wgpu::RenderPassColorAttachment {
+                        view: s.triangle_ids_view(),
+                        depth_slice: None,
+                        resolve_target: None,
+                        ops: wgpu::Operations {
+                            // NO_TRIANGLE in mesh/single_pass_subpixel_resolve.wgsl.
+                            load: wgpu::LoadOp::Clear(wgpu::Color {
+                                r: u32::MAX as f64,
+                                g: 0.0,
+                                b: 0.0,
+                                a: 0.0,
+                            }),
+                            store: wgpu::StoreOp::Store,
+                        },
+                    },
+                    s.depth_view(),
+                    "mesh single pass (subpixel visibility)",
+                ),
+                Visibility::ExactAtomic => (
+                    cleared(&target.view, frame.background),
+                    None,
+                    "mesh single pass (atomic visibility)",
+                ),
+                _ => (
+                    cleared(&target.view, frame.background),
+                    s.depth_view(),
+                    "mesh single pass (fast)",
+                ),
+            };
+            let mut pass = begin_pass(encoder, label, color, depth);
+            pass.set_pipeline(geometry);
+            pass.set_bind_group(0, &self.frame.bind_group, &[]);
+            pass.set_bind_group(1, &groups.mesh, &[]);
+            if let Some(keys) = &groups.keys_write {
+                pass.set_bind_group(2, keys, &[]);
+            }
+            pass.draw(0..triangles * 6, 0..1);
+        }
+        if let (Some(resolve), Some(visible)) = (&pipelines.resolve, &groups.visible) {
+            draw_fullscreen(
+                encoder,
+                "mesh single pass (resolve)",
+                resolve,
+                &[&self.frame.bind_group, &groups.mesh, visible],
+                &target.view,
+            );
+        }
+        Ok(())
+    }
+}
+
+/// Split `groups` workgroups over x and y within the per-dimension limit (the shader
+/// linearises `group.y · groups.x + group.x` and skips indices past the end).
+fn dispatch_2d(device: &wgpu::Device, groups: u32) -> [u32; 2] {
+    let max = device.limits().max_compute_workgroups_per_dimension.max(1);
+    let x = groups.clamp(1, max);
+    [x, groups.div_ceil(x).max(1)]
+}

@@ -1,0 +1,207 @@
+//! Scratch resources of the single-pass mesh renderer, sized by the frame and the mesh; each is
+//! allocated only for the visibility mode that uses it, after checking the adapter's limits.
+
+use super::pipelines::{Layouts, TRIANGLE_ID_FORMAT};
+use super::Visibility;
+use crate::error::{Error, Result};
+use crate::frame::Frame;
+use crate::mesh::MeshBuffers;
+use crate::render::texture::{cached_texture_2d, Texture2d};
+use crate::render::view_layers::DEPTH_FORMAT;
+
+/// Bytes per triangle of `EyeTriangle` and of a covering rectangle (wgsl/mesh/shared/cover_data.wgsl).
+const EYE_TRIANGLE_BYTES: u64 = 48;
+const RECT_BYTES: u64 = 16;
+/// Bytes per subpixel of the atomic nearest-hit keys.
+const KEY_BYTES: u64 = 8;
+
+#[derive(Default)]
+pub(super) struct Scratch {
+    eye_triangles: Option<wgpu::Buffer>,
+    rects: Option<wgpu::Buffer>,
+    depth: Option<Texture2d>,
+    triangle_ids: Option<Texture2d>,
+    keys: Option<wgpu::Buffer>,
+}
+
+/// Bind groups of one frame.
+pub(super) struct Groups {
+    pub mesh: wgpu::BindGroup,
+    pub cover_compute: wgpu::BindGroup,
+    /// Atomic mode: keys for the geometry pass.
+    pub keys_write: Option<wgpu::BindGroup>,
+    /// Exact modes: what the resolve pass reads (triangle ids or keys).
+    pub visible: Option<wgpu::BindGroup>,
+}
+
+fn storage_limit(device: &wgpu::Device) -> u64 {
+    let l = device.limits();
+    l.max_storage_buffer_binding_size.min(l.max_buffer_size)
+}
+
+fn check(what: String, value: u64, limit: u64) -> Result<()> {
+    if value > limit {
+        return Err(Error::LimitExceeded { what, value, limit });
+    }
+    Ok(())
+}
+
+impl Scratch {
+    /// Make sure every resource `visibility` needs exists for `frame` and `triangles`.
+    pub fn prepare(
+        &mut self,
+        device: &wgpu::Device,
+        visibility: Visibility,
+        frame: &Frame,
+        triangles: u32,
+    ) -> Result<()> {
+        let limit = storage_limit(device);
+        let triangles = triangles as u64;
+        check(
+            format!("single-pass per-triangle buffer bytes ({triangles} triangles)"),
+            triangles * EYE_TRIANGLE_BYTES,
+            limit,
+        )?;
+        if self
+            .rects
+            .as_ref()
+            .is_none_or(|b| b.size() != triangles * RECT_BYTES)
+        {
+            let buffer = |label, size| {
+                device.create_buffer(&wgpu::BufferDescriptor {
+                    label: Some(label),
+                    size,
+                    usage: wgpu::BufferUsages::STORAGE,
+                    mapped_at_creation: false,
+                })
+            };
+            self.eye_triangles = Some(buffer("eye triangles", triangles * EYE_TRIANGLE_BYTES));
+            self.rects = Some(buffer("cover rects", triangles * RECT_BYTES));
+        }
+        let k = frame.display.views_per_pixel();
+        let [w, h] = frame.size;
+        match visibility {
+            Visibility::Fast => {
+                cached_texture_2d(
+                    &mut self.depth,
+                    device,
+                    "single-pass depth",
+                    frame.size,
+                    DEPTH_FORMAT,
+                    wgpu::TextureUsages::RENDER_ATTACHMENT,
+                );
+            }
+            Visibility::Exact => {
+                let wide = [w as u64 * k as u64, h as u64];
+                let max = device.limits().max_texture_dimension_2d as u64;
+                check(format!("subpixel target width ({k} × {w})"), wide[0], max)?;
+                let wide = [wide[0] as u32, h];
+                cached_texture_2d(
+                    &mut self.depth,
+                    device,
+                    "subpixel depth",
+                    wide,
+                    DEPTH_FORMAT,
+                    wgpu::TextureUsages::RENDER_ATTACHMENT,
+                );
+                cached_texture_2d(
+                    &mut self.triangle_ids,
+                    device,
+                    "subpixel triangle ids",
+                    wide,
+                    TRIANGLE_ID_FORMAT,
+                    wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+                );
+            }
+            Visibility::ExactAtomic | Visibility::Compute => {
+                let bytes = w as u64 * h as u64 * k as u64 * KEY_BYTES;
+                check(format!("nearest-hit key bytes for {w}x{h}"), bytes, limit)?;
+                if self.keys.as_ref().is_none_or(|b| b.size() != bytes) {
+                    self.keys = Some(device.create_buffer(&wgpu::BufferDescriptor {
+                        label: Some("nearest keys"),
+                        size: bytes,
+                        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+                        mapped_at_creation: false,
+                    }));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    pub fn depth_view(&self) -> Option<&wgpu::TextureView> {
+        self.depth.as_ref().map(|(_, v)| v)
+    }
+
+    pub fn triangle_ids_view(&self) -> &wgpu::TextureView {
+        &self
+            .triangle_ids
+            .as_ref()
+            .expect("prepared for exact visibility")
+            .1
+    }
+
+    pub fn keys_buffer(&self) -> Option<&wgpu::Buffer> {
+        self.keys.as_ref()
+    }
+
+    /// Bind groups for this frame (cheap to create; the buffers behind them are cached).
+    pub fn bind_groups(
+        &self,
+        device: &wgpu::Device,
+        layouts: &Layouts,
+        visibility: Visibility,
+        mesh: &MeshBuffers,
+    ) -> Groups {
+        let eye = self.eye_triangles.as_ref().expect("prepared");
+        let rects = self.rects.as_ref().expect("prepared");
+        let buffers = [&mesh.vertices, &mesh.indices, eye, rects];
+        let group =
+            |label, layout: &wgpu::BindGroupLayout, resources: Vec<wgpu::BindingResource>| {
+                let entries: Vec<wgpu::BindGroupEntry> = resources
+                    .into_iter()
+                    .enumerate()
+                    .map(|(i, resource)| wgpu::BindGroupEntry {
+                        binding: i as u32,
+                        resource,
+                    })
+                    .collect();
+                device.create_bind_group(&wgpu::BindGroupDescriptor {
+                    label: Some(label),
+                    layout,
+                    entries: &entries,
+                })
+            };
+        let mesh_resources = || buffers.iter().map(|b| b.as_entire_binding()).collect();
+        let keys = || {
+            self.keys
+                .as_ref()
+                .expect("prepared for atomic visibility")
+                .as_entire_binding()
+        };
+        let (keys_write, visible) = match visibility {
+            Visibility::Fast => (None, None),
+            Visibility::Exact => {
+                let view = wgpu::BindingResource::TextureView(self.triangle_ids_view());
+                (
+                    None,
+                    Some(group("triangle ids", &layouts.triangle_ids, vec![view])),
+                )
+            }
+            Visibility::ExactAtomic | Visibility::Compute => (
+                Some(group("nearest keys", &layouts.keys_write, vec![keys()])),
+                Some(group("nearest keys", &layouts.keys_read, vec![keys()])),
+            ),
+        };
+        Groups {
+            mesh: group("mesh + cover data", &layouts.mesh, mesh_resources()),
+            cover_compute: group(
+                "mesh cover compute",
+                &layouts.cover_compute,
+                mesh_resources(),
+            ),
+            keys_write,
+            visible,
+        }
+    }
+}

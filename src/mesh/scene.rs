@@ -1,0 +1,92 @@
+//! Mesh data on the GPU: one vertex buffer and one index buffer, usable both as vertex/index
+//! input (N-pass, single view) and as storage for vertex pulling (single pass).
+
+use bytemuck::{Pod, Zeroable};
+use wgpu::util::DeviceExt;
+
+use super::Mesh;
+use crate::error::{Error, Result};
+
+/// One vertex. Keep in sync with `VertexIn` in `wgsl/mesh/npass.wgsl`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct GpuVertex {
+    /// Position (w unused).
+    pub position: [f32; 4],
+    /// Normal (w unused).
+    pub normal: [f32; 4],
+    /// Linear RGBA colour.
+    pub color: [f32; 4],
+}
+const _: () = assert!(std::mem::size_of::<GpuVertex>() == 48);
+crate::shader::gpu_layout!(GpuVertex, "MeshVertex", [position, normal, color]);
+
+/// A mesh uploaded to the GPU.
+pub struct MeshBuffers {
+    /// Vertices ([`GpuVertex`]).
+    pub vertices: wgpu::Buffer,
+    /// u32 triangle indices.
+    pub indices: wgpu::Buffer,
+    /// Number of indices.
+    pub index_count: u32,
+    /// Number of vertices.
+    pub vertex_count: u32,
+}
+
+impl MeshBuffers {
+    /// Validate `mesh`, check the buffer sizes against the device limits, upload.
+    pub fn new(device: &wgpu::Device, mesh: &Mesh) -> Result<Self> {
+        mesh.validate()?;
+        let limits = device.limits();
+        let limit = limits
+            .max_buffer_size
+            .min(limits.max_storage_buffer_binding_size);
+        let vertex_bytes = mesh.positions.len() as u64 * std::mem::size_of::<GpuVertex>() as u64;
+        let index_bytes = mesh.indices.len() as u64 * 4;
+        for (what, bytes) in [
+            ("vertex buffer bytes", vertex_bytes),
+            ("index buffer bytes", index_bytes),
+        ] {
+            if bytes > limit {
+                return Err(Error::LimitExceeded {
+                    what: what.into(),
+                    value: bytes,
+                    limit,
+                });
+            }
+        }
+        let vertices: Vec<GpuVertex> = (0..mesh.positions.len())
+            .map(|i| GpuVertex {
+                position: mesh.positions[i].extend(1.0).to_array(),
+                normal: mesh.normals[i].extend(0.0).to_array(),
+                color: mesh.colors[i],
+            })
+            .collect();
+        let storage = wgpu::BufferUsages::STORAGE;
+        Ok(Self {
+            vertices: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("mesh vertices"),
+                contents: bytemuck::cast_slice(&vertices),
+                usage: wgpu::BufferUsages::VERTEX | storage,
+            }),
+            indices: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("mesh indices"),
+                contents: bytemuck::cast_slice(&mesh.indices),
+                usage: wgpu::BufferUsages::INDEX | storage,
+            }),
+            index_count: mesh.indices.len() as u32,
+            vertex_count: mesh.positions.len() as u32,
+        })
+    }
+
+    /// Vertex layout matching [`GpuVertex`] (locations 0, 1, 2).
+    pub fn vertex_layout() -> wgpu::VertexBufferLayout<'static> {
+        const ATTRIBUTES: [wgpu::VertexAttribute; 3] =
+            wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4, 2 => Float32x4];
+        wgpu::VertexBufferLayout {
+            array_stride: std::mem::size_of::<GpuVertex>() as u64,
+            step_mode: wgpu::VertexStepMode::Vertex,
+            attributes: &ATTRIBUTES,
+        }
+    }
+}

@@ -1,0 +1,377 @@
+//! Point splatting with ε-z deferred compositing (paper §3.3.2, §3.5.2; Zhang & Pajarola 2006).
+//!
+//! Per frame and camera set: a compute pass makes every splat's covering rectangle
+//! (`wgsl/points/cover.wgsl`); each group is drawn into its own image with a z-test
+//! (`wgsl/points/pixel.wgsl`, or `wgsl/points/subpixel.wgsl` for exact depth); a compositing pass blends the
+//! groups within ε of the nearest (`wgsl/points/composite.wgsl`). The single pass does this once with
+//! the display mask choosing each subpixel's ray; the N-pass baseline does it per view with the
+//! same kernel, ε and groups, then mask-composites; the single view once from the centre.
+
+mod group_images;
+mod pipelines;
+
+use crate::render::Method;
+use std::collections::HashMap;
+
+pub use pipelines::SplatParams;
+
+use self::group_images::GroupImages;
+use self::pipelines::{Layouts, Pipelines, COVER_WORKGROUP};
+use crate::error::{Error, Result};
+use crate::frame::{Frame, FrameBinding};
+use crate::points::SplatScene;
+use crate::render::pass_params::PassParams;
+use crate::render::pipeline::{begin_pass, cleared};
+use crate::render::specialize::Specialization;
+use crate::render::Renderer;
+use crate::render::{check_prepared, check_target};
+use crate::render::{Compositor, ViewLayers};
+use crate::target::SpatialTarget;
+
+/// Depth kept per group image by the single pass on subpixel (K = 3) displays.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SplatDepth {
+    /// The paper's: one depth per pixel, the mean of its subpixels' hit depths.
+    Paper,
+    /// One depth per subpixel (subpixel-resolution geometry pass).
+    Exact,
+}
+
+impl SplatDepth {
+    /// Lower-case name (CLI, reports).
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Paper => "paper",
+            Self::Exact => "exact",
+        }
+    }
+}
+
+/// Splatting settings shared by every method (so the baselines splat exactly the same way).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SplatOptions {
+    /// Single-pass depth mode (ignored on K = 1 displays, where both are exact).
+    pub depth: SplatDepth,
+    /// ε of the ε-z compositing in eye-depth (world) units: groups within ε of the nearest
+    /// blend. See [`SplatOptions::epsilon_for`].
+    pub epsilon: f32,
+}
+
+/// Default ε as a fraction of the scene's depth extent (its bounding-sphere diameter).
+pub const DEFAULT_EPSILON_FRACTION: f32 = 0.01;
+
+impl SplatOptions {
+    /// Exact depth, ε = `fraction` × the diameter of `scene`'s bounding sphere.
+    pub fn for_scene(scene: &SplatScene, fraction: f32) -> Self {
+        Self {
+            depth: SplatDepth::Exact,
+            epsilon: Self::epsilon_for(scene, fraction),
+        }
+    }
+
+    /// ε = `fraction` × the scene's depth extent (its bounding-sphere diameter).
+    pub fn epsilon_for(scene: &SplatScene, fraction: f32) -> f32 {
+        fraction * 2.0 * scene.bounds.radius()
+    }
+
+    fn validate(&self) -> Result<()> {
+        if !(self.epsilon.is_finite() && self.epsilon >= 0.0) {
+            return Err(Error::invalid(
+                "epsilon",
+                format!("{}: must be finite and ≥ 0", self.epsilon),
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// Per-splat buffers the cover pass writes (eye-space splats, covering rectangles).
+struct Scratch {
+    eye_splats: wgpu::Buffer,
+    rects: wgpu::Buffer,
+    count: u32,
+}
+
+/// Point-splat renderer for one [`Method`].
+pub struct PointSplatter {
+    method: Method,
+    options: SplatOptions,
+    layouts: Layouts,
+    frame: FrameBinding,
+    params: PassParams<SplatParams>,
+    pipelines: HashMap<(Specialization, bool), Pipelines>,
+    scratch: Option<Scratch>,
+    images: Option<GroupImages>,
+    layers: Option<ViewLayers>,
+    compositor: Option<Compositor>,
+    prepared: Option<PreparedFor>,
+}
+
+impl PointSplatter {
+    /// Prepare layouts; pipelines are built per display specialisation on first use.
+    pub fn new(device: &wgpu::Device, method: Method, options: SplatOptions) -> Result<Self> {
+        options.validate()?;
+        let layouts = Layouts::new(device);
+        let compositor = match method {
+            Method::NPass => Some(Compositor::new(device, &layouts.frame)?),
+            _ => None,
+        };
+        Ok(Self {
+            method,
+            options,
+            frame: FrameBinding::new(device, &layouts.frame),
+            params: PassParams::new(device, "splat pass constants"),
+            layouts,
+            pipelines: HashMap::new(),
+            scratch: None,
+            images: None,
+            layers: None,
+            compositor,
+            prepared: None,
+        })
+    }
+
+    /// The settings.
+    pub fn options(&self) -> SplatOptions {
+        self.options
+    }
+
+    /// GPU bytes this renderer holds for its last frame (scratch buffers, group images, view
+    /// layers), excluding the scene's splat buffer.
+    pub fn allocated_bytes(&self) -> u64 {
+        let scratch = self
+            .scratch
+            .as_ref()
+            .map_or(0, |s| s.eye_splats.size() + s.rects.size());
+        let images = self
+            .images
+            .as_ref()
+            .map_or(0, |i| GroupImages::bytes(i.key.0, i.key.1, i.key.2));
+        let layers = self.layers.as_ref().map_or(0, |l| {
+            let ([w, h], n) = l.key();
+            w as u64 * h as u64 * (4 * n as u64 + 4)
+        });
+        scratch + images + layers
+    }
+
+    /// Whether `frame` renders with per-subpixel depth images.
+    fn subpixel(&self, frame: &Frame) -> bool {
+        self.method == Method::SinglePass
+            && self.options.depth == SplatDepth::Exact
+            && frame.display.views_per_pixel() > 1
+    }
+
+    /// Constants of each camera pass of the frame.
+    fn passes(&self, frame: &Frame) -> Vec<SplatParams> {
+        let camera = &frame.camera;
+        let fixed = |offset: f32| SplatParams {
+            cover_lo: offset,
+            cover_hi: offset,
+            fixed_offset: offset,
+            use_mask: 0,
+            epsilon: self.options.epsilon,
+            _pad: [0.0; 3],
+        };
+        match self.method {
+            Method::SinglePass => vec![SplatParams {
+                cover_lo: -camera.max_offset(),
+                cover_hi: camera.max_offset(),
+                use_mask: 1,
+                ..fixed(0.0)
+            }],
+            Method::SingleView => vec![fixed(0.0)],
+            Method::NPass => (0..camera.views)
+                .map(|i| fixed(camera.view_offset(i)))
+                .collect(),
+        }
+    }
+
+    /// What `frame` of `scene` needs prepared: pipelines (display, subpixel images), sizes.
+    fn needs(&self, scene: &SplatScene, frame: &Frame) -> PreparedFor {
+        PreparedFor {
+            spec: Specialization::of(frame),
+            subpixel: self.subpixel(frame),
+            size: frame.size,
+            views: frame.camera.views,
+            splats: scene.count,
+            groups: scene.groups(),
+        }
+    }
+
+    fn ensure_resources(
+        &mut self,
+        device: &wgpu::Device,
+        scene: &SplatScene,
+        frame: &Frame,
+    ) -> Result<()> {
+        if self.scratch.as_ref().is_none_or(|s| s.count != scene.count) {
+            self.scratch = None;
+            let buffer = |label, bytes: u64| {
+                device.create_buffer(&wgpu::BufferDescriptor {
+                    label: Some(label),
+                    size: bytes,
+                    usage: wgpu::BufferUsages::STORAGE,
+                    mapped_at_creation: false,
+                })
+            };
+            let n = scene.count as u64;
+            self.scratch = Some(Scratch {
+                eye_splats: buffer("eye splats", n * 32),
+                rects: buffer("splat cover rects", n * 16),
+                count: scene.count,
+            });
+        }
+        let subpixel = self.subpixel(frame);
+        let k = if subpixel {
+            frame.display.views_per_pixel()
+        } else {
+            1
+        };
+        let size = [frame.size[0].saturating_mul(k), frame.size[1]];
+        let key = (size, scene.groups(), subpixel);
+        if self.images.as_ref().map(|i| i.key) != Some(key) {
+            self.images = None;
+            self.images = Some(GroupImages::new(device, size, scene.groups(), subpixel)?);
+        }
+        if self.method == Method::NPass
+            && self.layers.as_ref().map(|l| l.key()) != Some((frame.size, frame.camera.views))
+        {
+            self.layers = None;
+            self.layers = Some(ViewLayers::new(device, frame.size, frame.camera.views)?);
+        }
+        let spec = (Specialization::of(frame), subpixel);
+        if !self.pipelines.contains_key(&spec) {
+            let pipelines = crate::gpu::checked(device, "building the splat pipelines", || {
+                pipelines::build(device, &self.layouts, spec.0, spec.1)
+            })??;
+            self.pipelines.insert(spec, pipelines);
+        }
+        Ok(())
+    }
+}
+
+/// What a [`PointSplatter`] was prepared for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct PreparedFor {
+    spec: Specialization,
+    subpixel: bool,
+    size: [u32; 2],
+    views: u32,
+    splats: u32,
+    groups: u32,
+}
+
+impl Renderer<SplatScene> for PointSplatter {
+    fn prepare(
+        &mut self,
+        device: &wgpu::Device,
+        _queue: &wgpu::Queue,
+        scene: &SplatScene,
+        frame: &Frame,
+    ) -> Result<()> {
+        frame.validate()?;
+        self.ensure_resources(device, scene, frame)?;
+        self.prepared = Some(self.needs(scene, frame));
+        Ok(())
+    }
+
+    fn encode(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        scene: &SplatScene,
+        frame: &Frame,
+        target: &SpatialTarget,
+    ) -> Result<()> {
+        frame.validate()?;
+        check_target(frame, target)?;
+        check_prepared("PointSplatter", &self.prepared, &self.needs(scene, frame))?;
+        let passes = self.passes(frame);
+        self.frame.write(device, frame);
+        self.params.write(device, &passes);
+        let pipelines = &self.pipelines[&(Specialization::of(frame), self.subpixel(frame))];
+        let scratch = self.scratch.as_ref().expect("ensured");
+        let images = &self.images.as_ref().expect("ensured").layers;
+        let group = |label, layout, entries: &[wgpu::BindGroupEntry]| {
+            device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some(label),
+                layout,
+                entries,
+            })
+        };
+        let entry = |binding, resource| wgpu::BindGroupEntry { binding, resource };
+        let cover_group = group(
+            "splat cover",
+            &self.layouts.cover,
+            &[
+                entry(0, scene.buffer.as_entire_binding()),
+                entry(1, scratch.eye_splats.as_entire_binding()),
+                entry(2, scratch.rects.as_entire_binding()),
+            ],
+        );
+        let quad_group = group(
+            "splat quads",
+            &self.layouts.quad,
+            &[
+                entry(0, scratch.eye_splats.as_entire_binding()),
+                entry(1, scratch.rects.as_entire_binding()),
+            ],
+        );
+        let images_group = group(
+            "splat group images",
+            &self.layouts.groups,
+            &[entry(
+                0,
+                wgpu::BindingResource::TextureView(&images.array_view),
+            )],
+        );
+        let params_group = group(
+            "splat pass constants",
+            &self.layouts.params,
+            &[entry(0, self.params.binding())],
+        );
+        let workgroups = scene.count.div_ceil(COVER_WORKGROUP);
+        let dispatch = [workgroups.min(65535), workgroups.div_ceil(65535)];
+        for (i, _) in passes.iter().enumerate() {
+            let offset = [self.params.offset(i)];
+            {
+                let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                    label: Some("splat cover"),
+                    timestamp_writes: None,
+                });
+                pass.set_pipeline(&pipelines.cover);
+                pass.set_bind_group(0, &self.frame.bind_group, &[]);
+                pass.set_bind_group(1, &cover_group, &[]);
+                pass.set_bind_group(2, &params_group, &offset);
+                pass.dispatch_workgroups(dispatch[0], dispatch[1], 1);
+            }
+            for (range, layer) in scene.group_ranges.iter().zip(&images.layer_views) {
+                let mut pass = begin_pass(
+                    encoder,
+                    "splat group",
+                    cleared(layer, [0.0; 4]),
+                    Some(&images.depth_view),
+                );
+                pass.set_pipeline(&pipelines.geometry);
+                pass.set_bind_group(0, &self.frame.bind_group, &[]);
+                pass.set_bind_group(1, &quad_group, &[]);
+                pass.set_bind_group(2, &params_group, &offset);
+                pass.draw(range.start * 6..range.end * 6, 0..1);
+            }
+            let output = match &self.layers {
+                Some(layers) => &layers.layer_views[i],
+                None => &target.view,
+            };
+            let mut pass = begin_pass(encoder, "splat composite", cleared(output, [0.0; 4]), None);
+            pass.set_pipeline(&pipelines.composite);
+            pass.set_bind_group(0, &self.frame.bind_group, &[]);
+            pass.set_bind_group(1, &images_group, &[]);
+            pass.set_bind_group(2, &params_group, &offset);
+            pass.draw(0..3, 0..1);
+        }
+        if let (Some(compositor), Some(layers)) = (&self.compositor, &self.layers) {
+            compositor.encode(device, encoder, &self.frame, &layers.array_view, target);
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,196 @@
+//! Bind group layouts and pipelines of the splat renderer.
+
+use bytemuck::{Pod, Zeroable};
+
+use crate::error::Result;
+use crate::frame::frame_bind_group_layout;
+use crate::render::pass_params::PassParams;
+use crate::render::pipeline::{fullscreen_pipeline_with, storage_entry};
+use crate::render::specialize::Specialization;
+use crate::render::view_layers::nearest_depth_test;
+use crate::target::SPATIAL_FORMAT;
+
+/// Invocations per workgroup of `wgsl/points/cover.wgsl`.
+pub(super) const COVER_WORKGROUP: u32 = 64;
+/// Group image per pixel: packed colour·weight/weight of R, G, B + depth bits.
+pub(super) const PIXEL_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba32Uint;
+/// Group image per subpixel: packed colour·weight/weight + depth bits.
+pub(super) const SUBPIXEL_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rg32Uint;
+
+/// Per-pass constants. Keep in sync with `struct SplatParams` in `wgsl/points/shared/splat.wgsl`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct SplatParams {
+    /// Smallest camera offset the covering quads must cover.
+    pub cover_lo: f32,
+    /// Largest camera offset the covering quads must cover.
+    pub cover_hi: f32,
+    /// Camera offset of every ray when `use_mask` is 0.
+    pub fixed_offset: f32,
+    /// 1: per-(sub)pixel views from the display mask.
+    pub use_mask: u32,
+    /// ε of the compositing, eye-depth units.
+    pub epsilon: f32,
+    pub(super) _pad: [f32; 3],
+}
+const _: () = assert!(std::mem::size_of::<SplatParams>() == 32);
+crate::shader::gpu_layout!(
+    SplatParams,
+    "SplatParams",
+    [cover_lo, cover_hi, fixed_offset, use_mask, epsilon]
+);
+
+pub(super) struct Layouts {
+    pub frame: wgpu::BindGroupLayout,
+    /// splats (read), eye splats and cover rects (write): the cover pass.
+    pub cover: wgpu::BindGroupLayout,
+    /// eye splats and cover rects (read): the geometry passes.
+    pub quad: wgpu::BindGroupLayout,
+    /// The group images (compositing).
+    pub groups: wgpu::BindGroupLayout,
+    /// Per-pass constants (dynamic offset).
+    pub params: wgpu::BindGroupLayout,
+}
+
+impl Layouts {
+    pub fn new(device: &wgpu::Device) -> Self {
+        let cs = wgpu::ShaderStages::COMPUTE;
+        let vf = wgpu::ShaderStages::VERTEX_FRAGMENT;
+        let layout = |label, entries: &[wgpu::BindGroupLayoutEntry]| {
+            device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+                label: Some(label),
+                entries,
+            })
+        };
+        Self {
+            frame: frame_bind_group_layout(device),
+            cover: layout(
+                "splat cover",
+                &[
+                    storage_entry(0, true, cs),
+                    storage_entry(1, false, cs),
+                    storage_entry(2, false, cs),
+                ],
+            ),
+            quad: layout(
+                "splat quads",
+                &[storage_entry(0, true, vf), storage_entry(1, true, vf)],
+            ),
+            groups: layout(
+                "splat group images",
+                &[wgpu::BindGroupLayoutEntry {
+                    binding: 0,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Texture {
+                        sample_type: wgpu::TextureSampleType::Uint,
+                        view_dimension: wgpu::TextureViewDimension::D2Array,
+                        multisampled: false,
+                    },
+                    count: None,
+                }],
+            ),
+            params: layout(
+                "splat pass constants",
+                &[PassParams::<SplatParams>::layout_entry(0, cs | vf)],
+            ),
+        }
+    }
+}
+
+pub(super) struct Pipelines {
+    pub cover: wgpu::ComputePipeline,
+    pub geometry: wgpu::RenderPipeline,
+    pub composite: wgpu::RenderPipeline,
+}
+
+/// Pipelines for one display specialisation; `subpixel`: exact depth at subpixel resolution.
+pub(super) fn build(
+    device: &wgpu::Device,
+    layouts: &Layouts,
+    spec: Specialization,
+    subpixel: bool,
+) -> Result<Pipelines> {
+    let padding = if subpixel { 0.5 } else { 1.0 / 16.0 };
+    let cover_constants = spec.constants(&[("COVER_PADDING_PX", padding)]);
+    let constants = spec.constants(&[]);
+    let composite_constants = spec.constants(&[("SUBPIXEL_DEPTH", subpixel as u32 as f64)]);
+    let compile = |constants| wgpu::PipelineCompilationOptions {
+        constants,
+        zero_initialize_workgroup_memory: true,
+    };
+    let pipeline_layout = |label, groups: &[Option<&wgpu::BindGroupLayout>]| {
+        device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some(label),
+            bind_group_layouts: groups,
+            immediate_size: 0,
+        })
+    };
+    let cover_module = crate::shader::module(device, "points/cover.wgsl")?;
+    let cover = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+        label: Some("splat cover"),
+        layout: Some(&pipeline_layout(
+            "splat cover",
+            &[
+                Some(&layouts.frame),
+                Some(&layouts.cover),
+                Some(&layouts.params),
+            ],
+        )),
+        module: &cover_module,
+        entry_point: Some("cs_main"),
+        compilation_options: compile(&cover_constants),
+        cache: None,
+    });
+    let (stage, format) = if subpixel {
+        ("points/subpixel.wgsl", SUBPIXEL_FORMAT)
+    } else {
+        ("points/pixel.wgsl", PIXEL_FORMAT)
+    };
+    let module = crate::shader::module(device, stage)?;
+    let geometry = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some(stage),
+        layout: Some(&pipeline_layout(
+            stage,
+            &[
+                Some(&layouts.frame),
+                Some(&layouts.quad),
+                Some(&layouts.params),
+            ],
+        )),
+        vertex: wgpu::VertexState {
+            module: &module,
+            entry_point: Some("vs_splat"),
+            compilation_options: compile(&constants),
+            buffers: &[],
+        },
+        primitive: wgpu::PrimitiveState::default(),
+        depth_stencil: Some(nearest_depth_test()),
+        multisample: wgpu::MultisampleState::default(),
+        fragment: Some(wgpu::FragmentState {
+            module: &module,
+            entry_point: Some("fs_main"),
+            compilation_options: compile(&constants),
+            targets: &[Some(format.into())],
+        }),
+        multiview_mask: None,
+        cache: None,
+    });
+    let composite_module = crate::shader::module(device, "points/composite.wgsl")?;
+    let composite = fullscreen_pipeline_with(
+        device,
+        "splat composite",
+        &composite_module,
+        &[
+            Some(&layouts.frame),
+            Some(&layouts.groups),
+            Some(&layouts.params),
+        ],
+        SPATIAL_FORMAT,
+        &composite_constants,
+    );
+    Ok(Pipelines {
+        cover,
+        geometry,
+        composite,
+    })
+}

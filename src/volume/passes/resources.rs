@@ -1,0 +1,231 @@
+//! What every volume renderer binds at group 1: the volume texture, a linear sampler, the
+//! pre-integration table (cached per transfer function and sampling distance), the per-dispatch
+//! [`VolumeParams`] (dynamic offsets) and the transparent-brick flags (cached per volume and
+//! transfer function).
+
+use bytemuck::{Pod, Zeroable};
+use glam::{Mat3, Mat4, Vec3};
+
+use crate::error::Result;
+use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
+use crate::render::pass_params::PassParams;
+use crate::volume::VolumeScene;
+use crate::volume::{
+    PreintegrationTable, PreintegrationTexture, TransferFunction, TransparentBrickTexture,
+};
+
+/// Per-dispatch constants. Keep in sync with `struct VolumeParams` in `wgsl/volume/shared/volume.wgsl`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct VolumeParams {
+    tex_from_eye: [[f32; 4]; 4],
+    normal_from_tex: [[f32; 4]; 4],
+    step: f32,
+    fixed_offset: f32,
+    use_mask: u32,
+    max_samples: u32,
+    shade: u32,
+    _pad: [u32; 3],
+}
+const _: () = assert!(std::mem::size_of::<VolumeParams>() == 160);
+crate::shader::gpu_layout!(
+    VolumeParams,
+    "VolumeParams",
+    [
+        tex_from_eye,
+        normal_from_tex,
+        step,
+        fixed_offset,
+        use_mask,
+        max_samples,
+        shade
+    ]
+);
+
+pub(crate) struct VolumeResources {
+    pub frame: FrameBinding,
+    pub frame_layout: wgpu::BindGroupLayout,
+    pub volume_layout: wgpu::BindGroupLayout,
+    sampler: wgpu::Sampler,
+    pub params: PassParams<VolumeParams>,
+    table: Option<(TransferFunction, f32, PreintegrationTexture)>,
+    /// Transparent-brick flags for (scene id, transfer function).
+    bricks: Option<(u64, TransferFunction, TransparentBrickTexture)>,
+}
+
+impl VolumeResources {
+    /// Layouts for group 1 visible to `stages`.
+    pub fn new(device: &wgpu::Device, stages: wgpu::ShaderStages) -> Self {
+        let entry = |binding, ty| wgpu::BindGroupLayoutEntry {
+            binding,
+            visibility: stages,
+            ty,
+            count: None,
+        };
+        let texture = |dim| wgpu::BindingType::Texture {
+            sample_type: wgpu::TextureSampleType::Float { filterable: true },
+            view_dimension: dim,
+            multisampled: false,
+        };
+        let volume_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("volume"),
+            entries: &[
+                entry(0, texture(wgpu::TextureViewDimension::D3)),
+                entry(
+                    1,
+                    wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+                ),
+                entry(2, texture(wgpu::TextureViewDimension::D2)),
+                PassParams::<VolumeParams>::layout_entry(3, stages),
+                entry(
+                    4,
+                    wgpu::BindingType::Texture {
+                        sample_type: wgpu::TextureSampleType::Uint,
+                        view_dimension: wgpu::TextureViewDimension::D3,
+                        multisampled: false,
+                    },
+                ),
+            ],
+        });
+        let frame_layout = frame_bind_group_layout(device);
+        Self {
+            frame: FrameBinding::new(device, &frame_layout),
+            frame_layout,
+            volume_layout,
+            sampler: device.create_sampler(&wgpu::SamplerDescriptor {
+                label: Some("volume linear clamp"),
+                mag_filter: wgpu::FilterMode::Linear,
+                min_filter: wgpu::FilterMode::Linear,
+                ..Default::default()
+            }),
+            params: PassParams::new(device, "volume params"),
+            table: None,
+            bricks: None,
+        }
+    }
+
+    /// The layout of a volume pipeline: frame (group 0), volume (group 1), the pipeline's own
+    /// `group2`.
+    pub fn pipeline_layout(
+        &self,
+        device: &wgpu::Device,
+        label: &str,
+        group2: &wgpu::BindGroupLayout,
+    ) -> wgpu::PipelineLayout {
+        device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some(label),
+            bind_group_layouts: &[
+                Some(&self.frame_layout),
+                Some(&self.volume_layout),
+                Some(group2),
+            ],
+            immediate_size: 0,
+        })
+    }
+
+    /// Constants for one dispatch: all K views per pixel (`use_mask`) or one camera at `offset`.
+    pub fn params(
+        scene: &VolumeScene,
+        frame: &Frame,
+        use_mask: bool,
+        fixed_offset: f32,
+    ) -> VolumeParams {
+        let eye_from_model = frame.camera.eye_from_world * scene.model;
+        let tex_from_model =
+            Mat4::from_translation(Vec3::splat(0.5)) * Mat4::from_scale(scene.extent.recip());
+        let normal = Mat3::from_mat4(eye_from_model).inverse().transpose();
+        VolumeParams {
+            tex_from_eye: (tex_from_model * eye_from_model.inverse()).to_cols_array_2d(),
+            normal_from_tex: Mat4::from_mat3(normal).to_cols_array_2d(),
+            step: scene.step,
+            fixed_offset,
+            use_mask: use_mask as u32,
+            max_samples: (scene.extent.length() / scene.step).ceil() as u32 + 2,
+            shade: scene.shade as u32,
+            _pad: [0; 3],
+        }
+    }
+
+    /// Upload what `scene` needs: the pre-integration table (rebuilt only when the transfer
+    /// function or step changed) and the transparent-brick flags (per volume and transfer
+    /// function). Each upload goes into a new texture, never over one a frame may still use.
+    pub fn upload(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        scene: &VolumeScene,
+    ) -> Result<()> {
+        if !self.table_fresh(scene) {
+            let table = PreintegrationTable::new(&scene.transfer, scene.step / scene.voxel)?;
+            let texture = PreintegrationTexture::new(device, queue, &table);
+            self.table = Some((scene.transfer.clone(), scene.step / scene.voxel, texture));
+        }
+        if !self.bricks_fresh(scene) {
+            let bricks = scene.bricks();
+            let flags = bricks.transparent(&scene.transfer);
+            let texture = TransparentBrickTexture::new(device, queue, bricks.grid, &flags);
+            self.bricks = Some((scene.id(), scene.transfer.clone(), texture));
+        }
+        Ok(())
+    }
+
+    fn table_fresh(&self, scene: &VolumeScene) -> bool {
+        let step_voxels = scene.step / scene.voxel;
+        self.table
+            .as_ref()
+            .is_some_and(|(tf, step, _)| *tf == scene.transfer && *step == step_voxels)
+    }
+
+    fn bricks_fresh(&self, scene: &VolumeScene) -> bool {
+        self.bricks
+            .as_ref()
+            .is_some_and(|(id, tf, _)| *id == scene.id() && *tf == scene.transfer)
+    }
+
+    /// Whether [`VolumeResources::upload`] ran for `scene` as it is now (the same volume,
+    /// transfer function and step).
+    pub fn uploaded_for(&self, scene: &VolumeScene) -> bool {
+        self.table_fresh(scene) && self.bricks_fresh(scene)
+    }
+
+    /// This frame's constants and the dispatches' (buffers of their own, no queue writes),
+    /// then the group-1 bind group over what [`VolumeResources::upload`] made.
+    pub fn bind(
+        &mut self,
+        device: &wgpu::Device,
+        scene: &VolumeScene,
+        frame: &Frame,
+        dispatches: &[VolumeParams],
+    ) -> wgpu::BindGroup {
+        self.frame.write(device, frame);
+        self.params.write(device, dispatches);
+        let table = &self.table.as_ref().expect("uploaded by prepare").2.view;
+        let bricks = &self.bricks.as_ref().expect("uploaded by prepare").2.view;
+        device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("volume"),
+            layout: &self.volume_layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: wgpu::BindingResource::TextureView(&scene.texture().view),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: wgpu::BindingResource::Sampler(&self.sampler),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: wgpu::BindingResource::TextureView(table),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 3,
+                    resource: self.params.binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 4,
+                    resource: wgpu::BindingResource::TextureView(bricks),
+                },
+            ],
+        })
+    }
+}

@@ -1,0 +1,332 @@
+//! The paper's volume path (§3.3.1, §3.5.1): view-aligned proxy slices drawn back to front,
+//! per fragment the K views' samples offset per Eq. 1, pre-integrated and shaded, blended
+//! "over" (`wgsl/volume/slices.wgsl`). Two α modes: the paper's mean α per pixel, and exact
+//! per-channel α with dual-source blending.
+
+use std::collections::HashMap;
+
+use bytemuck::{Pod, Zeroable};
+use glam::{Vec3, Vec4Swizzles};
+
+use super::raycast::{check_volume_prepared, PreparedFor};
+use super::resources::VolumeResources;
+use crate::error::Result;
+use crate::frame::Frame;
+use crate::render::check_target;
+use crate::render::pipeline::{begin_pass, cleared, draw_fullscreen, fullscreen_pipeline};
+use crate::render::specialize::Specialization;
+use crate::render::texture::{cached_texture_2d, Texture2d};
+use crate::render::Renderer;
+use crate::target::{SpatialTarget, SPATIAL_FORMAT};
+use crate::volume::VolumeScene;
+
+/// How the K views' opacities of one fragment are blended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum AlphaMode {
+    /// One α per pixel, the mean over the K views (the paper; 2007 GPUs had one blend α).
+    Paper,
+    /// One α per channel (dual-source blending): matches N-pass.
+    Exact,
+}
+
+/// Accumulation format: float, so hundreds of blended slices don't quantise.
+const ACCUMULATION_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
+
+/// One proxy slice. Keep in sync with `struct Slice` in `wgsl/volume/slices.wgsl`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+struct SliceRect {
+    depth: [f32; 4],
+    rect: [f32; 4],
+}
+const _: () = assert!(std::mem::size_of::<SliceRect>() == 32);
+crate::shader::gpu_layout!(SliceRect, "Slice", [depth, rect]);
+#[cfg(test)]
+pub(crate) const SLICE_LAYOUT: crate::shader::GpuLayout = SliceRect::GPU_LAYOUT;
+
+/// Single-pass volume rendering with proxy slices.
+pub struct VolumeSlicer {
+    alpha: AlphaMode,
+    resources: VolumeResources,
+    slices_layout: wgpu::BindGroupLayout,
+    accumulated_layout: wgpu::BindGroupLayout,
+    pipelines: HashMap<Specialization, wgpu::RenderPipeline>,
+    resolve: wgpu::RenderPipeline,
+    accumulation: Option<Texture2d>,
+    prepared: Option<PreparedFor>,
+}
+
+impl VolumeSlicer {
+    /// Needs `DUAL_SOURCE_BLENDING` (per-channel blend factors).
+    pub fn new(device: &wgpu::Device, alpha: AlphaMode) -> Result<Self> {
+        crate::gpu::require_features(
+            device,
+            wgpu::Features::DUAL_SOURCE_BLENDING,
+            "the proxy-slice volume path (--path slices)",
+            "use --path compute (the ray-marching compute path)",
+        )?;
+        let resources = VolumeResources::new(device, wgpu::ShaderStages::VERTEX_FRAGMENT);
+        let layout = |label, ty| {
+            device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+                label: Some(label),
+                entries: &[wgpu::BindGroupLayoutEntry {
+                    binding: 0,
+                    visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+                    ty,
+                    count: None,
+                }],
+            })
+        };
+        let slices_layout = layout(
+            "volume slices",
+            wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Storage { read_only: true },
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+        );
+        let accumulated_layout = layout(
+            "slice accumulation",
+            wgpu::BindingType::Texture {
+                sample_type: wgpu::TextureSampleType::Float { filterable: false },
+                view_dimension: wgpu::TextureViewDimension::D2,
+                multisampled: false,
+            },
+        );
+        let resolve = fullscreen_pipeline(
+            device,
+            "volume slices resolve",
+            &crate::shader::module(device, "volume/slices_resolve.wgsl")?,
+            &[Some(&resources.frame_layout), Some(&accumulated_layout)],
+            SPATIAL_FORMAT,
+        );
+        Ok(Self {
+            alpha,
+            resources,
+            slices_layout,
+            accumulated_layout,
+            pipelines: HashMap::new(),
+            resolve,
+            accumulation: None,
+            prepared: None,
+        })
+    }
+
+    fn ensure_pipeline(&mut self, device: &wgpu::Device, spec: Specialization) -> Result<()> {
+        if self.pipelines.contains_key(&spec) {
+            return Ok(());
+        }
+        let module = crate::shader::module(device, "volume/slices.wgsl")?;
+        let layout = self
+            .resources
+            .pipeline_layout(device, "volume slices", &self.slices_layout);
+        let exact = (self.alpha == AlphaMode::Exact) as u32 as f64;
+        let constants = spec.constants(&[("EXACT_ALPHA", exact)]);
+        let options = wgpu::PipelineCompilationOptions {
+            constants: &constants,
+            zero_initialize_workgroup_memory: true,
+        };
+        let over = wgpu::BlendComponent {
+            src_factor: wgpu::BlendFactor::One,
+            dst_factor: wgpu::BlendFactor::OneMinusSrc1,
+            operation: wgpu::BlendOperation::Add,
+        };
+        let pipeline = crate::gpu::checked(device, "building the volume slice pipeline", || {
+            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some("volume slices"),
+                layout: Some(&layout),
+                vertex: wgpu::VertexState {
+                    module: &module,
+                    entry_point: Some("vs_main"),
+                    compilation_options: options.clone(),
+                    buffers: &[],
+                },
+                primitive: wgpu::PrimitiveState::default(),
+                depth_stencil: None,
+                multisample: Default::default(),
+                fragment: Some(wgpu::FragmentState {
+                    module: &module,
+                    entry_point: Some("fs_main"),
+                    compilation_options: options,
+                    targets: &[Some(wgpu::ColorTargetState {
+                        format: ACCUMULATION_FORMAT,
+                        blend: Some(wgpu::BlendState {
+                            color: over,
+                            alpha: over,
+                        }),
+                        write_mask: wgpu::ColorWrites::ALL,
+                    })],
+                }),
+                multiview_mask: None,
+                cache: None,
+            })
+        })?;
+        self.pipelines.insert(spec, pipeline);
+        Ok(())
+    }
+}
+
+/// Back-to-front proxy slices: for each segment [kΔ, (k+1)Δ] inside the box and [near, far],
+/// the NDC rectangle covering the box's cross-sections at both depths in every view.
+fn slices(scene: &VolumeScene, frame: &Frame) -> Vec<SliceRect> {
+    let camera = &frame.camera;
+    let eye_from_model = camera.eye_from_world * scene.model;
+    let half = scene.extent * 0.5;
+    let corners: Vec<Vec3> = (0..8)
+        .map(|i| {
+            let s = Vec3::new(
+                if i & 1 == 0 { -1.0 } else { 1.0 },
+                if i & 2 == 0 { -1.0 } else { 1.0 },
+                if i & 4 == 0 { -1.0 } else { 1.0 },
+            );
+            (eye_from_model * (s * half).extend(1.0)).xyz()
+        })
+        .collect();
+    let edges = (0..8usize)
+        .flat_map(|a| [1usize, 2, 4].map(move |bit| (a, a | bit)))
+        .filter(|(a, b)| a != b);
+    let edges: Vec<(Vec3, Vec3)> = edges.map(|(a, b)| (corners[a], corners[b])).collect();
+    let depths = corners.iter().map(|c| -c.z);
+    let d_min = depths
+        .clone()
+        .fold(f32::INFINITY, f32::min)
+        .max(camera.near);
+    let d_max = depths.fold(f32::NEG_INFINITY, f32::max).min(camera.far);
+    let step = scene.step;
+    let (fd, spread) = (camera.focal_distance, camera.max_offset());
+    let window = camera.focal_window();
+    let pad = window / glam::Vec2::new(frame.size[0] as f32, frame.size[1] as f32) / 16.0;
+    // The cross-section of the box at depth d, projected and widened for every view.
+    let section = |d: f32, lo: &mut glam::Vec2, hi: &mut glam::Vec2| {
+        for (a, b) in &edges {
+            let (da, db) = (-a.z, -b.z);
+            if (da - d) * (db - d) > 0.0 || da == db {
+                continue;
+            }
+            let p = *a + (*b - *a) * ((d - da) / (db - da));
+            let s = fd / d;
+            let x = p.x * s;
+            let w = spread * (1.0 - s).abs();
+            *lo = lo.min(glam::Vec2::new(x - w, p.y * s));
+            *hi = hi.max(glam::Vec2::new(x + w, p.y * s));
+        }
+    };
+    let (k0, k1) = ((d_min / step).ceil() as i64, (d_max / step).floor() as i64);
+    let mut out = Vec::new();
+    for k in (k0..k1).rev() {
+        let d = k as f32 * step;
+        let (mut lo, mut hi) = (
+            glam::Vec2::splat(f32::INFINITY),
+            glam::Vec2::splat(f32::NEG_INFINITY),
+        );
+        section(d, &mut lo, &mut hi);
+        section(d + step, &mut lo, &mut hi);
+        if lo.x > hi.x {
+            continue;
+        }
+        let to_ndc = |v: glam::Vec2| {
+            (v / (window * 0.5)).clamp(glam::Vec2::splat(-2.0), glam::Vec2::splat(2.0))
+        };
+        let (lo, hi) = (to_ndc(lo - pad), to_ndc(hi + pad));
+        out.push(SliceRect {
+            depth: [d, 0.0, 0.0, 0.0],
+            rect: [lo.x, lo.y, hi.x, hi.y],
+        });
+    }
+    out
+}
+
+impl Renderer<VolumeScene> for VolumeSlicer {
+    fn prepare(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        scene: &VolumeScene,
+        frame: &Frame,
+    ) -> Result<()> {
+        frame.validate()?;
+        scene.validate()?;
+        let key = PreparedFor::of(scene, frame);
+        self.resources.upload(device, queue, scene)?;
+        self.ensure_pipeline(device, key.spec)?;
+        cached_texture_2d(
+            &mut self.accumulation,
+            device,
+            "slice accumulation",
+            frame.size,
+            ACCUMULATION_FORMAT,
+            wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+        );
+        self.prepared = Some(key);
+        Ok(())
+    }
+
+    fn encode(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        scene: &VolumeScene,
+        frame: &Frame,
+        target: &SpatialTarget,
+    ) -> Result<()> {
+        frame.validate()?;
+        scene.validate()?;
+        check_target(frame, target)?;
+        check_volume_prepared(
+            "VolumeSlicer",
+            &self.prepared,
+            &self.resources,
+            scene,
+            frame,
+        )?;
+        let spec = Specialization::of(frame);
+        let params = VolumeResources::params(scene, frame, true, 0.0);
+        let volume_group = self.resources.bind(device, scene, frame, &[params]);
+        let rects = slices(scene, frame);
+        // A buffer of this frame's own (src/render/pass_params.rs), never empty.
+        let mut bytes = bytemuck::cast_slice::<_, u8>(&rects).to_vec();
+        bytes.resize(bytes.len().max(std::mem::size_of::<SliceRect>()), 0);
+        let buffer = &crate::render::pass_params::constants_buffer(
+            device,
+            "volume slices",
+            wgpu::BufferUsages::STORAGE,
+            &bytes,
+        );
+        let slices_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("volume slices"),
+            layout: &self.slices_layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: buffer.as_entire_binding(),
+            }],
+        });
+        let accumulation = &self.accumulation.as_ref().expect("allocated by prepare").1;
+        {
+            // Cleared to the background: "over" blending then composites every channel over it
+            // with that channel's own α.
+            let color = cleared(accumulation, frame.background);
+            let mut pass = begin_pass(encoder, "volume slices", color, None);
+            pass.set_pipeline(&self.pipelines[&spec]);
+            pass.set_bind_group(0, &self.resources.frame.bind_group, &[]);
+            pass.set_bind_group(1, &volume_group, &[0]);
+            pass.set_bind_group(2, &slices_group, &[]);
+            pass.draw(0..6, 0..rects.len() as u32);
+        }
+        let accumulated = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("slice accumulation"),
+            layout: &self.accumulated_layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: wgpu::BindingResource::TextureView(accumulation),
+            }],
+        });
+        draw_fullscreen(
+            encoder,
+            "volume slices resolve",
+            &self.resolve,
+            &[&self.resources.frame.bind_group, &accumulated],
+            &target.view,
+        );
+        Ok(())
+    }
+}

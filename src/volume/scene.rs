@@ -1,0 +1,248 @@
+//! The volume on the GPU: its texture, the pre-integration table and transparent-brick flags,
+//! and [`VolumeScene`], what every volume method renders.
+
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use glam::{Mat4, Vec3};
+use half::f16;
+use wgpu::util::DeviceExt;
+
+use super::transfer::{PreintegrationTable, TransferFunction, TABLE_SIZE};
+use super::{BrickRanges, Volume};
+use crate::error::{Error, Result};
+
+/// The volume as one RGBA16F 3D texture: Sobel gradient in RGB, scalar in A (paper §3.5.1).
+pub struct VolumeTexture {
+    /// The texture.
+    pub texture: wgpu::Texture,
+    /// Its 3D view.
+    pub view: wgpu::TextureView,
+}
+
+fn half4(v: [f32; 4]) -> [f16; 4] {
+    v.map(f16::from_f32)
+}
+
+impl VolumeTexture {
+    /// Compute gradients and upload; a dimension beyond `max_texture_dimension_3d` is an error
+    /// that suggests downsampling.
+    pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, volume: &Volume) -> Result<Self> {
+        volume.validate()?;
+        Self::new_validated(device, queue, volume)
+    }
+
+    /// [`VolumeTexture::new`] for a volume its caller has just validated (one pass over the
+    /// voxels less).
+    pub(crate) fn new_validated(
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        volume: &Volume,
+    ) -> Result<Self> {
+        let limit = device.limits().max_texture_dimension_3d;
+        if let Some(&d) = volume.dims.iter().find(|&&d| d > limit) {
+            return Err(Error::LimitExceeded {
+                what: format!(
+                    "volume dimension {d} of {:?} (downsample it, e.g. --downsample 2)",
+                    volume.dims
+                ),
+                value: d.into(),
+                limit: limit.into(),
+            });
+        }
+        let texels: Vec<[f16; 4]> = volume.gradients().into_iter().map(half4).collect();
+        let (texture, view) = crate::gpu::checked(device, "uploading the volume", || {
+            upload(
+                device,
+                queue,
+                "volume",
+                (wgpu::TextureDimension::D3, volume.dims),
+                wgpu::TextureFormat::Rgba16Float,
+                bytemuck::cast_slice(&texels),
+            )
+        })?;
+        Ok(Self { texture, view })
+    }
+}
+
+/// The pre-integration table as an RGBA16F 2D texture (front scalar = row, back = column).
+pub struct PreintegrationTexture {
+    /// The texture.
+    pub texture: wgpu::Texture,
+    /// Its view.
+    pub view: wgpu::TextureView,
+}
+
+impl PreintegrationTexture {
+    /// Upload `table`.
+    pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, table: &PreintegrationTable) -> Self {
+        let texels: Vec<[f16; 4]> = table.rgba.iter().copied().map(half4).collect();
+        let n = TABLE_SIZE as u32;
+        let (texture, view) = upload(
+            device,
+            queue,
+            "pre-integration table",
+            (wgpu::TextureDimension::D2, [n, n, 1]),
+            wgpu::TextureFormat::Rgba16Float,
+            bytemuck::cast_slice(&texels),
+        );
+        Self { texture, view }
+    }
+}
+
+/// Transparent-brick flags ([`super::BrickRanges::transparent`]) as an R8Uint 3D texture, one
+/// texel per brick.
+pub struct TransparentBrickTexture {
+    /// The texture.
+    pub texture: wgpu::Texture,
+    /// Its view.
+    pub view: wgpu::TextureView,
+}
+
+impl TransparentBrickTexture {
+    /// Upload `flags` (x fastest) of a `grid` of bricks.
+    pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, grid: [u32; 3], flags: &[u8]) -> Self {
+        let format = wgpu::TextureFormat::R8Uint;
+        let size = (wgpu::TextureDimension::D3, grid);
+        let (texture, view) = upload(device, queue, "transparent bricks", size, format, flags);
+        Self { texture, view }
+    }
+}
+
+/// A sampled texture of `dimension` and `size` holding `bytes` (layer-major).
+fn upload(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    label: &str,
+    (dimension, size): (wgpu::TextureDimension, [u32; 3]),
+    format: wgpu::TextureFormat,
+    bytes: &[u8],
+) -> (wgpu::Texture, wgpu::TextureView) {
+    let texture = device.create_texture_with_data(
+        queue,
+        &wgpu::TextureDescriptor {
+            label: Some(label),
+            size: wgpu::Extent3d {
+                width: size[0],
+                height: size[1],
+                depth_or_array_layers: size[2],
+            },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension,
+            format,
+            usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+            view_formats: &[],
+        },
+        wgpu::util::TextureDataOrder::LayerMajor,
+        bytes,
+    );
+    let view = texture.create_view(&Default::default());
+    (texture, view)
+}
+
+/// A volume ready to render: GPU texture, box size, classification and sampling.
+pub struct VolumeScene {
+    /// Gradients + scalar (private: the brick ranges and the id describe this data).
+    texture: VolumeTexture,
+    /// World-space size of the box (centred at the origin before `model`).
+    pub extent: Vec3,
+    /// Smallest voxel spacing (the unit of transfer-function opacity).
+    pub voxel: f32,
+    /// Transfer function.
+    pub transfer: TransferFunction,
+    /// Distance Δ between samples along the eye depth, world units.
+    pub step: f32,
+    /// Volume → world transform (rotation of the volume).
+    pub model: Mat4,
+    /// Blinn-Phong shading from the gradients (off: emission-absorption only).
+    pub shade: bool,
+    /// Jump over bricks the transfer function makes fully transparent (ray-marching path;
+    /// exact: the image is the same bit for bit, see `volume::bricks`).
+    pub skip_empty: bool,
+    /// Scalar ranges per brick of the uploaded volume.
+    pub(crate) bricks: BrickRanges,
+    /// Identifies the uploaded volume for caches of data derived from it.
+    pub(crate) id: u64,
+}
+
+/// Most samples a ray may take (a guard, and the bound on `--step`).
+pub const MAX_SAMPLES_PER_RAY: f32 = 16384.0;
+
+impl VolumeScene {
+    /// Upload `volume`; sampling distance `step` world units (default: half the smallest voxel
+    /// spacing).
+    pub fn new(
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        volume: &Volume,
+        transfer: TransferFunction,
+        step: Option<f32>,
+        model: Mat4,
+    ) -> Result<Self> {
+        // Everything is checked before the upload.
+        volume.validate()?;
+        let voxel = volume.min_spacing();
+        let step = step.unwrap_or(0.5 * voxel);
+        check_scene(volume.extent(), &transfer, step, model)?;
+        let texture = VolumeTexture::new_validated(device, queue, volume)?;
+        static NEXT_ID: AtomicU64 = AtomicU64::new(0);
+        Ok(Self {
+            texture,
+            extent: volume.extent(),
+            voxel,
+            transfer,
+            step,
+            model,
+            shade: true,
+            skip_empty: true,
+            bricks: BrickRanges::new(volume),
+            id: NEXT_ID.fetch_add(1, Ordering::Relaxed),
+        })
+    }
+
+    /// Check the public fields a caller may have changed since [`VolumeScene::new`]: the
+    /// renderers call this before every frame.
+    pub fn validate(&self) -> Result<()> {
+        check_scene(self.extent, &self.transfer, self.step, self.model)
+    }
+
+    /// The uploaded volume (gradients + scalar).
+    pub fn texture(&self) -> &VolumeTexture {
+        &self.texture
+    }
+
+    /// Scalar ranges per brick (empty-space skipping).
+    pub fn bricks(&self) -> &BrickRanges {
+        &self.bricks
+    }
+
+    /// Identifies the uploaded volume: caches of data derived from it key on this.
+    pub(crate) fn id(&self) -> u64 {
+        self.id
+    }
+
+    /// Sampling distance for `slices` samples across the box diagonal.
+    pub fn step_for_slices(volume: &Volume, slices: u32) -> f32 {
+        volume.extent().length() / slices.max(1) as f32
+    }
+}
+
+/// Transfer function, sampling step (positive, at most [`MAX_SAMPLES_PER_RAY`] samples across the
+/// box diagonal) and volume rotation (finite) of a scene whose box is `extent`.
+fn check_scene(extent: Vec3, transfer: &TransferFunction, step: f32, model: Mat4) -> Result<()> {
+    transfer.validate()?;
+    let diagonal = extent.length();
+    if !(step.is_finite() && step > 0.0 && diagonal / step <= MAX_SAMPLES_PER_RAY) {
+        return Err(Error::invalid(
+            "sampling step",
+            format!(
+                "{step}: must be positive and at least {} (the box diagonal / {MAX_SAMPLES_PER_RAY})",
+                diagonal / MAX_SAMPLES_PER_RAY
+            ),
+        ));
+    }
+    if !model.is_finite() {
+        return Err(Error::invalid("volume rotation", "not finite"));
+    }
+    Ok(())
+}

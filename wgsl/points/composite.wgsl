@@ -1,0 +1,71 @@
+// Splat compositing pass (paper §3.5.2, after Zhang & Pajarola 2006): per subpixel, the nearest
+// depth d over the K group images, then the colour·weight and weight of every group within
+// d + ε summed and normalised; background where nothing was hit.
+#import points/shared/splat.wgsl
+
+// Bindings read by points/shared/splat.wgsl.
+@group(2) @binding(0) var<uniform> params: SplatParams;
+// Bindings read by shared/frame.wgsl.
+@group(0) @binding(0) var<uniform> frame: Frame;
+
+// One layer per group: per pixel (pixel depth) or per subpixel (exact depth), see
+// points/pixel.wgsl and points/subpixel.wgsl. Depth bits 0 = nothing drawn.
+@group(1) @binding(0) var groups: texture_2d_array<u32>;
+
+override SUBPIXEL_DEPTH: bool = false;
+
+const FAR: f32 = 3.0e38;
+
+// Normalised colour of one subpixel from the (packed, depth bits) samples of every group.
+fn blend_subpixel(coord: vec2<u32>, background: f32) -> f32 {
+    let layers = textureNumLayers(groups);
+    var nearest = FAR;
+    for (var g = 0u; g < layers; g++) {
+        let t = textureLoad(groups, coord, g, 0).xy;
+        if (t.y != 0u) {
+            nearest = min(nearest, bitcast<f32>(t.y));
+        }
+    }
+    var sum = vec2<f32>(0.0);
+    for (var g = 0u; g < layers; g++) {
+        let t = textureLoad(groups, coord, g, 0).xy;
+        if (t.y != 0u && bitcast<f32>(t.y) <= nearest + params.epsilon) {
+            sum += unpack2x16float(t.x);
+        }
+    }
+    return select(background, sum.x / sum.y, sum.y > 0.0);
+}
+
+@fragment
+fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
+    let px = vec2<u32>(position.xy);
+    let background = frame.background.rgb;
+    if (SUBPIXEL_DEPTH) {
+        var out = background;
+        for (var c = 0u; c < VIEWS_PER_PIXEL; c++) {
+            out[c] = blend_subpixel(vec2<u32>(px.x * VIEWS_PER_PIXEL + c, px.y), background[c]);
+        }
+        return vec4<f32>(out, 1.0);
+    }
+    let layers = textureNumLayers(groups);
+    var nearest = FAR;
+    for (var g = 0u; g < layers; g++) {
+        let t = textureLoad(groups, px, g, 0);
+        if (t.w != 0u) {
+            nearest = min(nearest, bitcast<f32>(t.w));
+        }
+    }
+    var color = vec3<f32>(0.0);
+    var weight = vec3<f32>(0.0);
+    for (var g = 0u; g < layers; g++) {
+        let t = textureLoad(groups, px, g, 0);
+        if (t.w != 0u && bitcast<f32>(t.w) <= nearest + params.epsilon) {
+            let r = unpack2x16float(t.x);
+            let gr = unpack2x16float(t.y);
+            let b = unpack2x16float(t.z);
+            color += vec3<f32>(r.x, gr.x, b.x);
+            weight += vec3<f32>(r.y, gr.y, b.y);
+        }
+    }
+    return vec4<f32>(select(background, color / weight, weight > vec3<f32>(0.0)), 1.0);
+}
