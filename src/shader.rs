@@ -43,6 +43,7 @@ pub const STAGES: &[(&str, &str)] = &[
     wgsl!("mesh/npass.wgsl"),
     wgsl!("render/composite.wgsl"),
     wgsl!("render/output.wgsl"),
+    wgsl!("render/storage_fence.wgsl"),
     wgsl!("mesh/single_pass_cover.wgsl"),
     wgsl!("mesh/single_pass_fast.wgsl"),
     wgsl!("mesh/single_pass_subpixel.wgsl"),

@@ -93,13 +93,7 @@ fn two_frames_with_different_cameras_in_one_encoder_before_one_submit() {
         ..Default::default()
     };
     let mut single = MeshSinglePass::new(&common::gpu().device, options).unwrap();
-    // Known GL defect, left open (docs/DESIGN.md §7): llvmpipe defers draws while compute runs
-    // at once, and wgpu's GL backend orders no later compute write after earlier draws' reads,
-    // so frame 2's cover pass overwrites the cover data frame 1's draws still read. Everything
-    // else is checked on GL too.
-    if common::gpu().info().backend != wgpu::Backend::Gl {
-        assert_two_frames_in_one_encoder("mesh-single-pass", &mut single, &buffers, bounds);
-    }
+    assert_two_frames_in_one_encoder("mesh-single-pass", &mut single, &buffers, bounds);
     let mut npass = MeshBaseline::new(&common::gpu().device, Method::NPass).unwrap();
     assert_two_frames_in_one_encoder("mesh-n-pass", &mut npass, &buffers, bounds);
 

@@ -19,6 +19,7 @@ pub(crate) mod pass_params;
 pub(crate) mod pipeline;
 mod renderer;
 pub(crate) mod specialize;
+pub(crate) mod storage_fence;
 pub(crate) mod texture;
 pub(crate) mod view_layers;
 

@@ -23,6 +23,7 @@ use crate::points::SplatScene;
 use crate::render::pass_params::PassParams;
 use crate::render::pipeline::{begin_pass, cleared};
 use crate::render::specialize::Specialization;
+use crate::render::storage_fence::StorageFence;
 use crate::render::Renderer;
 use crate::render::{check_prepared, check_target};
 use crate::render::{Compositor, ViewLayers};
@@ -105,6 +106,7 @@ pub struct PointSplatter {
     layers: Option<ViewLayers>,
     compositor: Option<Compositor>,
     prepared: Option<PreparedFor>,
+    fence: StorageFence,
 }
 
 impl PointSplatter {
@@ -128,6 +130,7 @@ impl PointSplatter {
             layers: None,
             compositor,
             prepared: None,
+            fence: StorageFence::new(device)?,
         })
     }
 
@@ -334,6 +337,8 @@ impl Renderer<SplatScene> for PointSplatter {
         let dispatch = [workgroups.min(65535), workgroups.div_ceil(65535)];
         for (i, _) in passes.iter().enumerate() {
             let offset = [self.params.offset(i)];
+            self.fence
+                .encode(device, encoder, [&scratch.eye_splats, &scratch.rects]);
             {
                 let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
                     label: Some("splat cover"),

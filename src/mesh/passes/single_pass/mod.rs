@@ -26,6 +26,7 @@ use crate::frame::{Frame, FrameBinding};
 use crate::mesh::MeshBuffers;
 use crate::render::pipeline::{begin_pass, cleared, draw_fullscreen};
 use crate::render::specialize::Specialization;
+use crate::render::storage_fence::StorageFence;
 use crate::render::{check_prepared, check_target, Renderer};
 use crate::target::SpatialTarget;
 use pipelines::{Layouts, Pipelines};
@@ -116,6 +117,7 @@ pub struct MeshSinglePass {
     pipelines: HashMap<Specialization, Pipelines>,
     scratch: Scratch,
     prepared: Option<PreparedFor>,
+    fence: StorageFence,
 }
 
 impl MeshSinglePass {
@@ -139,6 +141,7 @@ impl MeshSinglePass {
             pipelines: HashMap::new(),
             scratch: Scratch::default(),
             prepared: None,
+            fence: StorageFence::new(device)?,
         })
     }
 
@@ -212,6 +215,7 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
         if let Some(keys) = s.keys_buffer() {
             encoder.clear_buffer(keys, 0, None);
         }
+        self.fence.encode(device, encoder, s.cover_buffers());
         {
             let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
                 label: Some(pipelines.compute_label),

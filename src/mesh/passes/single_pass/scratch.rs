@@ -141,6 +141,14 @@ impl Scratch {
             .1
     }
 
+    /// The buffers the cover pass writes and the later passes read.
+    pub fn cover_buffers(&self) -> [&wgpu::Buffer; 2] {
+        [
+            self.eye_triangles.as_ref().expect("prepared"),
+            self.rects.as_ref().expect("prepared"),
+        ]
+    }
+
     pub fn keys_buffer(&self) -> Option<&wgpu::Buffer> {
         self.keys.as_ref()
     }
