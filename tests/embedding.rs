@@ -11,8 +11,8 @@ use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::points::{GroupCount, PointCloud, SplatScene};
 use autostereo::readback::read_texture_rgba8;
 use autostereo::render::{
-    MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Method, OutputBlit, PointSplatter,
-    Renderer, SplatOptions, Visibility, VolumeRaycaster, VolumeScene,
+    AnyRenderer, AnyScene, MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Method, OutputBlit,
+    PointSplatter, Renderer, SplatOptions, Visibility, VolumeRaycaster, VolumeScene,
 };
 use autostereo::target::SpatialTarget;
 use autostereo::volume::{phantom, TransferFunction};
@@ -242,4 +242,22 @@ fn what_a_caller_can_get_wrong_is_a_clear_error() {
         .is_err());
     // The single pass has no N-pass of its own.
     assert!(MeshBaseline::new(device, Method::SinglePass).is_err());
+    drop(encoder);
+
+    // AnyRenderer hides the primitive but renders only its own.
+    let cloud = PointCloud::sphere(200, Vec3::ZERO, 1.0, Some(0.8));
+    let (splats, _) = cloud.complete(1.0).unwrap();
+    let points = AnyScene::Points(SplatScene::new(device, &splats, GroupCount::Auto).unwrap());
+    let mesh_scene = AnyScene::Mesh(buffers);
+    let mut any = AnyRenderer::new(device, &mesh_scene, Method::SinglePass).unwrap();
+    any.render(device, &ctx.queue, &mesh_scene, &frame, &spatial)
+        .unwrap();
+    let e = any
+        .render(device, &ctx.queue, &points, &frame, &spatial)
+        .err()
+        .unwrap();
+    assert!(
+        e.to_string().contains("a points scene for a mesh renderer"),
+        "{e}"
+    );
 }

@@ -14,10 +14,7 @@ use autostereo::frame::Frame;
 use autostereo::image_io::{compare, ImageDiff, RgbImage};
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::points::{GroupCount, PointCloud, SplatScene};
-use autostereo::render::{
-    MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Method, PointSplatter, Renderer,
-    SplatOptions, Visibility, VolumeRaycaster, VolumeScene,
-};
+use autostereo::render::{AnyRenderer, AnyScene, Method, Renderer, VolumeScene};
 use autostereo::target::SpatialTarget;
 use autostereo::volume::{phantom, TransferFunction, Volume};
 use glam::{Mat4, Vec3};
@@ -26,20 +23,12 @@ const SIZE: [u32; 2] = [48, 40];
 const BACKGROUND: [f32; 4] = [0.2, 0.4, 0.6, 1.0];
 
 /// One primitive's scene, uploaded.
-enum Scene {
-    Mesh(MeshBuffers),
-    /// The single pass skips empty space; its N-pass oracle marches every segment, so the
-    /// extremes test the skipping too.
-    Volume {
-        skipping: Box<VolumeScene>,
-        marching: Box<VolumeScene>,
-    },
-    Points(SplatScene),
-}
-
 struct Primitive {
     name: &'static str,
-    scene: Scene,
+    scene: AnyScene,
+    /// What the N-pass oracle renders when it differs from `scene`: the volume's single pass
+    /// skips empty space, its oracle marches every segment, so the extremes test skipping too.
+    oracle_scene: Option<AnyScene>,
     bounds: Bounds,
 }
 
@@ -76,7 +65,8 @@ fn mesh(offset: Vec3, degenerate: bool) -> Primitive {
     Primitive {
         name: "mesh",
         bounds: mesh.bounds().unwrap(),
-        scene: Scene::Mesh(MeshBuffers::new(&ctx.device, &mesh).unwrap()),
+        scene: AnyScene::Mesh(MeshBuffers::new(&ctx.device, &mesh).unwrap()),
+        oracle_scene: None,
     }
 }
 
@@ -102,15 +92,13 @@ fn volume(offset: Vec3, degenerate: bool) -> Primitive {
         let mut scene =
             VolumeScene::new(&ctx.device, &ctx.queue, &volume, tf, None, model).unwrap();
         scene.skip_empty = skip_empty;
-        Box::new(scene)
+        AnyScene::Volume(Box::new(scene))
     };
     Primitive {
         name: "volume",
         bounds: Bounds::of_points(corners).unwrap(),
-        scene: Scene::Volume {
-            skipping: scene(true),
-            marching: scene(false),
-        },
+        scene: scene(true),
+        oracle_scene: Some(scene(false)),
     }
 }
 
@@ -140,7 +128,8 @@ fn points(offset: Vec3, degenerate: bool) -> Primitive {
     Primitive {
         name: "points",
         bounds: splats.bounds().unwrap(),
-        scene: Scene::Points(SplatScene::new(&ctx.device, &splats, GroupCount::Auto).unwrap()),
+        scene: AnyScene::Points(SplatScene::new(&ctx.device, &splats, GroupCount::Auto).unwrap()),
+        oracle_scene: None,
     }
 }
 
@@ -149,46 +138,18 @@ fn render_pair(p: &Primitive, frame: &Frame) -> (RgbImage, RgbImage) {
     let ctx = common::gpu();
     let (device, queue) = (&ctx.device, &ctx.queue);
     let target = SpatialTarget::new(device, frame.size).unwrap();
-    let run = |single: bool| -> RgbImage {
-        match &p.scene {
-            Scene::Mesh(buffers) => {
-                let mut r: Box<dyn Renderer<MeshBuffers>> = if single {
-                    let options = MeshSinglePassOptions {
-                        visibility: Visibility::best_exact(device),
-                        ..Default::default()
-                    };
-                    Box::new(MeshSinglePass::new(device, options).unwrap())
-                } else {
-                    Box::new(MeshBaseline::new(device, Method::NPass).unwrap())
-                };
-                r.render(device, queue, buffers, frame, &target).unwrap();
-            }
-            Scene::Volume { skipping, marching } => {
-                let (method, scene) = if single {
-                    (Method::SinglePass, skipping)
-                } else {
-                    (Method::NPass, marching)
-                };
-                VolumeRaycaster::new(device, method)
-                    .unwrap()
-                    .render(device, queue, scene, frame, &target)
-                    .unwrap();
-            }
-            Scene::Points(scene) => {
-                let method = if single {
-                    Method::SinglePass
-                } else {
-                    Method::NPass
-                };
-                PointSplatter::new(device, method, SplatOptions::for_scene(scene, 0.01))
-                    .unwrap()
-                    .render(device, queue, scene, frame, &target)
-                    .unwrap();
-            }
-        }
+    let run = |method: Method, scene: &AnyScene| -> RgbImage {
+        AnyRenderer::new(device, scene, method)
+            .unwrap()
+            .render(device, queue, scene, frame, &target)
+            .unwrap();
         target.read(device, queue).unwrap()
     };
-    (run(true), run(false))
+    let oracle = p.oracle_scene.as_ref().unwrap_or(&p.scene);
+    (
+        run(Method::SinglePass, &p.scene),
+        run(Method::NPass, oracle),
+    )
 }
 
 /// An extreme: how it changes the default frame.

@@ -5,7 +5,8 @@ use bytemuck::{Pod, Zeroable};
 use wgpu::util::DeviceExt;
 
 use super::Mesh;
-use crate::error::{Error, Result};
+use crate::error::Result;
+use crate::render::gpu_buffer::check_storage_bytes;
 
 /// One vertex. Keep in sync with `VertexIn` in `wgsl/mesh/npass.wgsl`.
 #[repr(C)]
@@ -37,24 +38,11 @@ impl MeshBuffers {
     /// Validate `mesh`, check the buffer sizes against the device limits, upload.
     pub fn new(device: &wgpu::Device, mesh: &Mesh) -> Result<Self> {
         mesh.validate()?;
-        let limits = device.limits();
-        let limit = limits
-            .max_buffer_size
-            .min(limits.max_storage_buffer_binding_size);
         let vertex_bytes = mesh.positions.len() as u64 * std::mem::size_of::<GpuVertex>() as u64;
         let index_bytes = mesh.indices.len() as u64 * 4;
-        for (what, bytes) in [
-            ("vertex buffer bytes", vertex_bytes),
-            ("index buffer bytes", index_bytes),
-        ] {
-            if bytes > limit {
-                return Err(Error::LimitExceeded {
-                    what: what.into(),
-                    value: bytes,
-                    limit,
-                });
-            }
-        }
+        // The single pass reads both as storage buffers.
+        check_storage_bytes(device, "vertex buffer bytes", vertex_bytes)?;
+        check_storage_bytes(device, "index buffer bytes", index_bytes)?;
         let vertices: Vec<GpuVertex> = (0..mesh.positions.len())
             .map(|i| GpuVertex {
                 position: mesh.positions[i].extend(1.0).to_array(),

@@ -11,6 +11,7 @@ use super::groups::{self, GroupCount, Grouping};
 use super::Splats;
 use crate::camera::Bounds;
 use crate::error::{Error, Result};
+use crate::render::gpu_buffer::check_storage_bytes;
 
 /// One splat. Keep in sync with `struct Splat` in `wgsl/points/shared/splat.wgsl`.
 #[repr(C)]
@@ -70,17 +71,11 @@ impl SplatScene {
             }
         }
         let bytes = (splats.len() as u64) * std::mem::size_of::<GpuSplat>() as u64;
-        let limits = device.limits();
-        let limit = limits
-            .max_storage_buffer_binding_size
-            .min(limits.max_buffer_size);
-        if bytes > limit {
-            return Err(Error::LimitExceeded {
-                what: format!("splat buffer bytes ({} splats × 32)", splats.len()),
-                value: bytes,
-                limit,
-            });
-        }
+        check_storage_bytes(
+            device,
+            format!("splat buffer bytes ({} splats × 32)", splats.len()),
+            bytes,
+        )?;
         let start = Instant::now();
         let grouping = groups::assign(splats, count);
         let grouping_ms = start.elapsed().as_secs_f64() * 1e3;

@@ -1,28 +1,37 @@
 //! The renderer kit every primitive's passes share, and the one interface they implement.
 //!
-//! - [`Renderer`]: one frame of a scene into a spatial target.
+//! - [`Renderer`]: one frame of a scene into a spatial target; [`AnyRenderer`] / [`AnyScene`]
+//!   hide the primitive.
 //! - [`mask_image`]: the display mask as a view-index image (GPU side of the mask oracle).
 //! - [`composite`]: N per-view layers → spatial image (every N-pass method).
 //! - [`output`]: the spatial image into a caller's texture or surface (BGRA8, sRGB…).
 //! - [`ViewLayers`]: the per-view (or per-group) layers those passes render into.
+//! - [`gpu_buffer`]: the one resizable GPU buffer type and the storage-binding limit check;
+//!   `dispatch`: the one compute dispatch splitter.
 //! - pipeline, texture, pass-parameter and specialisation helpers (crate-internal).
 //!
 //! The passes themselves live with their primitive: [`crate::mesh::passes`],
 //! [`crate::points::passes`], [`crate::volume::passes`]; they are re-exported here so that one
 //! `use autostereo::render::…` reaches every renderer.
 
+mod any;
 pub mod composite;
+pub(crate) mod dispatch;
+pub mod gpu_buffer;
 pub mod mask_image;
 mod method;
+pub(crate) mod npass;
 pub mod output;
 pub(crate) mod pass_params;
 pub(crate) mod pipeline;
+pub(crate) mod pipeline_cache;
 mod renderer;
 pub(crate) mod specialize;
 pub(crate) mod storage_fence;
 pub(crate) mod texture;
 pub(crate) mod view_layers;
 
+pub use any::{AnyRenderer, AnyScene};
 pub use composite::Compositor;
 pub use mask_image::MaskImageRenderer;
 pub use method::Method;

@@ -6,13 +6,14 @@ use crate::camera::ViewUniform;
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
 use crate::mesh::MeshBuffers;
+use crate::render::npass::NPassHarness;
 use crate::render::pass_params::constants_buffer;
 use crate::render::pipeline::{begin_pass, cleared};
 use crate::render::texture::{cached_texture_2d, Texture2d};
 use crate::render::view_layers::{nearest_depth_test, DEPTH_FORMAT};
 use crate::render::Method;
+use crate::render::ViewLayers;
 use crate::render::{check_prepared, check_target, Renderer};
-use crate::render::{Compositor, ViewLayers};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 
 /// N-pass or single-view mesh renderer. Holds pipelines and lazily sized scratch resources.
@@ -21,8 +22,7 @@ pub struct MeshBaseline {
     pipeline: wgpu::RenderPipeline,
     view_layout: wgpu::BindGroupLayout,
     frame: FrameBinding,
-    compositor: Compositor,
-    layers: Option<ViewLayers>,
+    npass: NPassHarness,
     single_view_depth: Option<Texture2d>,
     /// This frame's view uniforms (one per view, dynamic offsets).
     view_uniforms: Option<wgpu::BindGroup>,
@@ -91,10 +91,9 @@ impl MeshBaseline {
         Ok(Self {
             method,
             pipeline,
-            compositor: Compositor::new(device, &frame_layout)?,
+            npass: NPassHarness::new(device, &frame_layout)?,
             frame: FrameBinding::new(device, &frame_layout),
             view_layout,
-            layers: None,
             single_view_depth: None,
             view_uniforms: None,
             prepared: None,
@@ -104,7 +103,7 @@ impl MeshBaseline {
 
     /// Per-view images of the last N-pass render (layer i = view i), if any.
     pub fn view_layers(&self) -> Option<&ViewLayers> {
-        self.layers.as_ref()
+        self.npass.view_layers()
     }
 
     /// N view passes into the layers, then compositing.
@@ -121,12 +120,11 @@ impl MeshBaseline {
         let camera = &frame.camera;
         let offsets: Vec<f32> = (0..camera.views).map(|i| camera.view_offset(i)).collect();
         self.write_views(device, &offsets, |vd| camera.view_uniform(vd));
-        let layers = self.layers.as_ref().expect("allocated by prepare");
+        let layers = self.npass.layers();
         for (i, layer) in layers.layer_views.iter().enumerate() {
             self.draw(encoder, mesh, frame, i as u32, layer, &layers.depth_view);
         }
-        self.compositor
-            .encode(device, encoder, &self.frame, &layers.array_view, target);
+        self.npass.composite(device, encoder, &self.frame, target);
         Ok(())
     }
 
@@ -220,12 +218,7 @@ impl Renderer<MeshBuffers> for MeshBaseline {
         frame.validate()?;
         let views = frame.camera.views;
         match self.method {
-            Method::NPass => {
-                if self.layers.as_ref().map(|l| l.key()) != Some((frame.size, views)) {
-                    self.layers = None; // free before allocating the replacement
-                    self.layers = Some(ViewLayers::new(device, frame.size, views)?);
-                }
-            }
+            Method::NPass => self.npass.prepare(device, frame)?,
             _ => {
                 cached_texture_2d(
                     &mut self.single_view_depth,

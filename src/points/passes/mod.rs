@@ -11,22 +11,24 @@ mod group_images;
 mod pipelines;
 
 use crate::render::Method;
-use std::collections::HashMap;
 
 pub use pipelines::SplatParams;
 
 use self::group_images::GroupImages;
-use self::pipelines::{Layouts, Pipelines, COVER_WORKGROUP};
+use self::pipelines::{Layouts, Pipelines, SplatPipelineKey, COVER_WORKGROUP};
 use crate::error::{Error, Result};
 use crate::frame::{Frame, FrameBinding};
 use crate::points::SplatScene;
+use crate::render::dispatch::dispatch_2d;
+use crate::render::gpu_buffer::GpuBuffer;
+use crate::render::npass::NPassHarness;
 use crate::render::pass_params::PassParams;
 use crate::render::pipeline::{begin_pass, cleared};
+use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
 use crate::render::storage_fence::StorageFence;
 use crate::render::Renderer;
 use crate::render::{check_prepared, check_target};
-use crate::render::{Compositor, ViewLayers};
 use crate::target::SpatialTarget;
 
 /// Depth kept per group image by the single pass on subpixel (K = 3) displays.
@@ -87,10 +89,10 @@ impl SplatOptions {
 }
 
 /// Per-splat buffers the cover pass writes (eye-space splats, covering rectangles).
+/// The cover pass's output: eye-space splats and their covering rectangles.
 struct Scratch {
-    eye_splats: wgpu::Buffer,
-    rects: wgpu::Buffer,
-    count: u32,
+    eye_splats: GpuBuffer,
+    rects: GpuBuffer,
 }
 
 /// Point-splat renderer for one [`Method`].
@@ -100,11 +102,11 @@ pub struct PointSplatter {
     layouts: Layouts,
     frame: FrameBinding,
     params: PassParams<SplatParams>,
-    pipelines: HashMap<(Specialization, bool), Pipelines>,
+    pipelines: PipelineCache<SplatPipelineKey, Pipelines>,
     scratch: Option<Scratch>,
     images: Option<GroupImages>,
-    layers: Option<ViewLayers>,
-    compositor: Option<Compositor>,
+    /// N-pass only.
+    npass: Option<NPassHarness>,
     prepared: Option<PreparedFor>,
     fence: StorageFence,
 }
@@ -114,8 +116,8 @@ impl PointSplatter {
     pub fn new(device: &wgpu::Device, method: Method, options: SplatOptions) -> Result<Self> {
         options.validate()?;
         let layouts = Layouts::new(device);
-        let compositor = match method {
-            Method::NPass => Some(Compositor::new(device, &layouts.frame)?),
+        let npass = match method {
+            Method::NPass => Some(NPassHarness::new(device, &layouts.frame)?),
             _ => None,
         };
         Ok(Self {
@@ -124,11 +126,10 @@ impl PointSplatter {
             frame: FrameBinding::new(device, &layouts.frame),
             params: PassParams::new(device, "splat pass constants"),
             layouts,
-            pipelines: HashMap::new(),
+            pipelines: PipelineCache::new("splat"),
             scratch: None,
             images: None,
-            layers: None,
-            compositor,
+            npass,
             prepared: None,
             fence: StorageFence::new(device)?,
         })
@@ -145,15 +146,19 @@ impl PointSplatter {
         let scratch = self
             .scratch
             .as_ref()
-            .map_or(0, |s| s.eye_splats.size() + s.rects.size());
+            .map_or(0, |s| s.eye_splats.used() + s.rects.used());
         let images = self
             .images
             .as_ref()
             .map_or(0, |i| GroupImages::bytes(i.key.0, i.key.1, i.key.2));
-        let layers = self.layers.as_ref().map_or(0, |l| {
-            let ([w, h], n) = l.key();
-            w as u64 * h as u64 * (4 * n as u64 + 4)
-        });
+        let layers = self
+            .npass
+            .as_ref()
+            .and_then(|n| n.view_layers())
+            .map_or(0, |l| {
+                let ([w, h], n) = l.key();
+                w as u64 * h as u64 * (4 * n as u64 + 4)
+            });
         scratch + images + layers
     }
 
@@ -207,23 +212,18 @@ impl PointSplatter {
         scene: &SplatScene,
         frame: &Frame,
     ) -> Result<()> {
-        if self.scratch.as_ref().is_none_or(|s| s.count != scene.count) {
-            self.scratch = None;
-            let buffer = |label, bytes: u64| {
-                device.create_buffer(&wgpu::BufferDescriptor {
-                    label: Some(label),
-                    size: bytes,
-                    usage: wgpu::BufferUsages::STORAGE,
-                    mapped_at_creation: false,
-                })
-            };
-            let n = scene.count as u64;
-            self.scratch = Some(Scratch {
-                eye_splats: buffer("eye splats", n * 32),
-                rects: buffer("splat cover rects", n * 16),
-                count: scene.count,
-            });
-        }
+        let scratch = self.scratch.get_or_insert_with(|| Scratch {
+            eye_splats: GpuBuffer::new("eye splats", wgpu::BufferUsages::STORAGE),
+            rects: GpuBuffer::new("splat cover rects", wgpu::BufferUsages::STORAGE),
+        });
+        let n = scene.count as u64;
+        let what = |buffer| move || format!("{buffer} bytes ({n} splats)");
+        scratch
+            .eye_splats
+            .ensure(device, what("eye-space splat"), n * 32)?;
+        scratch
+            .rects
+            .ensure(device, what("splat cover rectangle"), n * 16)?;
         let subpixel = self.subpixel(frame);
         let k = if subpixel {
             frame.display.views_per_pixel()
@@ -236,19 +236,17 @@ impl PointSplatter {
             self.images = None;
             self.images = Some(GroupImages::new(device, size, scene.groups(), subpixel)?);
         }
-        if self.method == Method::NPass
-            && self.layers.as_ref().map(|l| l.key()) != Some((frame.size, frame.camera.views))
-        {
-            self.layers = None;
-            self.layers = Some(ViewLayers::new(device, frame.size, frame.camera.views)?);
+        if let Some(npass) = &mut self.npass {
+            npass.prepare(device, frame)?;
         }
-        let spec = (Specialization::of(frame), subpixel);
-        if !self.pipelines.contains_key(&spec) {
-            let pipelines = crate::gpu::checked(device, "building the splat pipelines", || {
-                pipelines::build(device, &self.layouts, spec.0, spec.1)
-            })??;
-            self.pipelines.insert(spec, pipelines);
-        }
+        let key = SplatPipelineKey {
+            spec: Specialization::of(frame),
+            subpixel,
+        };
+        let layouts = &self.layouts;
+        self.pipelines.prepare(device, key, |modules| {
+            pipelines::build(device, modules, layouts, key)
+        })?;
         Ok(())
     }
 }
@@ -292,7 +290,11 @@ impl Renderer<SplatScene> for PointSplatter {
         let passes = self.passes(frame);
         self.frame.write(device, frame);
         self.params.write(device, &passes);
-        let pipelines = &self.pipelines[&(Specialization::of(frame), self.subpixel(frame))];
+        let key = SplatPipelineKey {
+            spec: Specialization::of(frame),
+            subpixel: self.subpixel(frame),
+        };
+        let pipelines = self.pipelines.get(&key).expect("built by prepare");
         let scratch = self.scratch.as_ref().expect("ensured");
         let images = &self.images.as_ref().expect("ensured").layers;
         let group = |label, layout, entries: &[wgpu::BindGroupEntry]| {
@@ -308,16 +310,16 @@ impl Renderer<SplatScene> for PointSplatter {
             &self.layouts.cover,
             &[
                 entry(0, scene.buffer.as_entire_binding()),
-                entry(1, scratch.eye_splats.as_entire_binding()),
-                entry(2, scratch.rects.as_entire_binding()),
+                entry(1, scratch.eye_splats.binding()),
+                entry(2, scratch.rects.binding()),
             ],
         );
         let quad_group = group(
             "splat quads",
             &self.layouts.quad,
             &[
-                entry(0, scratch.eye_splats.as_entire_binding()),
-                entry(1, scratch.rects.as_entire_binding()),
+                entry(0, scratch.eye_splats.binding()),
+                entry(1, scratch.rects.binding()),
             ],
         );
         let images_group = group(
@@ -334,11 +336,14 @@ impl Renderer<SplatScene> for PointSplatter {
             &[entry(0, self.params.binding())],
         );
         let workgroups = scene.count.div_ceil(COVER_WORKGROUP);
-        let dispatch = [workgroups.min(65535), workgroups.div_ceil(65535)];
+        let dispatch = dispatch_2d(device, workgroups);
         for (i, _) in passes.iter().enumerate() {
             let offset = [self.params.offset(i)];
-            self.fence
-                .encode(device, encoder, [&scratch.eye_splats, &scratch.rects]);
+            self.fence.encode(
+                device,
+                encoder,
+                [scratch.eye_splats.buffer(), scratch.rects.buffer()],
+            );
             {
                 let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
                     label: Some("splat cover"),
@@ -363,8 +368,8 @@ impl Renderer<SplatScene> for PointSplatter {
                 pass.set_bind_group(2, &params_group, &offset);
                 pass.draw(range.start * 6..range.end * 6, 0..1);
             }
-            let output = match &self.layers {
-                Some(layers) => &layers.layer_views[i],
+            let output = match &self.npass {
+                Some(npass) => &npass.layers().layer_views[i],
                 None => &target.view,
             };
             let mut pass = begin_pass(encoder, "splat composite", cleared(output, [0.0; 4]), None);
@@ -374,8 +379,8 @@ impl Renderer<SplatScene> for PointSplatter {
             pass.set_bind_group(2, &params_group, &offset);
             pass.draw(0..3, 0..1);
         }
-        if let (Some(compositor), Some(layers)) = (&self.compositor, &self.layers) {
-            compositor.encode(device, encoder, &self.frame, &layers.array_view, target);
+        if let Some(npass) = &self.npass {
+            npass.composite(device, encoder, &self.frame, target);
         }
         Ok(())
     }

@@ -6,6 +6,7 @@ use crate::error::Result;
 use crate::frame::frame_bind_group_layout;
 use crate::render::pass_params::PassParams;
 use crate::render::pipeline::{fullscreen_pipeline_with, storage_entry};
+use crate::render::pipeline_cache::ShaderModules;
 use crate::render::specialize::Specialization;
 use crate::render::view_layers::nearest_depth_test;
 use crate::target::SPATIAL_FORMAT;
@@ -104,12 +105,22 @@ pub(super) struct Pipelines {
 }
 
 /// Pipelines for one display specialisation; `subpixel`: exact depth at subpixel resolution.
+/// What the splat pipelines are specialised for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(super) struct SplatPipelineKey {
+    /// The display's K and N.
+    pub spec: Specialization,
+    /// Exact depth at subpixel resolution (K = 3 displays with exact depth).
+    pub subpixel: bool,
+}
+
 pub(super) fn build(
     device: &wgpu::Device,
+    modules: &mut ShaderModules,
     layouts: &Layouts,
-    spec: Specialization,
-    subpixel: bool,
+    key: SplatPipelineKey,
 ) -> Result<Pipelines> {
+    let SplatPipelineKey { spec, subpixel } = key;
     let padding = if subpixel { 0.5 } else { 1.0 / 16.0 };
     let cover_constants = spec.constants(&[("COVER_PADDING_PX", padding)]);
     let constants = spec.constants(&[]);
@@ -125,7 +136,7 @@ pub(super) fn build(
             immediate_size: 0,
         })
     };
-    let cover_module = crate::shader::module(device, "points/cover.wgsl")?;
+    let cover_module = modules.get(device, "points/cover.wgsl")?;
     let cover = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
         label: Some("splat cover"),
         layout: Some(&pipeline_layout(
@@ -146,7 +157,7 @@ pub(super) fn build(
     } else {
         ("points/pixel.wgsl", PIXEL_FORMAT)
     };
-    let module = crate::shader::module(device, stage)?;
+    let module = modules.get(device, stage)?;
     let geometry = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(stage),
         layout: Some(&pipeline_layout(
@@ -175,7 +186,7 @@ pub(super) fn build(
         multiview_mask: None,
         cache: None,
     });
-    let composite_module = crate::shader::module(device, "points/composite.wgsl")?;
+    let composite_module = modules.get(device, "points/composite.wgsl")?;
     let composite = fullscreen_pipeline_with(
         device,
         "splat composite",

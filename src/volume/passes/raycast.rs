@@ -2,15 +2,15 @@
 //! single-pass method (each pixel marches the rays of its K views and writes the spatial image)
 //! and, with the same kernel and the same samples, the N-pass baseline and the single view.
 
-use crate::render::Method;
-use std::collections::HashMap;
-
 use super::resources::{VolumeParams, VolumeResources};
 use crate::error::Result;
 use crate::frame::Frame;
+use crate::render::npass::NPassHarness;
+use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
+use crate::render::Method;
+use crate::render::ViewLayers;
 use crate::render::{check_prepared, check_target, Renderer};
-use crate::render::{Compositor, ViewLayers};
 use crate::target::SpatialTarget;
 use crate::volume::VolumeScene;
 
@@ -19,10 +19,9 @@ pub struct VolumeRaycaster {
     method: Method,
     resources: VolumeResources,
     output_layout: wgpu::BindGroupLayout,
-    /// Per display specialisation and empty-space skipping (on/off).
-    pipelines: HashMap<(Specialization, bool), wgpu::ComputePipeline>,
-    layers: Option<ViewLayers>,
-    compositor: Option<Compositor>,
+    pipelines: PipelineCache<RaycastPipelineKey, wgpu::ComputePipeline>,
+    /// N-pass only.
+    npass: Option<NPassHarness>,
     prepared: Option<PreparedFor>,
 }
 
@@ -43,58 +42,60 @@ impl VolumeRaycaster {
                 count: None,
             }],
         });
-        let compositor = match method {
-            Method::NPass => Some(Compositor::new(device, &resources.frame_layout)?),
+        let npass = match method {
+            Method::NPass => Some(NPassHarness::new(device, &resources.frame_layout)?),
             _ => None,
         };
         Ok(Self {
             method,
             resources,
             output_layout,
-            pipelines: HashMap::new(),
-            layers: None,
-            compositor,
+            pipelines: PipelineCache::new("volume ray-marching"),
+            npass,
             prepared: None,
         })
     }
 
-    /// The pipeline for `spec`, with the empty-space skipping code compiled in or out (an
+    /// The pipeline for `key`, with the empty-space skipping code compiled in or out (an
     /// override constant: without it the march is the plain loop, no look-up overhead).
-    fn ensure_pipeline(
-        &mut self,
-        device: &wgpu::Device,
-        key: (Specialization, bool),
-    ) -> Result<()> {
-        let (spec, skip_empty) = key;
-        if self.pipelines.contains_key(&key) {
-            return Ok(());
-        }
-        let module = crate::shader::module(device, "volume/raycast.wgsl")?;
+    fn ensure_pipeline(&mut self, device: &wgpu::Device, key: RaycastPipelineKey) -> Result<()> {
         let layout = self
             .resources
             .pipeline_layout(device, "volume raycast", &self.output_layout);
-        let constants = spec.constants(&[("SKIP_EMPTY", f64::from(u8::from(skip_empty)))]);
-        let pipeline = crate::gpu::checked(device, "building the volume pipeline", || {
-            device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-                label: Some("volume raycast"),
-                layout: Some(&layout),
-                module: &module,
-                entry_point: Some("cs_main"),
-                compilation_options: wgpu::PipelineCompilationOptions {
-                    constants: &constants,
-                    zero_initialize_workgroup_memory: true,
-                },
-                cache: None,
-            })
+        self.pipelines.prepare(device, key, |modules| {
+            let module = modules.get(device, "volume/raycast.wgsl")?;
+            let skip = f64::from(u8::from(key.skip_empty));
+            let constants = key.spec.constants(&[("SKIP_EMPTY", skip)]);
+            Ok(
+                device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                    label: Some("volume raycast"),
+                    layout: Some(&layout),
+                    module: &module,
+                    entry_point: Some("cs_main"),
+                    compilation_options: wgpu::PipelineCompilationOptions {
+                        constants: &constants,
+                        zero_initialize_workgroup_memory: true,
+                    },
+                    cache: None,
+                }),
+            )
         })?;
-        self.pipelines.insert(key, pipeline);
         Ok(())
     }
 
     /// Per-view images of the last N-pass render, if any.
     pub fn view_layers(&self) -> Option<&ViewLayers> {
-        self.layers.as_ref()
+        self.npass.as_ref()?.view_layers()
     }
+}
+
+/// What a ray-marching pipeline is specialised for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+struct RaycastPipelineKey {
+    /// The display's K and N.
+    spec: Specialization,
+    /// Empty-space skipping compiled in.
+    skip_empty: bool,
 }
 
 /// What a volume renderer was prepared for: display specialisation, empty-space skipping,
@@ -143,13 +144,16 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         scene.validate()?;
         let key = PreparedFor::of(scene, frame);
         self.resources.upload(device, queue, scene)?;
-        if self.method == Method::NPass
-            && self.layers.as_ref().map(|l| l.key()) != Some((frame.size, key.views))
-        {
-            self.layers = None;
-            self.layers = Some(ViewLayers::new(device, frame.size, key.views)?);
+        if let Some(npass) = &mut self.npass {
+            npass.prepare(device, frame)?;
         }
-        self.ensure_pipeline(device, (key.spec, key.skip_empty))?;
+        self.ensure_pipeline(
+            device,
+            RaycastPipelineKey {
+                spec: key.spec,
+                skip_empty: key.skip_empty,
+            },
+        )?;
         self.prepared = Some(key);
         Ok(())
     }
@@ -183,17 +187,20 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
                 .collect(),
         };
         let volume_group = self.resources.bind(device, scene, frame, &dispatches);
-        let key = (Specialization::of(frame), scene.skip_empty);
-        let outputs: Vec<&wgpu::TextureView> = match (&self.method, &self.layers) {
-            (Method::NPass, Some(layers)) => layers.layer_views.iter().collect(),
-            _ => vec![&target.view],
+        let key = RaycastPipelineKey {
+            spec: Specialization::of(frame),
+            skip_empty: scene.skip_empty,
+        };
+        let outputs: Vec<&wgpu::TextureView> = match &self.npass {
+            Some(npass) => npass.layers().layer_views.iter().collect(),
+            None => vec![&target.view],
         };
         {
             let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
                 label: Some("volume raycast"),
                 timestamp_writes: None,
             });
-            pass.set_pipeline(&self.pipelines[&key]);
+            pass.set_pipeline(self.pipelines.get(&key).expect("built by prepare"));
             pass.set_bind_group(0, &self.resources.frame.bind_group, &[]);
             for (i, output) in outputs.iter().enumerate() {
                 let output_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
@@ -210,14 +217,8 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
                 pass.dispatch_workgroups(frame.size[0].div_ceil(8), frame.size[1].div_ceil(8), 1);
             }
         }
-        if let (Some(compositor), Some(layers)) = (&self.compositor, &self.layers) {
-            compositor.encode(
-                device,
-                encoder,
-                &self.resources.frame,
-                &layers.array_view,
-                target,
-            );
+        if let Some(npass) = &self.npass {
+            npass.composite(device, encoder, &self.resources.frame, target);
         }
         Ok(())
     }

@@ -3,8 +3,6 @@
 //! "over" (`wgsl/volume/slices.wgsl`). Two α modes: the paper's mean α per pixel, and exact
 //! per-channel α with dual-source blending.
 
-use std::collections::HashMap;
-
 use bytemuck::{Pod, Zeroable};
 use glam::{Vec3, Vec4Swizzles};
 
@@ -14,6 +12,7 @@ use crate::error::Result;
 use crate::frame::Frame;
 use crate::render::check_target;
 use crate::render::pipeline::{begin_pass, cleared, draw_fullscreen, fullscreen_pipeline};
+use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
 use crate::render::texture::{cached_texture_2d, Texture2d};
 use crate::render::Renderer;
@@ -50,7 +49,7 @@ pub struct VolumeSlicer {
     resources: VolumeResources,
     slices_layout: wgpu::BindGroupLayout,
     accumulated_layout: wgpu::BindGroupLayout,
-    pipelines: HashMap<Specialization, wgpu::RenderPipeline>,
+    pipelines: PipelineCache<Specialization, wgpu::RenderPipeline>,
     resolve: wgpu::RenderPipeline,
     accumulation: Option<Texture2d>,
     prepared: Option<PreparedFor>,
@@ -105,7 +104,7 @@ impl VolumeSlicer {
             resources,
             slices_layout,
             accumulated_layout,
-            pipelines: HashMap::new(),
+            pipelines: PipelineCache::new("volume slice"),
             resolve,
             accumulation: None,
             prepared: None,
@@ -113,14 +112,11 @@ impl VolumeSlicer {
     }
 
     fn ensure_pipeline(&mut self, device: &wgpu::Device, spec: Specialization) -> Result<()> {
-        if self.pipelines.contains_key(&spec) {
-            return Ok(());
-        }
-        let module = crate::shader::module(device, "volume/slices.wgsl")?;
+        let alpha = self.alpha;
         let layout = self
             .resources
             .pipeline_layout(device, "volume slices", &self.slices_layout);
-        let exact = (self.alpha == AlphaMode::Exact) as u32 as f64;
+        let exact = (alpha == AlphaMode::Exact) as u32 as f64;
         let constants = spec.constants(&[("EXACT_ALPHA", exact)]);
         let options = wgpu::PipelineCompilationOptions {
             constants: &constants,
@@ -131,37 +127,39 @@ impl VolumeSlicer {
             dst_factor: wgpu::BlendFactor::OneMinusSrc1,
             operation: wgpu::BlendOperation::Add,
         };
-        let pipeline = crate::gpu::checked(device, "building the volume slice pipeline", || {
-            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                label: Some("volume slices"),
-                layout: Some(&layout),
-                vertex: wgpu::VertexState {
-                    module: &module,
-                    entry_point: Some("vs_main"),
-                    compilation_options: options.clone(),
-                    buffers: &[],
-                },
-                primitive: wgpu::PrimitiveState::default(),
-                depth_stencil: None,
-                multisample: Default::default(),
-                fragment: Some(wgpu::FragmentState {
-                    module: &module,
-                    entry_point: Some("fs_main"),
-                    compilation_options: options,
-                    targets: &[Some(wgpu::ColorTargetState {
-                        format: ACCUMULATION_FORMAT,
-                        blend: Some(wgpu::BlendState {
-                            color: over,
-                            alpha: over,
-                        }),
-                        write_mask: wgpu::ColorWrites::ALL,
-                    })],
+        self.pipelines.prepare(device, spec, |modules| {
+            let module = modules.get(device, "volume/slices.wgsl")?;
+            Ok(
+                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                    label: Some("volume slices"),
+                    layout: Some(&layout),
+                    vertex: wgpu::VertexState {
+                        module: &module,
+                        entry_point: Some("vs_main"),
+                        compilation_options: options.clone(),
+                        buffers: &[],
+                    },
+                    primitive: wgpu::PrimitiveState::default(),
+                    depth_stencil: None,
+                    multisample: Default::default(),
+                    fragment: Some(wgpu::FragmentState {
+                        module: &module,
+                        entry_point: Some("fs_main"),
+                        compilation_options: options,
+                        targets: &[Some(wgpu::ColorTargetState {
+                            format: ACCUMULATION_FORMAT,
+                            blend: Some(wgpu::BlendState {
+                                color: over,
+                                alpha: over,
+                            }),
+                            write_mask: wgpu::ColorWrites::ALL,
+                        })],
+                    }),
+                    multiview_mask: None,
+                    cache: None,
                 }),
-                multiview_mask: None,
-                cache: None,
-            })
+            )
         })?;
-        self.pipelines.insert(spec, pipeline);
         Ok(())
     }
 }
@@ -306,7 +304,7 @@ impl Renderer<VolumeScene> for VolumeSlicer {
             // with that channel's own α.
             let color = cleared(accumulation, frame.background);
             let mut pass = begin_pass(encoder, "volume slices", color, None);
-            pass.set_pipeline(&self.pipelines[&spec]);
+            pass.set_pipeline(self.pipelines.get(&spec).expect("built by prepare"));
             pass.set_bind_group(0, &self.resources.frame.bind_group, &[]);
             pass.set_bind_group(1, &volume_group, &[0]);
             pass.set_bind_group(2, &slices_group, &[]);

@@ -8,6 +8,7 @@ mod report;
 mod scenes;
 mod tradeoffs;
 
+use autostereo::render::Renderer;
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -391,11 +392,11 @@ pub(crate) fn time_frame(
     frames: u32,
 ) -> Result<f64> {
     let target = SpatialTarget::new(&ctx.device, frame.size)?;
-    renderer.prepare(ctx, &scene.data, frame)?;
+    renderer.prepare(&ctx.device, &ctx.queue, &scene.data, frame)?;
     let mut samples = Vec::new();
     for i in 0..frames + 2 {
         let ms = timer.time_frame(&ctx.device, &ctx.queue, |e| {
-            renderer.encode(ctx, e, &scene.data, frame, &target)
+            renderer.encode(&ctx.device, e, &scene.data, frame, &target)
         })?;
         if i >= 2 {
             samples.push(ms);

@@ -10,18 +10,11 @@ use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::points::{GroupCount, PointCloud, SplatScene};
 use autostereo::render::{
     AlphaMode, MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Method, PointSplatter,
-    Renderer, SplatDepth, SplatOptions, Visibility, VolumeRaycaster, VolumeScene, VolumeSlicer,
+    SplatDepth, SplatOptions, Visibility, VolumeRaycaster, VolumeScene, VolumeSlicer,
 };
-use autostereo::target::SpatialTarget;
+pub use autostereo::render::{AnyRenderer, AnyScene};
 use autostereo::volume::{load, phantom, TransferFunction, Volume};
 use glam::Mat4;
-
-/// A scene on the GPU, of any primitive.
-pub enum SceneData {
-    Volume(Box<VolumeScene>),
-    Points(SplatScene),
-    Mesh(MeshBuffers),
-}
 
 pub struct BenchScene {
     /// volume | points | mesh
@@ -29,7 +22,7 @@ pub struct BenchScene {
     pub name: String,
     pub detail: String,
     pub bounds: Bounds,
-    pub data: SceneData,
+    pub data: AnyScene,
     /// The splats of a point scene (regrouped by the trade-off studies).
     pub splats: Option<autostereo::points::Splats>,
 }
@@ -41,65 +34,6 @@ pub enum Kind {
     SinglePass,
     NPass,
     SingleView,
-}
-
-/// A renderer for one primitive, behind one interface.
-pub enum AnyRenderer {
-    Volume(Box<dyn Renderer<VolumeScene>>),
-    Points(Box<PointSplatter>),
-    Mesh(Box<dyn Renderer<MeshBuffers>>),
-}
-
-impl AnyRenderer {
-    pub fn points(splatter: PointSplatter) -> Self {
-        Self::Points(Box::new(splatter))
-    }
-
-    pub fn prepare(
-        &mut self,
-        ctx: &autostereo::gpu::GpuContext,
-        scene: &SceneData,
-        frame: &Frame,
-    ) -> autostereo::Result<()> {
-        let (d, q) = (&ctx.device, &ctx.queue);
-        match (self, scene) {
-            (Self::Volume(r), SceneData::Volume(s)) => r.prepare(d, q, s, frame),
-            (Self::Points(r), SceneData::Points(s)) => r.prepare(d, q, s, frame),
-            (Self::Mesh(r), SceneData::Mesh(s)) => r.prepare(d, q, s, frame),
-            _ => unreachable!("renderers are made per primitive"),
-        }
-    }
-
-    pub fn encode(
-        &mut self,
-        ctx: &autostereo::gpu::GpuContext,
-        encoder: &mut wgpu::CommandEncoder,
-        scene: &SceneData,
-        frame: &Frame,
-        target: &SpatialTarget,
-    ) -> autostereo::Result<()> {
-        let d = &ctx.device;
-        match (self, scene) {
-            (Self::Volume(r), SceneData::Volume(s)) => r.encode(d, encoder, s, frame, target),
-            (Self::Points(r), SceneData::Points(s)) => r.encode(d, encoder, s, frame, target),
-            (Self::Mesh(r), SceneData::Mesh(s)) => r.encode(d, encoder, s, frame, target),
-            _ => unreachable!("renderers are made per primitive"),
-        }
-    }
-
-    pub fn render(
-        &mut self,
-        ctx: &autostereo::gpu::GpuContext,
-        scene: &SceneData,
-        frame: &Frame,
-        target: &SpatialTarget,
-    ) -> autostereo::Result<()> {
-        self.prepare(ctx, scene, frame)?;
-        let mut encoder = ctx.device.create_command_encoder(&Default::default());
-        self.encode(ctx, &mut encoder, scene, frame, target)?;
-        ctx.queue.submit([encoder.finish()]);
-        autostereo::readback::wait_idle(&ctx.device)
-    }
 }
 
 pub struct MethodEntry {
@@ -141,7 +75,7 @@ pub fn scenes(ctx: &autostereo::gpu::GpuContext, quick: bool) -> Result<Vec<Benc
             detail: format!("{:?} voxels", volume.dims),
             name,
             bounds: volume.bounds(),
-            data: SceneData::Volume(Box::new(scene)),
+            data: AnyScene::Volume(Box::new(scene)),
             splats: None,
         });
     }
@@ -175,7 +109,7 @@ pub fn scenes(ctx: &autostereo::gpu::GpuContext, quick: bool) -> Result<Vec<Benc
         ),
         name,
         bounds: splats.bounds().context("empty cloud")?,
-        data: SceneData::Points(scene),
+        data: AnyScene::Points(scene),
         splats: Some(splats),
     });
     let meshes: &[&str] = if quick {
@@ -207,7 +141,7 @@ fn mesh_scene(device: &wgpu::Device, name: String, mesh: &Mesh) -> Result<BenchS
         detail: format!("{} triangles", mesh.triangle_count()),
         name,
         bounds: mesh.bounds().context("empty mesh")?,
-        data: SceneData::Mesh(MeshBuffers::new(device, mesh)?),
+        data: AnyScene::Mesh(MeshBuffers::new(device, mesh)?),
         splats: None,
     })
 }
@@ -220,7 +154,7 @@ pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEn
         renderer,
     };
     Ok(match &scene.data {
-        SceneData::Volume(_) => {
+        AnyScene::Volume(_) => {
             let ray = |m| -> Result<AnyRenderer> {
                 Ok(AnyRenderer::Volume(Box::new(VolumeRaycaster::new(
                     device, m,
@@ -249,13 +183,15 @@ pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEn
                 entry("single-view", Kind::SingleView, ray(Method::SingleView)?),
             ]
         }
-        SceneData::Points(s) => {
+        AnyScene::Points(s) => {
             let splat = |m, depth| -> Result<AnyRenderer> {
                 let options = SplatOptions {
                     depth,
                     ..SplatOptions::for_scene(s, 0.01)
                 };
-                Ok(AnyRenderer::points(PointSplatter::new(device, m, options)?))
+                Ok(AnyRenderer::Points(Box::new(PointSplatter::new(
+                    device, m, options,
+                )?)))
             };
             vec![
                 entry(
@@ -280,7 +216,7 @@ pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEn
                 ),
             ]
         }
-        SceneData::Mesh(_) => {
+        AnyScene::Mesh(_) => {
             let mut v = Vec::new();
             for visibility in [
                 Visibility::Compute,

@@ -5,6 +5,7 @@ use anyhow::Result;
 use autostereo::frame::Frame;
 use autostereo::image_io::{compare, RgbImage};
 use autostereo::points::{GroupCount, SplatScene};
+use autostereo::render::Renderer;
 use autostereo::render::{
     AlphaMode, CoverBounds, MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Method,
     PointSplatter, SplatDepth, SplatOptions, Visibility, VolumeRaycaster, VolumeScene,
@@ -14,7 +15,7 @@ use autostereo::target::SpatialTarget;
 use autostereo::timing::FrameTimer;
 use serde::{Deserialize, Serialize};
 
-use super::scenes::{self, AnyRenderer, BenchScene, SceneData};
+use super::scenes::{self, AnyRenderer, AnyScene, BenchScene};
 use super::{time_frame, Plan};
 
 /// One setting of one study: its speed and its distance from the reference.
@@ -41,7 +42,7 @@ type Ctx = autostereo::gpu::GpuContext;
 
 fn image(ctx: &Ctx, scene: &BenchScene, r: &mut AnyRenderer, frame: &Frame) -> Result<RgbImage> {
     let target = SpatialTarget::new(&ctx.device, frame.size)?;
-    r.render(ctx, &scene.data, frame, &target)?;
+    r.render(&ctx.device, &ctx.queue, &scene.data, frame, &target)?;
     Ok(target.read(&ctx.device, &ctx.queue)?)
 }
 
@@ -128,7 +129,7 @@ fn volume_studies(
 ) -> Result<()> {
     let device = &ctx.device;
     let step_of = |scene: &mut BenchScene, step: Option<f32>| -> f32 {
-        let SceneData::Volume(v) = &mut scene.data else {
+        let AnyScene::Volume(v) = &mut scene.data else {
             unreachable!()
         };
         let old = v.step;
@@ -165,7 +166,7 @@ fn volume_studies(
             out.push(p.run(scene, r, format!("{path}|{step}"))?);
         }
     }
-    let SceneData::Volume(v) = &mut scene.data else {
+    let AnyScene::Volume(v) = &mut scene.data else {
         unreachable!()
     };
     v.step = default_step;
@@ -181,7 +182,7 @@ fn splat_studies(
     out: &mut Vec<Tradeoff>,
 ) -> Result<()> {
     let device = &ctx.device;
-    let SceneData::Points(s) = &scene.data else {
+    let AnyScene::Points(s) = &scene.data else {
         unreachable!()
     };
     let depth_extent = SplatOptions::epsilon_for(s, 1.0);
@@ -191,9 +192,9 @@ fn splat_studies(
             depth,
             epsilon: fraction * depth_extent,
         };
-        Ok(AnyRenderer::points(PointSplatter::new(
+        Ok(AnyRenderer::Points(Box::new(PointSplatter::new(
             device, method, options,
-        )?))
+        )?)))
     };
     let exact = |fraction| splatter(Method::SinglePass, SplatDepth::Exact, fraction);
     let reference = splatter(Method::NPass, SplatDepth::Exact, 0.01)?;
@@ -219,7 +220,7 @@ fn splat_studies(
     let counts: &[u32] = if plan.quick { &[1, 4] } else { &[1, 2, 4, 8] };
     let mut original = None;
     for &k in counts {
-        let regrouped = SceneData::Points(SplatScene::new(device, &splats, GroupCount::Fixed(k))?);
+        let regrouped = AnyScene::Points(SplatScene::new(device, &splats, GroupCount::Fixed(k))?);
         let previous = std::mem::replace(&mut scene.data, regrouped);
         original.get_or_insert(previous);
         out.push(p.run(scene, exact(0.01)?, format!("{k}"))?);
@@ -280,7 +281,7 @@ pub fn economy(
     let mut out = Vec::new();
     let frames = plan.study_frames();
     for scene in scenes.iter_mut() {
-        if let SceneData::Volume(_) = &scene.data {
+        if let AnyScene::Volume(_) = &scene.data {
             let frame = scenes::frame(scene.bounds, "hubner8", plan.size)?;
             let mut r = AnyRenderer::Volume(Box::new(VolumeRaycaster::new(
                 &ctx.device,
@@ -303,7 +304,7 @@ pub fn economy(
             ];
             for (what, switch, with_value) in features {
                 let set = |scene: &mut BenchScene, on: bool| {
-                    let SceneData::Volume(v) = &mut scene.data else {
+                    let AnyScene::Volume(v) = &mut scene.data else {
                         unreachable!()
                     };
                     std::mem::replace(switch(v), on)

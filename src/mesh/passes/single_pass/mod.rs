@@ -19,12 +19,12 @@
 mod pipelines;
 mod scratch;
 
-use std::collections::HashMap;
-
 use crate::error::Result;
 use crate::frame::{Frame, FrameBinding};
 use crate::mesh::MeshBuffers;
+use crate::render::dispatch::dispatch_2d;
 use crate::render::pipeline::{begin_pass, cleared, draw_fullscreen};
+use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
 use crate::render::storage_fence::StorageFence;
 use crate::render::{check_prepared, check_target, Renderer};
@@ -114,7 +114,7 @@ pub struct MeshSinglePass {
     options: MeshSinglePassOptions,
     frame: FrameBinding,
     layouts: Layouts,
-    pipelines: HashMap<Specialization, Pipelines>,
+    pipelines: PipelineCache<Specialization, Pipelines>,
     scratch: Scratch,
     prepared: Option<PreparedFor>,
     fence: StorageFence,
@@ -138,7 +138,7 @@ impl MeshSinglePass {
             options,
             frame: FrameBinding::new(device, &layouts.frame),
             layouts,
-            pipelines: HashMap::new(),
+            pipelines: PipelineCache::new("single-pass mesh"),
             scratch: Scratch::default(),
             prepared: None,
             fence: StorageFence::new(device)?,
@@ -179,13 +179,10 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
     ) -> Result<()> {
         frame.validate()?;
         let key = PreparedFor::of(frame, mesh);
-        if !self.pipelines.contains_key(&key.spec) {
-            let built =
-                crate::gpu::checked(device, "building the single-pass mesh pipelines", || {
-                    pipelines::build(device, &self.layouts, self.options, key.spec)
-                })??;
-            self.pipelines.insert(key.spec, built);
-        }
+        let (layouts, options) = (&self.layouts, self.options);
+        self.pipelines.prepare(device, key.spec, |modules| {
+            pipelines::build(device, modules, layouts, options, key.spec)
+        })?;
         self.scratch
             .prepare(device, self.options.visibility, frame, key.triangles)?;
         self.prepared = Some(key);
@@ -206,14 +203,14 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
         check_prepared("MeshSinglePass", &self.prepared, &key)?;
         let (spec, triangles) = (key.spec, key.triangles);
         self.frame.write(device, frame);
-        let pipelines = &self.pipelines[&spec];
+        let pipelines = self.pipelines.get(&spec).expect("built by prepare");
         let groups = self
             .scratch
             .bind_groups(device, &self.layouts, self.options.visibility, mesh);
 
         let s = &self.scratch;
         if let Some(keys) = s.keys_buffer() {
-            encoder.clear_buffer(keys, 0, None);
+            encoder.clear_buffer(keys.buffer(), 0, Some(keys.used()));
         }
         self.fence.encode(device, encoder, s.cover_buffers());
         {
@@ -282,12 +279,4 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
         }
         Ok(())
     }
-}
-
-/// Split `groups` workgroups over x and y within the per-dimension limit (the shader
-/// linearises `group.y · groups.x + group.x` and skips indices past the end).
-fn dispatch_2d(device: &wgpu::Device, groups: u32) -> [u32; 2] {
-    let max = device.limits().max_compute_workgroups_per_dimension.max(1);
-    let x = groups.clamp(1, max);
-    [x, groups.div_ceil(x).max(1)]
 }

@@ -4,6 +4,7 @@ use super::{CoverBounds, MeshSinglePassOptions, Visibility};
 use crate::error::Result;
 use crate::frame::frame_bind_group_layout;
 use crate::render::pipeline::{fullscreen_pipeline_with, storage_entry};
+use crate::render::pipeline_cache::ShaderModules;
 use crate::render::specialize::Specialization;
 use crate::render::view_layers::nearest_depth_test;
 use crate::target::SPATIAL_FORMAT;
@@ -131,6 +132,7 @@ fn geometry_stage(visibility: Visibility) -> Option<(&'static str, wgpu::ColorTa
 
 pub(super) fn build(
     device: &wgpu::Device,
+    modules: &mut ShaderModules,
     layouts: &Layouts,
     options: MeshSinglePassOptions,
     spec: Specialization,
@@ -174,7 +176,7 @@ pub(super) fn build(
                 compute_keys,
             ],
         )),
-        module: &crate::shader::module(device, compute_stage)?,
+        module: &modules.get(device, compute_stage)?,
         entry_point: Some("cs_main"),
         compilation_options: compile(if options.visibility == Visibility::Compute {
             &compute_constants
@@ -187,7 +189,7 @@ pub(super) fn build(
     let geometry = match geometry_stage(options.visibility) {
         None => None,
         Some((stage, target, depth_test)) => {
-            let module = crate::shader::module(device, stage)?;
+            let module = modules.get(device, stage)?;
             Some(
                 device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
                     label: Some(stage),
@@ -236,7 +238,7 @@ pub(super) fn build(
         Some((stage, visible)) => Some(fullscreen_pipeline_with(
             device,
             stage,
-            &crate::shader::module(device, stage)?,
+            &modules.get(device, stage)?,
             &[Some(&layouts.frame), Some(&layouts.mesh), Some(visible)],
             SPATIAL_FORMAT,
             &constants,

@@ -6,6 +6,7 @@ use super::Visibility;
 use crate::error::{Error, Result};
 use crate::frame::Frame;
 use crate::mesh::MeshBuffers;
+use crate::render::gpu_buffer::GpuBuffer;
 use crate::render::texture::{cached_texture_2d, Texture2d};
 use crate::render::view_layers::DEPTH_FORMAT;
 
@@ -15,13 +16,25 @@ const RECT_BYTES: u64 = 16;
 /// Bytes per subpixel of the atomic nearest-hit keys.
 const KEY_BYTES: u64 = 8;
 
-#[derive(Default)]
 pub(super) struct Scratch {
-    eye_triangles: Option<wgpu::Buffer>,
-    rects: Option<wgpu::Buffer>,
+    eye_triangles: GpuBuffer,
+    rects: GpuBuffer,
     depth: Option<Texture2d>,
     triangle_ids: Option<Texture2d>,
-    keys: Option<wgpu::Buffer>,
+    /// Atomic modes only (allocated on first use).
+    keys: Option<GpuBuffer>,
+}
+
+impl Default for Scratch {
+    fn default() -> Self {
+        Self {
+            eye_triangles: GpuBuffer::new("eye triangles", wgpu::BufferUsages::STORAGE),
+            rects: GpuBuffer::new("cover rects", wgpu::BufferUsages::STORAGE),
+            depth: None,
+            triangle_ids: None,
+            keys: None,
+        }
+    }
 }
 
 /// Bind groups of one frame.
@@ -32,11 +45,6 @@ pub(super) struct Groups {
     pub keys_write: Option<wgpu::BindGroup>,
     /// Exact modes: what the resolve pass reads (triangle ids or keys).
     pub visible: Option<wgpu::BindGroup>,
-}
-
-fn storage_limit(device: &wgpu::Device) -> u64 {
-    let l = device.limits();
-    l.max_storage_buffer_binding_size.min(l.max_buffer_size)
 }
 
 fn check(what: String, value: u64, limit: u64) -> Result<()> {
@@ -55,29 +63,15 @@ impl Scratch {
         frame: &Frame,
         triangles: u32,
     ) -> Result<()> {
-        let limit = storage_limit(device);
         let triangles = triangles as u64;
-        check(
-            format!("single-pass per-triangle buffer bytes ({triangles} triangles)"),
+        let what = |buffer| move || format!("single-pass {buffer} bytes ({triangles} triangles)");
+        self.eye_triangles.ensure(
+            device,
+            what("per-triangle buffer"),
             triangles * EYE_TRIANGLE_BYTES,
-            limit,
         )?;
-        if self
-            .rects
-            .as_ref()
-            .is_none_or(|b| b.size() != triangles * RECT_BYTES)
-        {
-            let buffer = |label, size| {
-                device.create_buffer(&wgpu::BufferDescriptor {
-                    label: Some(label),
-                    size,
-                    usage: wgpu::BufferUsages::STORAGE,
-                    mapped_at_creation: false,
-                })
-            };
-            self.eye_triangles = Some(buffer("eye triangles", triangles * EYE_TRIANGLE_BYTES));
-            self.rects = Some(buffer("cover rects", triangles * RECT_BYTES));
-        }
+        self.rects
+            .ensure(device, what("cover rectangle"), triangles * RECT_BYTES)?;
         let k = frame.display.views_per_pixel();
         let [w, h] = frame.size;
         match visibility {
@@ -115,15 +109,14 @@ impl Scratch {
             }
             Visibility::ExactAtomic | Visibility::Compute => {
                 let bytes = w as u64 * h as u64 * k as u64 * KEY_BYTES;
-                check(format!("nearest-hit key bytes for {w}x{h}"), bytes, limit)?;
-                if self.keys.as_ref().is_none_or(|b| b.size() != bytes) {
-                    self.keys = Some(device.create_buffer(&wgpu::BufferDescriptor {
-                        label: Some("nearest keys"),
-                        size: bytes,
-                        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
-                        mapped_at_creation: false,
-                    }));
-                }
+                let usage = wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST;
+                self.keys
+                    .get_or_insert_with(|| GpuBuffer::new("nearest keys", usage))
+                    .ensure(
+                        device,
+                        || format!("nearest-hit key bytes for {w}x{h}"),
+                        bytes,
+                    )?;
             }
         }
         Ok(())
@@ -143,13 +136,10 @@ impl Scratch {
 
     /// The buffers the cover pass writes and the later passes read.
     pub fn cover_buffers(&self) -> [&wgpu::Buffer; 2] {
-        [
-            self.eye_triangles.as_ref().expect("prepared"),
-            self.rects.as_ref().expect("prepared"),
-        ]
+        [self.eye_triangles.buffer(), self.rects.buffer()]
     }
 
-    pub fn keys_buffer(&self) -> Option<&wgpu::Buffer> {
+    pub fn keys_buffer(&self) -> Option<&GpuBuffer> {
         self.keys.as_ref()
     }
 
@@ -161,9 +151,14 @@ impl Scratch {
         visibility: Visibility,
         mesh: &MeshBuffers,
     ) -> Groups {
-        let eye = self.eye_triangles.as_ref().expect("prepared");
-        let rects = self.rects.as_ref().expect("prepared");
-        let buffers = [&mesh.vertices, &mesh.indices, eye, rects];
+        let mesh_resources = || {
+            vec![
+                mesh.vertices.as_entire_binding(),
+                mesh.indices.as_entire_binding(),
+                self.eye_triangles.binding(),
+                self.rects.binding(),
+            ]
+        };
         let group =
             |label, layout: &wgpu::BindGroupLayout, resources: Vec<wgpu::BindingResource>| {
                 let entries: Vec<wgpu::BindGroupEntry> = resources
@@ -180,12 +175,11 @@ impl Scratch {
                     entries: &entries,
                 })
             };
-        let mesh_resources = || buffers.iter().map(|b| b.as_entire_binding()).collect();
         let keys = || {
             self.keys
                 .as_ref()
                 .expect("prepared for atomic visibility")
-                .as_entire_binding()
+                .binding()
         };
         let (keys_write, visible) = match visibility {
             Visibility::Fast => (None, None),

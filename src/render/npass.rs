@@ -1,0 +1,56 @@
+//! The N-pass harness every primitive's N-pass method shares: one layer per view, then the
+//! mask compositing (`composite.rs`) into the spatial image.
+
+use super::composite::Compositor;
+use super::view_layers::ViewLayers;
+use crate::error::Result;
+use crate::frame::{Frame, FrameBinding};
+use crate::target::SpatialTarget;
+
+/// Per-view layers sized for the prepared frame, and their compositor.
+pub(crate) struct NPassHarness {
+    compositor: Compositor,
+    layers: Option<ViewLayers>,
+}
+
+impl NPassHarness {
+    /// `frame_layout` is the shared group-0 layout.
+    pub fn new(device: &wgpu::Device, frame_layout: &wgpu::BindGroupLayout) -> Result<Self> {
+        Ok(Self {
+            compositor: Compositor::new(device, frame_layout)?,
+            layers: None,
+        })
+    }
+
+    /// Layers for `frame`'s size and views (reallocated only when those change).
+    pub fn prepare(&mut self, device: &wgpu::Device, frame: &Frame) -> Result<()> {
+        let key = (frame.size, frame.camera.views);
+        if self.layers.as_ref().map(|l| l.key()) != Some(key) {
+            self.layers = None; // free before allocating the replacement
+            self.layers = Some(ViewLayers::new(device, frame.size, frame.camera.views)?);
+        }
+        Ok(())
+    }
+
+    /// The layers (after [`NPassHarness::prepare`]).
+    pub fn layers(&self) -> &ViewLayers {
+        self.layers.as_ref().expect("allocated by prepare")
+    }
+
+    /// The layers of the last prepared frame, if any.
+    pub fn view_layers(&self) -> Option<&ViewLayers> {
+        self.layers.as_ref()
+    }
+
+    /// Record the compositing of the layers into `target`.
+    pub fn composite(
+        &self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        frame: &FrameBinding,
+        target: &SpatialTarget,
+    ) {
+        self.compositor
+            .encode(device, encoder, frame, &self.layers().array_view, target);
+    }
+}
