@@ -15,7 +15,7 @@ use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::{
-    MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Method, Renderer, Visibility,
+    MeshNPass, MeshSinglePass, MeshSinglePassOptions, Method, Renderer, Visibility,
 };
 use autostereo::target::SpatialTarget;
 use autostereo::timing::FrameTimer;
@@ -36,11 +36,11 @@ fn bench(c: &mut Criterion) {
     let (device, queue) = (&ctx.device, &ctx.queue);
     let target = SpatialTarget::new(device, SIZE).unwrap();
     let timer = FrameTimer::new(device, queue);
-    let mut npass = MeshBaseline::new(device, Method::NPass).unwrap();
-    let mut single_view = MeshBaseline::new(device, Method::SingleView).unwrap();
+    let mut npass = MeshNPass::new(device, Method::NPass).unwrap();
+    let mut single_view = MeshNPass::new(device, Method::SingleView).unwrap();
     let mut single_pass: Vec<(&str, MeshSinglePass)> = [
         Visibility::Compute,
-        Visibility::ExactAtomic,
+        Visibility::Atomic,
         Visibility::Exact,
         Visibility::Fast,
     ]

@@ -12,7 +12,7 @@ use autostereo::gpu::GpuContext;
 use autostereo::image_io::compare;
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::{
-    MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Method, Renderer, Visibility,
+    MeshNPass, MeshSinglePass, MeshSinglePassOptions, Method, Renderer, Visibility,
 };
 use autostereo::target::SpatialTarget;
 use autostereo::views::extract_view;
@@ -37,7 +37,7 @@ fn main() -> Result<()> {
     // GPU resources borrowed from the caller's device.
     let buffers = MeshBuffers::new(&ctx.device, &mesh)?;
     let target = SpatialTarget::new(&ctx.device, size)?;
-    let mut renderer = MeshBaseline::new(&ctx.device, Method::NPass)?;
+    let mut renderer = MeshNPass::new(&ctx.device, Method::NPass)?;
     renderer.render(&ctx.device, &ctx.queue, &buffers, &frame, &target)?;
 
     let spatial = target.read(&ctx.device, &ctx.queue)?;

@@ -34,6 +34,53 @@ impl SpatialTarget {
         Ok(Self { texture, view })
     }
 
+    /// Usages a caller-made texture needs to be a spatial target: render attachment (the
+    /// raster passes) and storage (the compute passes).
+    pub const REQUIRED_USAGES: wgpu::TextureUsages =
+        wgpu::TextureUsages::RENDER_ATTACHMENT.union(wgpu::TextureUsages::STORAGE_BINDING);
+
+    /// Render straight into a texture the caller made: 2D, one mip, one sample,
+    /// [`SPATIAL_FORMAT`], with [`SpatialTarget::REQUIRED_USAGES`] (add `COPY_SRC` to
+    /// [`SpatialTarget::read`] it, `TEXTURE_BINDING` to copy it into a surface with
+    /// [`crate::render::OutputBlit`]). Anything else is a clear error; surfaces, which rarely
+    /// allow storage, take the spatial image through `OutputBlit` instead.
+    pub fn from_texture(texture: wgpu::Texture) -> Result<Self> {
+        let problem = if texture.format() != SPATIAL_FORMAT {
+            Some(format!(
+                "format {:?}: renderers write {SPATIAL_FORMAT:?} (use OutputBlit for other formats)",
+                texture.format()
+            ))
+        } else if !texture.usage().contains(Self::REQUIRED_USAGES) {
+            Some(format!(
+                "usage {:?} lacks {:?}",
+                texture.usage(),
+                Self::REQUIRED_USAGES - texture.usage()
+            ))
+        } else if texture.dimension() != wgpu::TextureDimension::D2
+            || texture.depth_or_array_layers() != 1
+            || texture.mip_level_count() != 1
+            || texture.sample_count() != 1
+        {
+            Some("must be 2D with one layer, one mip level and one sample".to_string())
+        } else {
+            None
+        };
+        if let Some(problem) = problem {
+            return Err(crate::Error::invalid("target texture", problem));
+        }
+        let view = texture.create_view(&Default::default());
+        Ok(Self { texture, view })
+    }
+
+    /// Make this a `size` target (a window was resized): a new texture when the size changed.
+    /// The renderers follow at their next `prepare` with a frame of that size.
+    pub fn resize(&mut self, device: &wgpu::Device, size: [u32; 2]) -> Result<()> {
+        if self.size() != size {
+            *self = Self::new(device, size)?;
+        }
+        Ok(())
+    }
+
     /// Size in pixels.
     pub fn size(&self) -> [u32; 2] {
         [self.texture.width(), self.texture.height()]

@@ -178,9 +178,7 @@ fn volumes_and_transfer_functions_with_inconsistent_fields_are_errors() {
 #[test]
 fn a_target_of_another_size_than_the_frame_is_an_error_for_every_mesh_renderer() {
     use autostereo::mesh::MeshBuffers;
-    use autostereo::render::{
-        MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Method, Renderer,
-    };
+    use autostereo::render::{MeshNPass, MeshSinglePass, MeshSinglePassOptions, Method, Renderer};
     use autostereo::target::SpatialTarget;
     let ctx = common::gpu();
     let mesh = Mesh::torus_scene();
@@ -188,8 +186,8 @@ fn a_target_of_another_size_than_the_frame_is_an_error_for_every_mesh_renderer()
     let frame = common::frame(mesh.bounds().unwrap(), "hubner8", 0.05, 1.0, [32, 32]);
     let target = SpatialTarget::new(&ctx.device, [48, 32]).unwrap();
     let mut renderers: Vec<Box<dyn Renderer<MeshBuffers>>> = vec![
-        Box::new(MeshBaseline::new(&ctx.device, Method::NPass).unwrap()),
-        Box::new(MeshBaseline::new(&ctx.device, Method::SingleView).unwrap()),
+        Box::new(MeshNPass::new(&ctx.device, Method::NPass).unwrap()),
+        Box::new(MeshNPass::new(&ctx.device, Method::SingleView).unwrap()),
         Box::new(MeshSinglePass::new(&ctx.device, MeshSinglePassOptions::default()).unwrap()),
     ];
     for renderer in &mut renderers {

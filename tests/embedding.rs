@@ -11,7 +11,7 @@ use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::points::{GroupCount, PointCloud, SplatScene};
 use autostereo::readback::read_texture_rgba8;
 use autostereo::render::{
-    AnyRenderer, AnyScene, MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Method, OutputBlit,
+    AnyRenderer, AnyScene, MeshNPass, MeshSinglePass, MeshSinglePassOptions, Method, OutputBlit,
     PointSplatter, Renderer, SplatOptions, Visibility, VolumeRaycaster, VolumeScene,
 };
 use autostereo::target::SpatialTarget;
@@ -94,7 +94,7 @@ fn two_frames_with_different_cameras_in_one_encoder_before_one_submit() {
     };
     let mut single = MeshSinglePass::new(&common::gpu().device, options).unwrap();
     assert_two_frames_in_one_encoder("mesh-single-pass", &mut single, &buffers, bounds);
-    let mut npass = MeshBaseline::new(&common::gpu().device, Method::NPass).unwrap();
+    let mut npass = MeshNPass::new(&common::gpu().device, Method::NPass).unwrap();
     assert_two_frames_in_one_encoder("mesh-n-pass", &mut npass, &buffers, bounds);
 
     let head = phantom::ct_head(24).unwrap();
@@ -128,7 +128,7 @@ fn caller_textures_of_every_8_bit_format_get_the_exact_subpixels() {
     let frame = common::frame(mesh.bounds().unwrap(), "hubner8", 0.06, 1.0, SIZE);
     let buffers = MeshBuffers::new(device, &mesh).unwrap();
     let spatial = SpatialTarget::new(device, SIZE).unwrap();
-    MeshBaseline::new(device, Method::NPass)
+    MeshNPass::new(device, Method::NPass)
         .unwrap()
         .render(device, queue, &buffers, &frame, &spatial)
         .unwrap();
@@ -164,6 +164,65 @@ fn caller_textures_of_every_8_bit_format_get_the_exact_subpixels() {
         let off = bytes.iter().zip(&expected).filter(|(a, b)| a != b).count();
         assert_eq!(off, 0, "{format:?}: {off} channel values changed");
     }
+}
+
+/// Rendering straight into a caller-made RGBA8 texture equals rendering into the library's own;
+/// a resize is one call on the target and a prepare for the new size.
+#[test]
+fn caller_made_spatial_targets_and_resizing() {
+    let mesh = Mesh::torus_scene();
+    let ctx = common::gpu();
+    let (device, queue) = (&ctx.device, &ctx.queue);
+    let buffers = MeshBuffers::new(device, &mesh).unwrap();
+    let mut renderer = MeshSinglePass::new(
+        device,
+        MeshSinglePassOptions {
+            visibility: Visibility::best_exact(device),
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    let frame = common::frame(mesh.bounds().unwrap(), "hubner8", 0.06, 1.0, SIZE);
+    let own = SpatialTarget::new(device, SIZE).unwrap();
+    renderer
+        .render(device, queue, &buffers, &frame, &own)
+        .unwrap();
+    let usage = SpatialTarget::REQUIRED_USAGES | wgpu::TextureUsages::COPY_SRC;
+    let texture = caller_texture(device, wgpu::TextureFormat::Rgba8Unorm, SIZE, usage);
+    let theirs = SpatialTarget::from_texture(texture).unwrap();
+    renderer
+        .render(device, queue, &buffers, &frame, &theirs)
+        .unwrap();
+    assert_eq!(
+        theirs.read(device, queue).unwrap(),
+        own.read(device, queue).unwrap()
+    );
+
+    let attachment = wgpu::TextureUsages::RENDER_ATTACHMENT;
+    let bgra = caller_texture(device, wgpu::TextureFormat::Bgra8Unorm, SIZE, attachment);
+    let e = SpatialTarget::from_texture(bgra).err().unwrap().to_string();
+    assert!(e.contains("Bgra8Unorm") && e.contains("OutputBlit"), "{e}");
+    let no_storage = caller_texture(device, wgpu::TextureFormat::Rgba8Unorm, SIZE, attachment);
+    let e = SpatialTarget::from_texture(no_storage)
+        .err()
+        .unwrap()
+        .to_string();
+    assert!(e.contains("STORAGE_BINDING"), "{e}");
+
+    // Resize: the target, then the frame; the next render prepares for the new size.
+    let mut target = own;
+    let bigger = [SIZE[0] + 17, SIZE[1] + 9];
+    target.resize(device, bigger).unwrap();
+    assert_eq!(target.size(), bigger);
+    let frame = common::frame(mesh.bounds().unwrap(), "hubner8", 0.06, 1.0, bigger);
+    let mut encoder = device.create_command_encoder(&Default::default());
+    let stale = renderer.encode(device, &mut encoder, &buffers, &frame, &target);
+    assert!(matches!(stale, Err(Error::NotPrepared { .. })));
+    renderer
+        .render(device, queue, &buffers, &frame, &target)
+        .unwrap();
+    let image = target.read(device, queue).unwrap();
+    assert!(image.data.iter().filter(|&&v| v > 0).count() > image.data.len() / 20);
 }
 
 fn caller_texture(
@@ -224,7 +283,7 @@ fn what_a_caller_can_get_wrong_is_a_clear_error() {
     let mesh = Mesh::torus_scene();
     let buffers = MeshBuffers::new(device, &mesh).unwrap();
     let frame = common::frame(mesh.bounds().unwrap(), "hubner8", 0.06, 1.0, SIZE);
-    let mut renderer = MeshBaseline::new(device, Method::NPass).unwrap();
+    let mut renderer = MeshNPass::new(device, Method::NPass).unwrap();
     let mut encoder = device.create_command_encoder(&Default::default());
     let e = renderer
         .encode(device, &mut encoder, &buffers, &frame, &spatial)
@@ -241,7 +300,7 @@ fn what_a_caller_can_get_wrong_is_a_clear_error() {
         .encode(device, &mut encoder, &buffers, &frame, &spatial)
         .is_err());
     // The single pass has no N-pass of its own.
-    assert!(MeshBaseline::new(device, Method::SinglePass).is_err());
+    assert!(MeshNPass::new(device, Method::SinglePass).is_err());
     drop(encoder);
 
     // AnyRenderer hides the primitive but renders only its own.

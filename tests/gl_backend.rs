@@ -9,7 +9,7 @@ use autostereo::frame::Frame;
 use autostereo::gpu::{GpuContext, GpuOptions};
 use autostereo::image_io::{compare, RgbImage};
 use autostereo::mesh::{Mesh, MeshBuffers};
-use autostereo::render::{MaskImageRenderer, MeshBaseline, Method, Renderer};
+use autostereo::render::{MaskImageRenderer, MeshNPass, Method, Renderer};
 use autostereo::target::SpatialTarget;
 
 /// One GL context per process, shared by the tests (docs/DESIGN.md §7: a second device from the same
@@ -31,7 +31,7 @@ fn gl() -> std::sync::MutexGuard<'static, GpuContext> {
 fn render_npass(ctx: &GpuContext, frame: &Frame, mesh: &Mesh) -> RgbImage {
     let buffers = MeshBuffers::new(&ctx.device, mesh).unwrap();
     let target = SpatialTarget::new(&ctx.device, frame.size).unwrap();
-    let mut renderer = MeshBaseline::new(&ctx.device, Method::NPass).unwrap();
+    let mut renderer = MeshNPass::new(&ctx.device, Method::NPass).unwrap();
     renderer
         .render(&ctx.device, &ctx.queue, &buffers, frame, &target)
         .unwrap();

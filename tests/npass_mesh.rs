@@ -9,7 +9,7 @@ use autostereo::frame::Frame;
 use autostereo::image_io::RgbImage;
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::readback::read_texture_rgba8;
-use autostereo::render::{MeshBaseline, Method, Renderer};
+use autostereo::render::{MeshNPass, Method, Renderer};
 use autostereo::target::SpatialTarget;
 use glam::{Mat4, Vec3};
 
@@ -54,11 +54,11 @@ fn frame(views: u32, separation: f32) -> Frame {
     Frame::new(camera(views, separation), display, SIZE).unwrap()
 }
 
-fn npass() -> MeshBaseline {
-    MeshBaseline::new(&common::gpu().device, Method::NPass).unwrap()
+fn npass() -> MeshNPass {
+    MeshNPass::new(&common::gpu().device, Method::NPass).unwrap()
 }
 
-fn render(frame: &Frame, renderer: &mut MeshBaseline) -> RgbImage {
+fn render(frame: &Frame, renderer: &mut MeshNPass) -> RgbImage {
     let ctx = common::gpu();
     let buffers = MeshBuffers::new(&ctx.device, &scene()).unwrap();
     let target = SpatialTarget::new(&ctx.device, frame.size).unwrap();
@@ -182,7 +182,7 @@ fn composite_equals_cpu_mask_applied_to_the_view_layers() {
 #[test]
 fn zero_separation_or_one_view_equals_single_view() {
     let mut renderer = npass();
-    let mut single_view = MeshBaseline::new(&common::gpu().device, Method::SingleView).unwrap();
+    let mut single_view = MeshNPass::new(&common::gpu().device, Method::SingleView).unwrap();
     for (views, separation) in [(8, 0.0), (1, 0.3)] {
         let frame = frame(views, separation);
         let npass = render(&frame, &mut renderer);

@@ -10,17 +10,13 @@ use autostereo::frame::Frame;
 use autostereo::image_io::{compare, ImageDiff, RgbImage};
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::{
-    CoverBounds, MeshBaseline, MeshSinglePassOptions, Method, Renderer, Visibility,
+    CoverBounds, MeshNPass, MeshSinglePassOptions, Method, Renderer, Visibility,
 };
 use autostereo::target::SpatialTarget;
 use glam::{Mat4, Vec3};
 
 const SIZE: [u32; 2] = [160, 128];
-const EXACT: [Visibility; 3] = [
-    Visibility::Exact,
-    Visibility::ExactAtomic,
-    Visibility::Compute,
-];
+const EXACT: [Visibility; 3] = [Visibility::Exact, Visibility::Atomic, Visibility::Compute];
 
 fn display(spec: &str) -> Display {
     Display::parse(spec).unwrap()
@@ -49,7 +45,7 @@ fn render(mesh: &Mesh, frame: &Frame, how: Option<MeshSinglePassOptions>) -> Opt
         Some(options) => common::mesh_single_pass(&ctx.device, options)?
             .render(&ctx.device, &ctx.queue, &buffers, frame, &target)
             .unwrap(),
-        None => MeshBaseline::new(&ctx.device, Method::NPass)
+        None => MeshNPass::new(&ctx.device, Method::NPass)
             .unwrap()
             .render(&ctx.device, &ctx.queue, &buffers, frame, &target)
             .unwrap(),
@@ -250,7 +246,7 @@ fn zero_separation_equals_single_view() {
     let ctx = common::gpu();
     let buffers = MeshBuffers::new(&ctx.device, &mesh).unwrap();
     let target = SpatialTarget::new(&ctx.device, SIZE).unwrap();
-    MeshBaseline::new(&ctx.device, Method::SingleView)
+    MeshNPass::new(&ctx.device, Method::SingleView)
         .unwrap()
         .render(&ctx.device, &ctx.queue, &buffers, &frame, &target)
         .unwrap();
@@ -290,7 +286,7 @@ fn degenerate_triangles_add_nothing_and_nan_is_an_error() {
     let frame = Frame::new(framed(&clean, 8, 0.05, 1.0), display("hubner8"), SIZE).unwrap();
     for visibility in [
         Visibility::Exact,
-        Visibility::ExactAtomic,
+        Visibility::Atomic,
         Visibility::Compute,
         Visibility::Fast,
     ] {

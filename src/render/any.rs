@@ -3,7 +3,7 @@
 
 use crate::error::{Error, Result};
 use crate::frame::Frame;
-use crate::mesh::passes::{MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Visibility};
+use crate::mesh::passes::{MeshNPass, MeshSinglePass, MeshSinglePassOptions, Visibility};
 use crate::mesh::MeshBuffers;
 use crate::points::passes::{PointSplatter, SplatOptions, DEFAULT_EPSILON_FRACTION};
 use crate::points::SplatScene;
@@ -56,7 +56,7 @@ impl AnyRenderer {
                         ..Default::default()
                     },
                 )?),
-                _ => Box::new(MeshBaseline::new(device, method)?),
+                _ => Box::new(MeshNPass::new(device, method)?),
             }),
             AnyScene::Points(splats) => AnyRenderer::Points(Box::new(PointSplatter::new(
                 device,

@@ -41,7 +41,7 @@ pub(crate) use renderer::{check_prepared, check_target};
 pub use view_layers::ViewLayers;
 
 pub use crate::mesh::passes::{
-    CoverBounds, MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Visibility,
+    CoverBounds, MeshNPass, MeshSinglePass, MeshSinglePassOptions, Visibility,
 };
 pub use crate::points::passes::{PointSplatter, SplatDepth, SplatOptions};
 pub use crate::volume::passes::{AlphaMode, VolumeParams, VolumeRaycaster, VolumeSlicer};

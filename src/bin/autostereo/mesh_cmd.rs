@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use anyhow::{Context, Result};
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::{
-    CoverBounds, MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Method, Renderer, Visibility,
+    CoverBounds, MeshNPass, MeshSinglePass, MeshSinglePassOptions, Method, Renderer, Visibility,
 };
 
 use crate::args::{gpu, RenderArgs};
@@ -76,7 +76,7 @@ pub fn run(args: MeshArgs) -> Result<()> {
         run.image.save_png(out)?;
     }
     let diff = if args.common.compare {
-        let mut npass = MeshBaseline::new(device, Method::NPass)?;
+        let mut npass = MeshNPass::new(device, Method::NPass)?;
         Some(compare_with(
             &ctx, &mut npass, &buffers, &frame, &run.image,
         )?)
@@ -107,8 +107,8 @@ pub fn run(args: MeshArgs) -> Result<()> {
 /// The renderer a `--method` selects.
 fn renderer(device: &wgpu::Device, args: &MeshArgs) -> Result<Box<dyn Renderer<MeshBuffers>>> {
     Ok(match args.common.method {
-        Method::NPass => Box::new(MeshBaseline::new(device, Method::NPass)?),
-        Method::SingleView => Box::new(MeshBaseline::new(device, Method::SingleView)?),
+        Method::NPass => Box::new(MeshNPass::new(device, Method::NPass)?),
+        Method::SingleView => Box::new(MeshNPass::new(device, Method::SingleView)?),
         Method::SinglePass => Box::new(MeshSinglePass::new(
             device,
             single_pass_options(device, args),
@@ -121,7 +121,7 @@ fn single_pass_options(device: &wgpu::Device, args: &MeshArgs) -> MeshSinglePass
         visibility: match args.visibility {
             VisibilityArg::Auto => Visibility::best_exact(device),
             VisibilityArg::Exact => Visibility::Exact,
-            VisibilityArg::Atomic => Visibility::ExactAtomic,
+            VisibilityArg::Atomic => Visibility::Atomic,
             VisibilityArg::Compute => Visibility::Compute,
             VisibilityArg::Fast => Visibility::Fast,
         },

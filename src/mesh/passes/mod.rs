@@ -3,5 +3,5 @@
 pub mod npass;
 pub mod single_pass;
 
-pub use npass::MeshBaseline;
+pub use npass::MeshNPass;
 pub use single_pass::{CoverBounds, MeshSinglePass, MeshSinglePassOptions, Visibility};

@@ -17,7 +17,7 @@ use crate::render::{check_prepared, check_target, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 
 /// N-pass or single-view mesh renderer. Holds pipelines and lazily sized scratch resources.
-pub struct MeshBaseline {
+pub struct MeshNPass {
     method: Method,
     pipeline: wgpu::RenderPipeline,
     view_layout: wgpu::BindGroupLayout,
@@ -31,16 +31,14 @@ pub struct MeshBaseline {
     prepared: Option<([u32; 2], u32)>,
 }
 
-impl MeshBaseline {
+impl MeshNPass {
     /// Build the pipelines for `method`: [`Method::NPass`] or [`Method::SingleView`] (the mesh
     /// single pass is [`crate::mesh::passes::MeshSinglePass`]).
     pub fn new(device: &wgpu::Device, method: Method) -> Result<Self> {
         if !matches!(method, Method::NPass | Method::SingleView) {
             return Err(crate::Error::invalid(
                 "method",
-                format!(
-                    "{method}: MeshBaseline renders n-pass and single-view; use MeshSinglePass"
-                ),
+                format!("{method}: MeshNPass renders n-pass and single-view; use MeshSinglePass"),
             ));
         }
         let frame_layout = frame_bind_group_layout(device);
@@ -207,7 +205,7 @@ impl MeshBaseline {
     }
 }
 
-impl Renderer<MeshBuffers> for MeshBaseline {
+impl Renderer<MeshBuffers> for MeshNPass {
     fn prepare(
         &mut self,
         device: &wgpu::Device,
@@ -245,7 +243,7 @@ impl Renderer<MeshBuffers> for MeshBaseline {
         frame.validate()?;
         check_target(frame, target)?;
         check_prepared(
-            "MeshBaseline",
+            "MeshNPass",
             &self.prepared,
             &(frame.size, frame.camera.views),
         )?;

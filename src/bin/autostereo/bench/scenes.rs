@@ -9,8 +9,8 @@ use autostereo::frame::Frame;
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::points::{GroupCount, PointCloud, SplatScene};
 use autostereo::render::{
-    AlphaMode, MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Method, PointSplatter,
-    SplatDepth, SplatOptions, Visibility, VolumeRaycaster, VolumeScene, VolumeSlicer,
+    AlphaMode, MeshNPass, MeshSinglePass, MeshSinglePassOptions, Method, PointSplatter, SplatDepth,
+    SplatOptions, Visibility, VolumeRaycaster, VolumeScene, VolumeSlicer,
 };
 pub use autostereo::render::{AnyRenderer, AnyScene};
 use autostereo::volume::{load, phantom, TransferFunction, Volume};
@@ -220,7 +220,7 @@ pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEn
             let mut v = Vec::new();
             for visibility in [
                 Visibility::Compute,
-                Visibility::ExactAtomic,
+                Visibility::Atomic,
                 Visibility::Exact,
                 Visibility::Fast,
             ] {
@@ -238,7 +238,7 @@ pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEn
                 ));
             }
             let base = |m| -> Result<AnyRenderer> {
-                Ok(AnyRenderer::Mesh(Box::new(MeshBaseline::new(device, m)?)))
+                Ok(AnyRenderer::Mesh(Box::new(MeshNPass::new(device, m)?)))
             };
             v.push(entry("n-pass", Kind::NPass, base(Method::NPass)?));
             v.push(entry(

@@ -7,7 +7,7 @@ use autostereo::image_io::{compare, RgbImage};
 use autostereo::points::{GroupCount, SplatScene};
 use autostereo::render::Renderer;
 use autostereo::render::{
-    AlphaMode, CoverBounds, MeshBaseline, MeshSinglePass, MeshSinglePassOptions, Method,
+    AlphaMode, CoverBounds, MeshNPass, MeshSinglePass, MeshSinglePassOptions, Method,
     PointSplatter, SplatDepth, SplatOptions, Visibility, VolumeRaycaster, VolumeScene,
     VolumeSlicer,
 };
@@ -242,11 +242,11 @@ fn mesh_studies(
     out: &mut Vec<Tradeoff>,
 ) -> Result<()> {
     let device = &ctx.device;
-    let npass = AnyRenderer::Mesh(Box::new(MeshBaseline::new(device, Method::NPass)?));
+    let npass = AnyRenderer::Mesh(Box::new(MeshNPass::new(device, Method::NPass)?));
     let p = probe(ctx, timer, scene, plan, "mesh visibility", npass)?;
     let modes = [
         (Visibility::Compute, CoverBounds::Exact),
-        (Visibility::ExactAtomic, CoverBounds::Exact),
+        (Visibility::Atomic, CoverBounds::Exact),
         (Visibility::Exact, CoverBounds::Exact),
         (Visibility::Fast, CoverBounds::Exact),
         (Visibility::Compute, CoverBounds::Paper),

@@ -9,7 +9,7 @@
 //! - `Exact`: rectangles rasterised at subpixel resolution (K·W × H); each fragment is one
 //!   subpixel's ray; the hardware depth test keeps the nearest triangle id. Matches N-pass;
 //!   needs no optional feature.
-//! - `ExactAtomic`: per-pixel fragments test the K rays and keep the nearest (depth, triangle)
+//! - `Atomic`: per-pixel fragments test the K rays and keep the nearest (depth, triangle)
 //!   per subpixel with 64-bit atomics. Also matches N-pass; needs `SHADER_INT64_ATOMIC_MIN_MAX`.
 //! - `Compute`: the rectangles rasterised in software by a compute pass, one invocation per
 //!   triangle, same 64-bit atomics; no hardware rasteriser involved. Matches N-pass.
@@ -38,7 +38,7 @@ pub enum Visibility {
     /// Subpixel-resolution rasterisation + hardware depth test + deferred shading. Exact.
     Exact,
     /// Per-pixel fragments, per-subpixel 64-bit atomic depth + deferred shading. Exact.
-    ExactAtomic,
+    Atomic,
     /// Covering rectangles rasterised by a compute pass, 64-bit atomic depth. Exact.
     Compute,
     /// The paper's one depth per fragment; approximate where triangles split a pixel.
@@ -63,7 +63,7 @@ impl Visibility {
     pub fn name(self) -> &'static str {
         match self {
             Visibility::Exact => "exact",
-            Visibility::ExactAtomic => "atomic",
+            Visibility::Atomic => "atomic",
             Visibility::Compute => "compute",
             Visibility::Fast => "fast",
         }
@@ -73,7 +73,7 @@ impl Visibility {
     pub fn required_features(self) -> wgpu::Features {
         match self {
             Visibility::Exact => wgpu::Features::empty(),
-            Visibility::ExactAtomic | Visibility::Compute => {
+            Visibility::Atomic | Visibility::Compute => {
                 wgpu::Features::SHADER_INT64 | wgpu::Features::SHADER_INT64_ATOMIC_MIN_MAX
             }
             Visibility::Fast => wgpu::Features::DUAL_SOURCE_BLENDING,
@@ -235,7 +235,7 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
                         depth_slice: None,
                         resolve_target: None,
                         ops: wgpu::Operations {
-                            // NO_TRIANGLE in mesh/single_pass_subpixel_resolve.wgsl.
+                            // NO_TRIANGLE in mesh/single_pass_exact_resolve.wgsl.
                             load: wgpu::LoadOp::Clear(wgpu::Color {
                                 r: u32::MAX as f64,
                                 g: 0.0,
@@ -248,7 +248,7 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
                     s.depth_view(),
                     "mesh single pass (subpixel visibility)",
                 ),
-                Visibility::ExactAtomic => (
+                Visibility::Atomic => (
                     cleared(&target.view, frame.background),
                     None,
                     "mesh single pass (atomic visibility)",

@@ -96,12 +96,12 @@ fn geometry_stage(visibility: Visibility) -> Option<(&'static str, wgpu::ColorTa
     Some(match visibility {
         Visibility::Compute => return None,
         Visibility::Exact => (
-            "mesh/single_pass_subpixel.wgsl",
+            "mesh/single_pass_exact.wgsl",
             TRIANGLE_ID_FORMAT.into(),
             true,
         ),
         // The atomic pass writes only storage; the attachment just gives the pass its size.
-        Visibility::ExactAtomic => (
+        Visibility::Atomic => (
             "mesh/single_pass_atomic.wgsl",
             wgpu::ColorTargetState {
                 format: SPATIAL_FORMAT,
@@ -160,11 +160,8 @@ pub(super) fn build(
     } else {
         "mesh/single_pass_cover.wgsl"
     };
-    let keys_write = matches!(
-        options.visibility,
-        Visibility::ExactAtomic | Visibility::Compute
-    )
-    .then_some(&layouts.keys_write);
+    let keys_write = matches!(options.visibility, Visibility::Atomic | Visibility::Compute)
+        .then_some(&layouts.keys_write);
     let compute_keys = (options.visibility == Visibility::Compute).then_some(&layouts.keys_write);
     let compute = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
         label: Some(compute_stage),
@@ -225,11 +222,8 @@ pub(super) fn build(
     };
 
     let resolve_stage = match options.visibility {
-        Visibility::Exact => Some((
-            "mesh/single_pass_subpixel_resolve.wgsl",
-            &layouts.triangle_ids,
-        )),
-        Visibility::ExactAtomic | Visibility::Compute => {
+        Visibility::Exact => Some(("mesh/single_pass_exact_resolve.wgsl", &layouts.triangle_ids)),
+        Visibility::Atomic | Visibility::Compute => {
             Some(("mesh/single_pass_atomic_resolve.wgsl", &layouts.keys_read))
         }
         Visibility::Fast => None,

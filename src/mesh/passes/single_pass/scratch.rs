@@ -107,7 +107,7 @@ impl Scratch {
                     wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
                 );
             }
-            Visibility::ExactAtomic | Visibility::Compute => {
+            Visibility::Atomic | Visibility::Compute => {
                 let bytes = w as u64 * h as u64 * k as u64 * KEY_BYTES;
                 let usage = wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST;
                 self.keys
@@ -190,7 +190,7 @@ impl Scratch {
                     Some(group("triangle ids", &layouts.triangle_ids, vec![view])),
                 )
             }
-            Visibility::ExactAtomic | Visibility::Compute => (
+            Visibility::Atomic | Visibility::Compute => (
                 Some(group("nearest keys", &layouts.keys_write, vec![keys()])),
                 Some(group("nearest keys", &layouts.keys_read, vec![keys()])),
             ),

@@ -1,5 +1,5 @@
 // Single-pass meshes, `exact` visibility, resolve pass: per subpixel, the nearest triangle found
-// by mesh/single_pass_subpixel.wgsl is intersected again with that subpixel's ray and shaded.
+// by mesh/single_pass_exact.wgsl is intersected again with that subpixel's ray and shaded.
 #import mesh/shared/resolve.wgsl
 
 // Bindings read by shared/frame.wgsl.

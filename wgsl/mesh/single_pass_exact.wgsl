@@ -1,7 +1,7 @@
 // Single-pass meshes, `exact` visibility, geometry pass: the covering rectangles are rasterised
 // at subpixel resolution (K·W × H), so every fragment is one ray — subpixel c = x mod K of
 // pixel x / K, seen from view mask(pixel, c) — and the hardware depth test keeps the nearest
-// hit per subpixel. Writes the triangle id; mesh/single_pass_subpixel_resolve.wgsl shades.
+// hit per subpixel. Writes the triangle id; mesh/single_pass_exact_resolve.wgsl shades.
 // No atomics, so it runs on every adapter.
 #import mesh/shared/cover.wgsl
 
