@@ -256,6 +256,19 @@ mod tests {
                 crate::points::passes::SplatParams::GPU_LAYOUT,
             ),
         ];
+        // Buffers of WGSL structs that have no Rust mirror: their per-element size.
+        let module = validate("mesh/single_pass_cover.wgsl").unwrap();
+        let mut layouter = naga::proc::Layouter::default();
+        layouter.update(module.to_ctx()).unwrap();
+        let (eye_triangle, _) = module
+            .types
+            .iter()
+            .find(|(_, t)| t.name.as_deref() == Some("EyeTriangle"))
+            .expect("struct EyeTriangle");
+        assert_eq!(
+            layouter[eye_triangle].size as u64,
+            crate::mesh::passes::single_pass::EYE_TRIANGLE_BYTES
+        );
         for (stage, rust) in cases {
             let module = validate(stage).unwrap();
             let mut layouter = naga::proc::Layouter::default();

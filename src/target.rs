@@ -4,7 +4,7 @@ use crate::error::Result;
 use crate::gpu::check_size_2d;
 use crate::image_io::RgbImage;
 use crate::readback::read_texture_rgba8;
-use crate::render::texture::texture_2d;
+use crate::render::texture::{texture_2d, Texture2d};
 
 /// Format of every spatial image and per-view layer: plain (linear) 8-bit RGBA.
 pub const SPATIAL_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
@@ -15,13 +15,15 @@ pub struct SpatialTarget {
     pub texture: wgpu::Texture,
     /// A view of it.
     pub view: wgpu::TextureView,
+    /// Made by the library (true) or wrapped around a caller's texture.
+    owned: bool,
 }
 
 impl SpatialTarget {
     /// Allocate a `size` target after checking the device limits.
     pub fn new(device: &wgpu::Device, size: [u32; 2]) -> Result<Self> {
         check_size_2d(device, size[0], size[1])?;
-        let (texture, view) = texture_2d(
+        let Texture2d { texture, view } = texture_2d(
             device,
             "spatial image",
             size,
@@ -31,7 +33,11 @@ impl SpatialTarget {
                 | wgpu::TextureUsages::TEXTURE_BINDING
                 | wgpu::TextureUsages::COPY_SRC,
         );
-        Ok(Self { texture, view })
+        Ok(Self {
+            texture,
+            view,
+            owned: true,
+        })
     }
 
     /// Usages a caller-made texture needs to be a spatial target: render attachment (the
@@ -69,15 +75,28 @@ impl SpatialTarget {
             return Err(crate::Error::invalid("target texture", problem));
         }
         let view = texture.create_view(&Default::default());
-        Ok(Self { texture, view })
+        Ok(Self {
+            texture,
+            view,
+            owned: false,
+        })
     }
 
     /// Make this a `size` target (a window was resized): a new texture when the size changed.
-    /// The renderers follow at their next `prepare` with a frame of that size.
+    /// The renderers follow at their next `prepare` with a frame of that size. A target
+    /// wrapped around a caller's texture is the caller's to resize (an error here: silently
+    /// swapping in a texture of the library's would stop frames reaching theirs).
     pub fn resize(&mut self, device: &wgpu::Device, size: [u32; 2]) -> Result<()> {
-        if self.size() != size {
-            *self = Self::new(device, size)?;
+        if self.size() == size {
+            return Ok(());
         }
+        if !self.owned {
+            return Err(crate::Error::invalid(
+                "target texture",
+                "a caller's texture: make one of the new size and wrap it with from_texture",
+            ));
+        }
+        *self = Self::new(device, size)?;
         Ok(())
     }
 
@@ -88,6 +107,12 @@ impl SpatialTarget {
 
     /// Copy to the CPU as RGB8.
     pub fn read(&self, device: &wgpu::Device, queue: &wgpu::Queue) -> Result<RgbImage> {
+        if !self.texture.usage().contains(wgpu::TextureUsages::COPY_SRC) {
+            return Err(crate::Error::invalid(
+                "target texture",
+                "reading it back needs COPY_SRC usage",
+            ));
+        }
         let rgba = read_texture_rgba8(device, queue, &self.texture, 0)?;
         Ok(RgbImage::from_rgba(self.size(), &rgba))
     }

@@ -146,12 +146,7 @@ fn caller_textures_of_every_8_bit_format_get_the_exact_subpixels() {
         let output = OutputBlit::new(device, format).unwrap();
         let mut encoder = device.create_command_encoder(&Default::default());
         output
-            .encode(
-                device,
-                &mut encoder,
-                &spatial,
-                &texture.create_view(&Default::default()),
-            )
+            .encode(device, &mut encoder, &spatial, &texture)
             .unwrap();
         queue.submit([encoder.finish()]);
         let mut bytes = read_texture_rgba8(device, queue, &texture, 0).unwrap();
@@ -231,6 +226,16 @@ fn caller_texture(
     size: [u32; 2],
     usage: wgpu::TextureUsages,
 ) -> wgpu::Texture {
+    caller_texture_exact(device, format, size, usage | wgpu::TextureUsages::COPY_SRC)
+}
+
+/// A caller's texture with exactly `usage`.
+fn caller_texture_exact(
+    device: &wgpu::Device,
+    format: wgpu::TextureFormat,
+    size: [u32; 2],
+    usage: wgpu::TextureUsages,
+) -> wgpu::Texture {
     device.create_texture(&wgpu::TextureDescriptor {
         label: Some("caller texture"),
         size: wgpu::Extent3d {
@@ -242,7 +247,7 @@ fn caller_texture(
         sample_count: 1,
         dimension: wgpu::TextureDimension::D2,
         format,
-        usage: usage | wgpu::TextureUsages::COPY_SRC,
+        usage,
         view_formats: &[],
     })
 }
@@ -262,10 +267,9 @@ fn what_a_caller_can_get_wrong_is_a_clear_error() {
     let mut encoder = device.create_command_encoder(&Default::default());
     let mut try_into = |format, size, usage| {
         let texture = caller_texture(device, format, size, usage);
-        let view = texture.create_view(&Default::default());
         message(
             output
-                .encode(device, &mut encoder, &spatial, &view)
+                .encode(device, &mut encoder, &spatial, &texture)
                 .err()
                 .unwrap(),
         )

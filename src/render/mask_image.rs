@@ -1,7 +1,7 @@
 //! The display mask evaluated by the GPU (WGSL) into a view-index image.
 
 use super::pipeline::{draw_fullscreen, fullscreen_pipeline};
-use super::texture::texture_2d;
+use super::texture::{texture_2d, Texture2d};
 use crate::display::Display;
 use crate::error::{Error, Result};
 use crate::frame::{frame_bind_group_layout, FrameBinding, FrameUniform};
@@ -47,7 +47,7 @@ impl MaskImageRenderer {
         let mut uniform: FrameUniform = bytemuck::Zeroable::zeroed();
         uniform.set_mask(display.mask().uniform());
         self.frame.write_uniform(device, &uniform);
-        let (texture, view) = texture_2d(
+        let Texture2d { texture, view } = texture_2d(
             device,
             "mask image",
             size,

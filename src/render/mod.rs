@@ -37,7 +37,7 @@ pub use mask_image::MaskImageRenderer;
 pub use method::Method;
 pub use output::{OutputBlit, OUTPUT_FORMATS};
 pub use renderer::Renderer;
-pub(crate) use renderer::{check_prepared, check_target};
+pub(crate) use renderer::{begin_prepare, check_prepared, check_target};
 pub use view_layers::ViewLayers;
 
 pub use crate::mesh::passes::{

@@ -66,43 +66,54 @@ impl OutputBlit {
         self.format
     }
 
-    /// Record the copy of `source` into `target`, a view of a 2D texture of this pass's format,
-    /// the source's size and with `RENDER_ATTACHMENT` usage (each checked, with a clear error).
+    /// Record the copy of `source` into `target`, a 2D texture of this pass's format, the
+    /// source's size and with `RENDER_ATTACHMENT` usage (a surface texture, say); the source
+    /// needs `TEXTURE_BINDING` (every `SpatialTarget::new` has it). Each is checked, with a
+    /// clear error. The pass writes the texture's own format (views of another format would
+    /// re-encode the values).
     pub fn encode(
         &self,
         device: &wgpu::Device,
         encoder: &mut wgpu::CommandEncoder,
         source: &SpatialTarget,
-        target: &wgpu::TextureView,
+        target: &wgpu::Texture,
     ) -> Result<()> {
-        let texture = target.texture();
-        let problem = if texture.format() != self.format {
+        let problem = if target.format() != self.format {
             Some(format!(
                 "format {:?}, but this output pass writes {:?} (make one per format)",
-                texture.format(),
+                target.format(),
                 self.format
             ))
-        } else if !texture
+        } else if !target
             .usage()
             .contains(wgpu::TextureUsages::RENDER_ATTACHMENT)
         {
             Some(format!(
                 "usage {:?} lacks RENDER_ATTACHMENT",
-                texture.usage()
+                target.usage()
             ))
-        } else if [texture.width(), texture.height()] != source.size() {
+        } else if [target.width(), target.height()] != source.size() {
             Some(format!(
                 "size {}x{} differs from the spatial image's {}x{}",
-                texture.width(),
-                texture.height(),
+                target.width(),
+                target.height(),
                 source.size()[0],
                 source.size()[1]
             ))
+        } else if target.dimension() != wgpu::TextureDimension::D2 || target.sample_count() != 1 {
+            Some("must be a single-sample 2D texture".to_string())
         } else {
             None
         };
         if let Some(problem) = problem {
             return Err(Error::invalid("target texture", problem));
+        }
+        let usage = source.texture.usage();
+        if !usage.contains(wgpu::TextureUsages::TEXTURE_BINDING) {
+            return Err(Error::invalid(
+                "spatial target",
+                format!("usage {usage:?} lacks TEXTURE_BINDING, which the output pass samples"),
+            ));
         }
         let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("output source"),
@@ -112,7 +123,16 @@ impl OutputBlit {
                 resource: wgpu::BindingResource::TextureView(&source.view),
             }],
         });
-        draw_fullscreen(encoder, "output", &self.pipeline, &[&group], target);
+        let view = target.create_view(&wgpu::TextureViewDescriptor {
+            label: Some("output target"),
+            base_mip_level: 0,
+            mip_level_count: Some(1),
+            base_array_layer: 0,
+            array_layer_count: Some(1),
+            dimension: Some(wgpu::TextureViewDimension::D2),
+            ..Default::default()
+        });
+        draw_fullscreen(encoder, "output", &self.pipeline, &[&group], &view);
         Ok(())
     }
 }

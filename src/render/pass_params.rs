@@ -12,7 +12,8 @@ use bytemuck::Pod;
 
 /// Per-pass constants of type `T`, `stride` bytes apart.
 pub(crate) struct PassParams<T> {
-    buffer: Option<(wgpu::Buffer, usize)>,
+    /// This frame's constants.
+    buffer: Option<wgpu::Buffer>,
     /// Bytes between consecutive passes' constants (the dynamic-offset alignment).
     pub stride: u64,
     label: &'static str,
@@ -53,11 +54,11 @@ impl<T: Pod> PassParams<T> {
             bytes[at..at + std::mem::size_of::<T>()].copy_from_slice(bytemuck::bytes_of(p));
         }
         let buffer = constants_buffer(device, self.label, wgpu::BufferUsages::UNIFORM, &bytes);
-        self.buffer = Some((buffer, count));
+        self.buffer = Some(buffer);
     }
 
     fn buffer(&self) -> &wgpu::Buffer {
-        &self.buffer.as_ref().expect("written before use").0
+        self.buffer.as_ref().expect("written before use")
     }
 
     /// The binding resource for a bind-group entry (one `T`, offset chosen per pass).

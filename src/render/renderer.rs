@@ -8,11 +8,12 @@ use crate::target::SpatialTarget;
 
 /// Renders scenes of type `S` (single pass, N-pass, single view…).
 ///
-/// Prepare, then record: [`Renderer::prepare`] does everything that compiles, allocates or
+/// Prepare, then record: [`Renderer::prepare`] does everything that compiles, sizes or
 /// uploads (pipelines for the frame's display, scratch for its size, tables derived from the
-/// scene); [`Renderer::encode`] only records into the caller's encoder. Encode writes nothing
-/// through the queue (each frame's constants get buffers of their own), so several frames,
-/// even with different cameras, can be encoded before one submit.
+/// scene); [`Renderer::encode`] records into the caller's encoder and never waits. Encode
+/// writes nothing through the queue: the frame's constants (camera, mask, per-pass uniforms, a
+/// few hundred bytes) go into small buffers of the frame's own, created with their contents,
+/// so several frames, even with different cameras, can be encoded before one submit.
 pub trait Renderer<S: ?Sized> {
     /// Get ready for frames like `frame` of `scene`: call it once, and again when the display,
     /// the size or the scene changes. Cheap when nothing changed.
@@ -52,6 +53,19 @@ pub trait Renderer<S: ?Sized> {
         queue.submit([encoder.finish()]);
         crate::readback::wait_idle(device)
     }
+}
+
+/// The start of every `prepare`: forget what was prepared (so that a failure half-way leaves
+/// nothing `encode` would take as ready), then check the frame and its size against the
+/// device limits before anything is allocated for it.
+pub(crate) fn begin_prepare<K>(
+    device: &wgpu::Device,
+    frame: &Frame,
+    prepared: &mut Option<K>,
+) -> Result<()> {
+    *prepared = None;
+    frame.validate()?;
+    crate::gpu::check_size_2d(device, frame.size[0], frame.size[1])
 }
 
 /// `Err(NotPrepared)` unless `prepared` (what [`Renderer::prepare`] last got ready) equals

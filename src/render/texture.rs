@@ -1,7 +1,10 @@
 //! 2D textures the passes allocate for themselves (depth buffers, id targets, scratch images).
 
 /// A texture and its default view.
-pub(crate) type Texture2d = (wgpu::Texture, wgpu::TextureView);
+pub(crate) struct Texture2d {
+    pub texture: wgpu::Texture,
+    pub view: wgpu::TextureView,
+}
 
 /// Create a single-mip, single-sample 2D texture of `size` and its default view.
 pub(crate) fn texture_2d(
@@ -26,7 +29,7 @@ pub(crate) fn texture_2d(
         view_formats: &[],
     });
     let view = texture.create_view(&Default::default());
-    (texture, view)
+    Texture2d { texture, view }
 }
 
 /// The view of `slot`, (re)allocated when missing or of another size.
@@ -40,12 +43,12 @@ pub(crate) fn cached_texture_2d<'a>(
 ) -> &'a wgpu::TextureView {
     if slot
         .as_ref()
-        .is_none_or(|(t, _)| [t.width(), t.height()] != size)
+        .is_none_or(|t| [t.texture.width(), t.texture.height()] != size)
     {
         *slot = None; // free before allocating the replacement
         *slot = Some(texture_2d(device, label, size, format, usage));
     }
-    &slot.as_ref().expect("allocated above").1
+    &slot.as_ref().expect("allocated above").view
 }
 
 /// A bind-group-layout entry for a non-filtered `texture_2d<f32>` read with `textureLoad`.

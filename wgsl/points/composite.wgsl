@@ -18,7 +18,7 @@ const FAR: f32 = 3.0e38;
 
 // Normalised colour of one subpixel from the (packed, depth bits) samples of every group.
 fn blend_subpixel(coord: vec2<u32>, background: f32) -> f32 {
-    let layers = textureNumLayers(groups);
+    let layers = params.groups;
     var nearest = FAR;
     for (var g = 0u; g < layers; g++) {
         let t = textureLoad(groups, coord, g, 0).xy;
@@ -47,7 +47,7 @@ fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
         }
         return vec4<f32>(out, 1.0);
     }
-    let layers = textureNumLayers(groups);
+    let layers = params.groups;
     var nearest = FAR;
     for (var g = 0u; g < layers; g++) {
         let t = textureLoad(groups, px, g, 0);

@@ -7,13 +7,13 @@ use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
 use crate::mesh::MeshBuffers;
 use crate::render::npass::NPassHarness;
-use crate::render::pass_params::constants_buffer;
+use crate::render::pass_params::PassParams;
 use crate::render::pipeline::{begin_pass, cleared};
 use crate::render::texture::{cached_texture_2d, Texture2d};
 use crate::render::view_layers::{nearest_depth_test, DEPTH_FORMAT};
 use crate::render::Method;
 use crate::render::ViewLayers;
-use crate::render::{check_prepared, check_target, Renderer};
+use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 
 /// N-pass or single-view mesh renderer. Holds pipelines and lazily sized scratch resources.
@@ -24,11 +24,10 @@ pub struct MeshNPass {
     frame: FrameBinding,
     npass: NPassHarness,
     single_view_depth: Option<Texture2d>,
-    /// This frame's view uniforms (one per view, dynamic offsets).
-    view_uniforms: Option<wgpu::BindGroup>,
-    view_stride: u64,
-    /// (size, views) prepared for.
-    prepared: Option<([u32; 2], u32)>,
+    /// This frame's view uniforms (one per view, dynamic offsets) and their bind group.
+    views: PassParams<ViewUniform>,
+    view_group: Option<wgpu::BindGroup>,
+    prepared: Option<PreparedFor>,
 }
 
 impl MeshNPass {
@@ -44,18 +43,10 @@ impl MeshNPass {
         let frame_layout = frame_bind_group_layout(device);
         let view_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("view"),
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Uniform,
-                    has_dynamic_offset: true,
-                    min_binding_size: wgpu::BufferSize::new(
-                        std::mem::size_of::<ViewUniform>() as u64
-                    ),
-                },
-                count: None,
-            }],
+            entries: &[PassParams::<ViewUniform>::layout_entry(
+                0,
+                wgpu::ShaderStages::VERTEX_FRAGMENT,
+            )],
         });
         let module = crate::shader::module(device, "mesh/npass.wgsl")?;
         let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
@@ -63,29 +54,30 @@ impl MeshNPass {
             bind_group_layouts: &[Some(&frame_layout), Some(&view_layout)],
             immediate_size: 0,
         });
-        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("mesh view"),
-            layout: Some(&layout),
-            vertex: wgpu::VertexState {
-                module: &module,
-                entry_point: Some("vs_main"),
-                compilation_options: Default::default(),
-                buffers: &[Some(MeshBuffers::vertex_layout())],
-            },
-            // No culling: OBJ winding is not reliable; shading is two-sided.
-            primitive: wgpu::PrimitiveState::default(),
-            depth_stencil: Some(nearest_depth_test()),
-            multisample: Default::default(),
-            fragment: Some(wgpu::FragmentState {
-                module: &module,
-                entry_point: Some("fs_main"),
-                compilation_options: Default::default(),
-                targets: &[Some(SPATIAL_FORMAT.into())],
-            }),
-            multiview_mask: None,
-            cache: None,
-        });
-        let align = device.limits().min_uniform_buffer_offset_alignment as u64;
+        let pipeline = crate::gpu::checked(device, "building the mesh N-pass pipeline", || {
+            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some("mesh view"),
+                layout: Some(&layout),
+                vertex: wgpu::VertexState {
+                    module: &module,
+                    entry_point: Some("vs_main"),
+                    compilation_options: Default::default(),
+                    buffers: &[Some(MeshBuffers::vertex_layout())],
+                },
+                // No culling: OBJ winding is not reliable; shading is two-sided.
+                primitive: wgpu::PrimitiveState::default(),
+                depth_stencil: Some(nearest_depth_test()),
+                multisample: Default::default(),
+                fragment: Some(wgpu::FragmentState {
+                    module: &module,
+                    entry_point: Some("fs_main"),
+                    compilation_options: Default::default(),
+                    targets: &[Some(SPATIAL_FORMAT.into())],
+                }),
+                multiview_mask: None,
+                cache: None,
+            })
+        })?;
         Ok(Self {
             method,
             pipeline,
@@ -93,9 +85,9 @@ impl MeshNPass {
             frame: FrameBinding::new(device, &frame_layout),
             view_layout,
             single_view_depth: None,
-            view_uniforms: None,
+            views: PassParams::new(device, "view uniforms"),
+            view_group: None,
             prepared: None,
-            view_stride: (std::mem::size_of::<ViewUniform>() as u64).div_ceil(align) * align,
         })
     }
 
@@ -143,41 +135,29 @@ impl MeshNPass {
             .single_view_depth
             .as_ref()
             .expect("allocated by prepare")
-            .1
+            .view
             .clone();
         self.draw(encoder, mesh, frame, 0, &target.view, &depth);
         Ok(())
     }
 
-    /// This frame's view uniforms, in a buffer of their own (`src/render/pass_params.rs`).
+    /// This frame's view uniforms (`src/render/pass_params.rs`) and their bind group.
     fn write_views(
         &mut self,
         device: &wgpu::Device,
         offsets: &[f32],
         uniform: impl Fn(f32) -> ViewUniform,
     ) {
-        let count = offsets.len() as u32;
-        let mut bytes = vec![0u8; (self.view_stride * count as u64) as usize];
-        for (i, &vd) in offsets.iter().enumerate() {
-            let at = i * self.view_stride as usize;
-            let u = uniform(vd);
-            let src = bytemuck::bytes_of(&u);
-            bytes[at..at + src.len()].copy_from_slice(src);
-        }
-        let buffer = constants_buffer(device, "view uniforms", wgpu::BufferUsages::UNIFORM, &bytes);
-        let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        let views: Vec<ViewUniform> = offsets.iter().map(|&vd| uniform(vd)).collect();
+        self.views.write(device, &views);
+        self.view_group = Some(device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("view"),
             layout: &self.view_layout,
             entries: &[wgpu::BindGroupEntry {
                 binding: 0,
-                resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
-                    buffer: &buffer,
-                    offset: 0,
-                    size: wgpu::BufferSize::new(std::mem::size_of::<ViewUniform>() as u64),
-                }),
+                resource: self.views.binding(),
             }],
-        });
-        self.view_uniforms = Some(group);
+        }));
     }
 
     fn draw(
@@ -189,7 +169,7 @@ impl MeshNPass {
         color: &wgpu::TextureView,
         depth: &wgpu::TextureView,
     ) {
-        let view_group = self.view_uniforms.as_ref().expect("written before drawing");
+        let view_group = self.view_group.as_ref().expect("written before drawing");
         let mut pass = begin_pass(
             encoder,
             "mesh view",
@@ -198,10 +178,26 @@ impl MeshNPass {
         );
         pass.set_pipeline(&self.pipeline);
         pass.set_bind_group(0, &self.frame.bind_group, &[]);
-        pass.set_bind_group(1, view_group, &[(view as u64 * self.view_stride) as u32]);
+        pass.set_bind_group(1, view_group, &[self.views.offset(view as usize)]);
         pass.set_vertex_buffer(0, mesh.vertices.slice(..));
         pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
         pass.draw_indexed(0..mesh.index_count, 0, 0..1);
+    }
+}
+
+/// What a [`MeshNPass`] was prepared for: the frame's size and views.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct PreparedFor {
+    size: [u32; 2],
+    views: u32,
+}
+
+impl PreparedFor {
+    fn of(frame: &Frame) -> Self {
+        Self {
+            size: frame.size,
+            views: frame.camera.views,
+        }
     }
 }
 
@@ -213,8 +209,7 @@ impl Renderer<MeshBuffers> for MeshNPass {
         _mesh: &MeshBuffers,
         frame: &Frame,
     ) -> Result<()> {
-        frame.validate()?;
-        let views = frame.camera.views;
+        begin_prepare(device, frame, &mut self.prepared)?;
         match self.method {
             Method::NPass => self.npass.prepare(device, frame)?,
             _ => {
@@ -228,7 +223,7 @@ impl Renderer<MeshBuffers> for MeshNPass {
                 );
             }
         }
-        self.prepared = Some((frame.size, views));
+        self.prepared = Some(PreparedFor::of(frame));
         Ok(())
     }
 
@@ -242,11 +237,7 @@ impl Renderer<MeshBuffers> for MeshNPass {
     ) -> Result<()> {
         frame.validate()?;
         check_target(frame, target)?;
-        check_prepared(
-            "MeshNPass",
-            &self.prepared,
-            &(frame.size, frame.camera.views),
-        )?;
+        check_prepared("MeshNPass", &self.prepared, &PreparedFor::of(frame))?;
         match self.method {
             Method::NPass => self.encode_npass(device, encoder, mesh, frame, target),
             _ => self.encode_single_view(device, encoder, mesh, frame, target),

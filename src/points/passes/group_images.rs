@@ -7,20 +7,34 @@ use crate::render::ViewLayers;
 
 pub(super) struct GroupImages {
     pub layers: ViewLayers,
-    /// (image size in texels, groups, subpixel)
-    pub key: ([u32; 2], u32, bool),
+    pub key: GroupImagesKey,
+}
+
+/// What the group images are made for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct GroupImagesKey {
+    /// Image size in texels (K·W × H for subpixel images).
+    pub size: [u32; 2],
+    pub groups: u32,
+    /// Exact per-subpixel depth (RG32 texels) instead of one per pixel.
+    pub subpixel: bool,
 }
 
 impl GroupImages {
-    /// Bytes `groups` images of `size` texels take, with their depth buffer.
-    pub fn bytes(size: [u32; 2], groups: u32, subpixel: bool) -> u64 {
-        let texel = if subpixel { 8 } else { 16 };
-        let area = size[0] as u64 * size[1] as u64;
-        area * (texel * groups as u64 + 4)
+    /// Bytes the images of `key` take, with their depth buffer.
+    pub fn bytes(key: GroupImagesKey) -> u64 {
+        let texel = if key.subpixel { 8 } else { 16 };
+        let area = key.size[0] as u64 * key.size[1] as u64;
+        let layers = crate::render::view_layers::array_layers_for(key.size, key.groups);
+        area * (texel * layers as u64 + 4)
     }
 
-    /// `size` is the image size in texels (K·W × H for subpixel images).
-    pub fn new(device: &wgpu::Device, size: [u32; 2], groups: u32, subpixel: bool) -> Result<Self> {
+    pub fn new(device: &wgpu::Device, key: GroupImagesKey) -> Result<Self> {
+        let GroupImagesKey {
+            size,
+            groups,
+            subpixel,
+        } = key;
         let format = if subpixel {
             SUBPIXEL_FORMAT
         } else {
@@ -34,9 +48,6 @@ impl GroupImages {
             format,
             wgpu::TextureUsages::empty(),
         )?;
-        Ok(Self {
-            layers,
-            key: (size, groups, subpixel),
-        })
+        Ok(Self { layers, key })
     }
 }

@@ -14,7 +14,7 @@ use crate::render::Method;
 
 pub use pipelines::SplatParams;
 
-use self::group_images::GroupImages;
+use self::group_images::{GroupImages, GroupImagesKey};
 use self::pipelines::{Layouts, Pipelines, SplatPipelineKey, COVER_WORKGROUP};
 use crate::error::{Error, Result};
 use crate::frame::{Frame, FrameBinding};
@@ -28,7 +28,7 @@ use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
 use crate::render::storage_fence::StorageFence;
 use crate::render::Renderer;
-use crate::render::{check_prepared, check_target};
+use crate::render::{begin_prepare, check_prepared, check_target};
 use crate::target::SpatialTarget;
 
 /// Depth kept per group image by the single pass on subpixel (K = 3) displays.
@@ -88,7 +88,6 @@ impl SplatOptions {
     }
 }
 
-/// Per-splat buffers the cover pass writes (eye-space splats, covering rectangles).
 /// The cover pass's output: eye-space splats and their covering rectangles.
 struct Scratch {
     eye_splats: GpuBuffer,
@@ -150,14 +149,15 @@ impl PointSplatter {
         let images = self
             .images
             .as_ref()
-            .map_or(0, |i| GroupImages::bytes(i.key.0, i.key.1, i.key.2));
+            .map_or(0, |i| GroupImages::bytes(i.key));
         let layers = self
             .npass
             .as_ref()
             .and_then(|n| n.view_layers())
             .map_or(0, |l| {
                 let ([w, h], n) = l.key();
-                w as u64 * h as u64 * (4 * n as u64 + 4)
+                let allocated = crate::render::view_layers::array_layers_for([w, h], n);
+                w as u64 * h as u64 * (4 * allocated as u64 + 4)
             });
         scratch + images + layers
     }
@@ -170,7 +170,7 @@ impl PointSplatter {
     }
 
     /// Constants of each camera pass of the frame.
-    fn passes(&self, frame: &Frame) -> Vec<SplatParams> {
+    fn passes(&self, frame: &Frame, groups: u32) -> Vec<SplatParams> {
         let camera = &frame.camera;
         let fixed = |offset: f32| SplatParams {
             cover_lo: offset,
@@ -178,7 +178,8 @@ impl PointSplatter {
             fixed_offset: offset,
             use_mask: 0,
             epsilon: self.options.epsilon,
-            _pad: [0.0; 3],
+            groups,
+            _pad: [0.0; 2],
         };
         match self.method {
             Method::SinglePass => vec![SplatParams {
@@ -231,10 +232,14 @@ impl PointSplatter {
             1
         };
         let size = [frame.size[0].saturating_mul(k), frame.size[1]];
-        let key = (size, scene.groups(), subpixel);
+        let key = GroupImagesKey {
+            size,
+            groups: scene.groups(),
+            subpixel,
+        };
         if self.images.as_ref().map(|i| i.key) != Some(key) {
             self.images = None;
-            self.images = Some(GroupImages::new(device, size, scene.groups(), subpixel)?);
+            self.images = Some(GroupImages::new(device, key)?);
         }
         if let Some(npass) = &mut self.npass {
             npass.prepare(device, frame)?;
@@ -270,7 +275,7 @@ impl Renderer<SplatScene> for PointSplatter {
         scene: &SplatScene,
         frame: &Frame,
     ) -> Result<()> {
-        frame.validate()?;
+        begin_prepare(device, frame, &mut self.prepared)?;
         self.ensure_resources(device, scene, frame)?;
         self.prepared = Some(self.needs(scene, frame));
         Ok(())
@@ -287,7 +292,7 @@ impl Renderer<SplatScene> for PointSplatter {
         frame.validate()?;
         check_target(frame, target)?;
         check_prepared("PointSplatter", &self.prepared, &self.needs(scene, frame))?;
-        let passes = self.passes(frame);
+        let passes = self.passes(frame, scene.groups());
         self.frame.write(device, frame);
         self.params.write(device, &passes);
         let key = SplatPipelineKey {

@@ -32,13 +32,15 @@ pub struct SplatParams {
     pub use_mask: u32,
     /// ε of the compositing, eye-depth units.
     pub epsilon: f32,
-    pub(super) _pad: [f32; 3],
+    /// Group images to composite (the array may hold a spare layer: `ViewLayers`).
+    pub groups: u32,
+    pub(super) _pad: [f32; 2],
 }
 const _: () = assert!(std::mem::size_of::<SplatParams>() == 32);
 crate::shader::gpu_layout!(
     SplatParams,
     "SplatParams",
-    [cover_lo, cover_hi, fixed_offset, use_mask, epsilon]
+    [cover_lo, cover_hi, fixed_offset, use_mask, epsilon, groups]
 );
 
 pub(super) struct Layouts {

@@ -10,7 +10,7 @@ use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
 use crate::render::Method;
 use crate::render::ViewLayers;
-use crate::render::{check_prepared, check_target, Renderer};
+use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
 use crate::target::SpatialTarget;
 use crate::volume::VolumeScene;
 
@@ -59,10 +59,9 @@ impl VolumeRaycaster {
     /// The pipeline for `key`, with the empty-space skipping code compiled in or out (an
     /// override constant: without it the march is the plain loop, no look-up overhead).
     fn ensure_pipeline(&mut self, device: &wgpu::Device, key: RaycastPipelineKey) -> Result<()> {
-        let layout = self
-            .resources
-            .pipeline_layout(device, "volume raycast", &self.output_layout);
+        let (resources, output_layout) = (&self.resources, &self.output_layout);
         self.pipelines.prepare(device, key, |modules| {
+            let layout = resources.pipeline_layout(device, "volume raycast", output_layout);
             let module = modules.get(device, "volume/raycast.wgsl")?;
             let skip = f64::from(u8::from(key.skip_empty));
             let constants = key.spec.constants(&[("SKIP_EMPTY", skip)]);
@@ -117,17 +116,24 @@ impl PreparedFor {
             views: frame.camera.views,
         }
     }
+
+    /// The proxy slices have no empty-space skipping: toggling it needs no new prepare.
+    pub fn for_slices(scene: &VolumeScene, frame: &Frame) -> Self {
+        Self {
+            skip_empty: false,
+            ..Self::of(scene, frame)
+        }
+    }
 }
 
-/// `Err(NotPrepared)` unless `prepared` matches the frame and the scene's uploads are current.
+/// `Err(NotPrepared)` unless `prepared` is `wanted` and the scene's uploads are current.
 pub(crate) fn check_volume_prepared(
     renderer: &'static str,
     prepared: &Option<PreparedFor>,
     resources: &VolumeResources,
     scene: &VolumeScene,
-    frame: &Frame,
+    wanted: PreparedFor,
 ) -> Result<()> {
-    let wanted = PreparedFor::of(scene, frame);
     let current = prepared.filter(|_| resources.uploaded_for(scene));
     check_prepared(renderer, &current, &wanted)
 }
@@ -140,7 +146,7 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         scene: &VolumeScene,
         frame: &Frame,
     ) -> Result<()> {
-        frame.validate()?;
+        begin_prepare(device, frame, &mut self.prepared)?;
         scene.validate()?;
         let key = PreparedFor::of(scene, frame);
         self.resources.upload(device, queue, scene)?;
@@ -169,12 +175,13 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         frame.validate()?;
         scene.validate()?;
         check_target(frame, target)?;
+        let wanted = PreparedFor::of(scene, frame);
         check_volume_prepared(
             "VolumeRaycaster",
             &self.prepared,
             &self.resources,
             scene,
-            frame,
+            wanted,
         )?;
         let camera = &frame.camera;
         // One dispatch per camera: all K views per pixel, or one fixed camera per view / centre.

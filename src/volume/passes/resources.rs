@@ -42,15 +42,29 @@ crate::shader::gpu_layout!(
     ]
 );
 
+/// The pre-integration table and what it was made for.
+struct UploadedTable {
+    transfer: TransferFunction,
+    step_voxels: f32,
+    texture: PreintegrationTexture,
+}
+
+/// The transparent-brick flags and what they were made for.
+struct UploadedBricks {
+    scene_id: u64,
+    transfer: TransferFunction,
+    texture: TransparentBrickTexture,
+}
+
 pub(crate) struct VolumeResources {
     pub frame: FrameBinding,
     pub frame_layout: wgpu::BindGroupLayout,
     pub volume_layout: wgpu::BindGroupLayout,
     sampler: wgpu::Sampler,
     pub params: PassParams<VolumeParams>,
-    table: Option<(TransferFunction, f32, PreintegrationTexture)>,
+    table: Option<UploadedTable>,
     /// Transparent-brick flags for (scene id, transfer function).
-    bricks: Option<(u64, TransferFunction, TransparentBrickTexture)>,
+    bricks: Option<UploadedBricks>,
 }
 
 impl VolumeResources {
@@ -156,15 +170,22 @@ impl VolumeResources {
         scene: &VolumeScene,
     ) -> Result<()> {
         if !self.table_fresh(scene) {
-            let table = PreintegrationTable::new(&scene.transfer, scene.step / scene.voxel)?;
-            let texture = PreintegrationTexture::new(device, queue, &table);
-            self.table = Some((scene.transfer.clone(), scene.step / scene.voxel, texture));
+            let step_voxels = scene.step / scene.voxel;
+            let table = PreintegrationTable::new(&scene.transfer, step_voxels)?;
+            self.table = Some(UploadedTable {
+                transfer: scene.transfer.clone(),
+                step_voxels,
+                texture: PreintegrationTexture::new(device, queue, &table),
+            });
         }
         if !self.bricks_fresh(scene) {
             let bricks = scene.bricks();
             let flags = bricks.transparent(&scene.transfer);
-            let texture = TransparentBrickTexture::new(device, queue, bricks.grid, &flags);
-            self.bricks = Some((scene.id(), scene.transfer.clone(), texture));
+            self.bricks = Some(UploadedBricks {
+                scene_id: scene.id(),
+                transfer: scene.transfer.clone(),
+                texture: TransparentBrickTexture::new(device, queue, bricks.grid, &flags),
+            });
         }
         Ok(())
     }
@@ -173,13 +194,13 @@ impl VolumeResources {
         let step_voxels = scene.step / scene.voxel;
         self.table
             .as_ref()
-            .is_some_and(|(tf, step, _)| *tf == scene.transfer && *step == step_voxels)
+            .is_some_and(|t| t.transfer == scene.transfer && t.step_voxels == step_voxels)
     }
 
     fn bricks_fresh(&self, scene: &VolumeScene) -> bool {
         self.bricks
             .as_ref()
-            .is_some_and(|(id, tf, _)| *id == scene.id() && *tf == scene.transfer)
+            .is_some_and(|b| b.scene_id == scene.id() && b.transfer == scene.transfer)
     }
 
     /// Whether [`VolumeResources::upload`] ran for `scene` as it is now (the same volume,
@@ -199,8 +220,18 @@ impl VolumeResources {
     ) -> wgpu::BindGroup {
         self.frame.write(device, frame);
         self.params.write(device, dispatches);
-        let table = &self.table.as_ref().expect("uploaded by prepare").2.view;
-        let bricks = &self.bricks.as_ref().expect("uploaded by prepare").2.view;
+        let table = &self
+            .table
+            .as_ref()
+            .expect("uploaded by prepare")
+            .texture
+            .view;
+        let bricks = &self
+            .bricks
+            .as_ref()
+            .expect("uploaded by prepare")
+            .texture
+            .view;
         device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("volume"),
             layout: &self.volume_layout,

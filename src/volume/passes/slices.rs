@@ -10,12 +10,12 @@ use super::raycast::{check_volume_prepared, PreparedFor};
 use super::resources::VolumeResources;
 use crate::error::Result;
 use crate::frame::Frame;
-use crate::render::check_target;
 use crate::render::pipeline::{begin_pass, cleared, draw_fullscreen, fullscreen_pipeline};
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
 use crate::render::texture::{cached_texture_2d, Texture2d};
 use crate::render::Renderer;
+use crate::render::{begin_prepare, check_target};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 use crate::volume::VolumeScene;
 
@@ -92,13 +92,16 @@ impl VolumeSlicer {
                 multisampled: false,
             },
         );
-        let resolve = fullscreen_pipeline(
-            device,
-            "volume slices resolve",
-            &crate::shader::module(device, "volume/slices_resolve.wgsl")?,
-            &[Some(&resources.frame_layout), Some(&accumulated_layout)],
-            SPATIAL_FORMAT,
-        );
+        let module = crate::shader::module(device, "volume/slices_resolve.wgsl")?;
+        let resolve = crate::gpu::checked(device, "building the volume slice resolve", || {
+            fullscreen_pipeline(
+                device,
+                "volume slices resolve",
+                &module,
+                &[Some(&resources.frame_layout), Some(&accumulated_layout)],
+                SPATIAL_FORMAT,
+            )
+        })?;
         Ok(Self {
             alpha,
             resources,
@@ -112,10 +115,7 @@ impl VolumeSlicer {
     }
 
     fn ensure_pipeline(&mut self, device: &wgpu::Device, spec: Specialization) -> Result<()> {
-        let alpha = self.alpha;
-        let layout = self
-            .resources
-            .pipeline_layout(device, "volume slices", &self.slices_layout);
+        let (alpha, resources, slices_layout) = (self.alpha, &self.resources, &self.slices_layout);
         let exact = (alpha == AlphaMode::Exact) as u32 as f64;
         let constants = spec.constants(&[("EXACT_ALPHA", exact)]);
         let options = wgpu::PipelineCompilationOptions {
@@ -128,6 +128,7 @@ impl VolumeSlicer {
             operation: wgpu::BlendOperation::Add,
         };
         self.pipelines.prepare(device, spec, |modules| {
+            let layout = resources.pipeline_layout(device, "volume slices", slices_layout);
             let module = modules.get(device, "volume/slices.wgsl")?;
             Ok(
                 device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
@@ -242,9 +243,9 @@ impl Renderer<VolumeScene> for VolumeSlicer {
         scene: &VolumeScene,
         frame: &Frame,
     ) -> Result<()> {
-        frame.validate()?;
+        begin_prepare(device, frame, &mut self.prepared)?;
         scene.validate()?;
-        let key = PreparedFor::of(scene, frame);
+        let key = PreparedFor::for_slices(scene, frame);
         self.resources.upload(device, queue, scene)?;
         self.ensure_pipeline(device, key.spec)?;
         cached_texture_2d(
@@ -270,12 +271,13 @@ impl Renderer<VolumeScene> for VolumeSlicer {
         frame.validate()?;
         scene.validate()?;
         check_target(frame, target)?;
+        let wanted = PreparedFor::for_slices(scene, frame);
         check_volume_prepared(
             "VolumeSlicer",
             &self.prepared,
             &self.resources,
             scene,
-            frame,
+            wanted,
         )?;
         let spec = Specialization::of(frame);
         let params = VolumeResources::params(scene, frame, true, 0.0);
@@ -298,7 +300,11 @@ impl Renderer<VolumeScene> for VolumeSlicer {
                 resource: buffer.as_entire_binding(),
             }],
         });
-        let accumulation = &self.accumulation.as_ref().expect("allocated by prepare").1;
+        let accumulation = &self
+            .accumulation
+            .as_ref()
+            .expect("allocated by prepare")
+            .view;
         {
             // Cleared to the background: "over" blending then composites every channel over it
             // with that channel's own α.

@@ -19,9 +19,9 @@ struct SplatParams {
     fixed_offset: f32, // camera offset of every ray when use_mask == 0
     use_mask: u32,     // 1: per (sub)pixel views from the mask (single pass)
     epsilon: f32,      // ε of the ε-z compositing, eye-depth units
+    groups: u32,       // group images to composite (the array may hold a spare layer)
     _pad0: f32,
     _pad1: f32,
-    _pad2: f32,
 }
 
 // Gaussian kernel w = exp(−KERNEL_SHARPNESS · (ω/r)²), cut off at ω = r (w ≥ e⁻²).

@@ -19,6 +19,9 @@
 mod pipelines;
 mod scratch;
 
+#[cfg(test)]
+pub(crate) use scratch::EYE_TRIANGLE_BYTES;
+
 use crate::error::Result;
 use crate::frame::{Frame, FrameBinding};
 use crate::mesh::MeshBuffers;
@@ -27,7 +30,7 @@ use crate::render::pipeline::{begin_pass, cleared, draw_fullscreen};
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
 use crate::render::storage_fence::StorageFence;
-use crate::render::{check_prepared, check_target, Renderer};
+use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
 use crate::target::SpatialTarget;
 use pipelines::{Layouts, Pipelines};
 use scratch::Scratch;
@@ -130,8 +133,8 @@ impl MeshSinglePass {
                 "single-pass meshes with --visibility {}",
                 options.visibility.name()
             ),
-            "use --visibility exact (Visibility::Exact), which every adapter runs and which \
-             gives the same image",
+            "use --visibility exact (Visibility::Exact), which every adapter runs, exact per \
+             subpixel",
         )?;
         let layouts = Layouts::new(device);
         Ok(Self {
@@ -177,7 +180,7 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
         mesh: &MeshBuffers,
         frame: &Frame,
     ) -> Result<()> {
-        frame.validate()?;
+        begin_prepare(device, frame, &mut self.prepared)?;
         let key = PreparedFor::of(frame, mesh);
         let (layouts, options) = (&self.layouts, self.options);
         self.pipelines.prepare(device, key.spec, |modules| {

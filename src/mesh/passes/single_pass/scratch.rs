@@ -3,15 +3,17 @@
 
 use super::pipelines::{Layouts, TRIANGLE_ID_FORMAT};
 use super::Visibility;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::frame::Frame;
+use crate::gpu::check_size_2d;
 use crate::mesh::MeshBuffers;
 use crate::render::gpu_buffer::GpuBuffer;
 use crate::render::texture::{cached_texture_2d, Texture2d};
 use crate::render::view_layers::DEPTH_FORMAT;
 
-/// Bytes per triangle of `EyeTriangle` and of a covering rectangle (wgsl/mesh/shared/cover_data.wgsl).
-const EYE_TRIANGLE_BYTES: u64 = 48;
+/// Bytes per triangle of `EyeTriangle` (checked against naga by `src/shader.rs`'s tests) and
+/// of a covering rectangle (a `vec4<f32>`, wgsl/mesh/shared/cover_data.wgsl).
+pub(crate) const EYE_TRIANGLE_BYTES: u64 = 48;
 const RECT_BYTES: u64 = 16;
 /// Bytes per subpixel of the atomic nearest-hit keys.
 const KEY_BYTES: u64 = 8;
@@ -47,13 +49,6 @@ pub(super) struct Groups {
     pub visible: Option<wgpu::BindGroup>,
 }
 
-fn check(what: String, value: u64, limit: u64) -> Result<()> {
-    if value > limit {
-        return Err(Error::LimitExceeded { what, value, limit });
-    }
-    Ok(())
-}
-
 impl Scratch {
     /// Make sure every resource `visibility` needs exists for `frame` and `triangles`.
     pub fn prepare(
@@ -86,10 +81,9 @@ impl Scratch {
                 );
             }
             Visibility::Exact => {
-                let wide = [w as u64 * k as u64, h as u64];
-                let max = device.limits().max_texture_dimension_2d as u64;
-                check(format!("subpixel target width ({k} × {w})"), wide[0], max)?;
-                let wide = [wide[0] as u32, h];
+                // K·W subpixel columns: a wide frame can pass the size check and fail here.
+                let wide = [w.saturating_mul(k), h];
+                check_size_2d(device, wide[0], wide[1])?;
                 cached_texture_2d(
                     &mut self.depth,
                     device,
@@ -123,7 +117,7 @@ impl Scratch {
     }
 
     pub fn depth_view(&self) -> Option<&wgpu::TextureView> {
-        self.depth.as_ref().map(|(_, v)| v)
+        self.depth.as_ref().map(|t| &t.view)
     }
 
     pub fn triangle_ids_view(&self) -> &wgpu::TextureView {
@@ -131,7 +125,7 @@ impl Scratch {
             .triangle_ids
             .as_ref()
             .expect("prepared for exact visibility")
-            .1
+            .view
     }
 
     /// The buffers the cover pass writes and the later passes read.
