@@ -62,10 +62,12 @@ impl SplatScene {
             if k == 0 {
                 return Err(Error::invalid("groups", "0: need at least one group"));
             }
-            if k > limit {
+            // With the spare layer a square group image may need (array_layers_for).
+            let layers = crate::render::view_layers::array_layers_for([1, 1], k);
+            if layers > limit {
                 return Err(Error::LimitExceeded {
-                    what: "splat groups (texture array layers)".into(),
-                    value: k.into(),
+                    what: format!("splat groups ({k}: texture array layers, a spare included)"),
+                    value: layers.into(),
                     limit: limit.into(),
                 });
             }

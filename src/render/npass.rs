@@ -24,8 +24,8 @@ impl NPassHarness {
 
     /// Layers for `frame`'s size and views (reallocated only when those change).
     pub fn prepare(&mut self, device: &wgpu::Device, frame: &Frame) -> Result<()> {
-        let key = (frame.size, frame.camera.views);
-        if self.layers.as_ref().map(|l| l.key()) != Some(key) {
+        let fits = |l: &ViewLayers| l.size() == frame.size && l.layers() == frame.camera.views;
+        if !self.layers.as_ref().is_some_and(fits) {
             self.layers = None; // free before allocating the replacement
             self.layers = Some(ViewLayers::new(device, frame.size, frame.camera.views)?);
         }

@@ -124,12 +124,21 @@ impl ViewLayers {
         })
     }
 
-    /// (size, views) these layers were made for.
-    pub fn key(&self) -> ([u32; 2], u32) {
-        (
-            [self.texture.width(), self.texture.height()],
-            self.layer_views.len() as u32,
-        )
+    /// Size of each layer in texels.
+    pub fn size(&self) -> [u32; 2] {
+        [self.texture.width(), self.texture.height()]
+    }
+
+    /// Usable layers (views or groups); the texture may hold one spare (`array_layers_for`).
+    pub fn layers(&self) -> u32 {
+        self.layer_views.len() as u32
+    }
+
+    /// GPU bytes of the texture (spare layer included) and its depth buffer.
+    pub fn bytes(&self, bytes_per_texel: u64) -> u64 {
+        let [w, h] = self.size();
+        let allocated = self.texture.depth_or_array_layers() as u64;
+        w as u64 * h as u64 * (bytes_per_texel * allocated + 4)
     }
 }
 

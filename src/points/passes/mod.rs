@@ -154,11 +154,7 @@ impl PointSplatter {
             .npass
             .as_ref()
             .and_then(|n| n.view_layers())
-            .map_or(0, |l| {
-                let ([w, h], n) = l.key();
-                let allocated = crate::render::view_layers::array_layers_for([w, h], n);
-                w as u64 * h as u64 * (4 * allocated as u64 + 4)
-            });
+            .map_or(0, |l| l.bytes(4));
         scratch + images + layers
     }
 
