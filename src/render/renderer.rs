@@ -87,8 +87,9 @@ pub(crate) fn check_prepared<K: PartialEq + std::fmt::Debug>(
     })
 }
 
-/// The target must have the frame's size.
+/// The start of every `encode`: a valid frame, and a target of its size.
 pub(crate) fn check_target(frame: &Frame, target: &SpatialTarget) -> Result<()> {
+    frame.validate()?;
     if target.size() != frame.size {
         return Err(Error::invalid(
             "target",

@@ -105,7 +105,6 @@ impl MeshNPass {
         frame: &Frame,
         target: &SpatialTarget,
     ) -> Result<()> {
-        frame.validate()?;
         self.frame.write(device, frame);
         let camera = &frame.camera;
         let offsets: Vec<f32> = (0..camera.views).map(|i| camera.view_offset(i)).collect();
@@ -127,7 +126,6 @@ impl MeshNPass {
         frame: &Frame,
         target: &SpatialTarget,
     ) -> Result<()> {
-        frame.validate()?;
         self.frame.write(device, frame);
         let camera = &frame.camera;
         self.write_views(device, &[0.0], |vd| camera.view_uniform(vd));
@@ -235,7 +233,6 @@ impl Renderer<MeshBuffers> for MeshNPass {
         frame: &Frame,
         target: &SpatialTarget,
     ) -> Result<()> {
-        frame.validate()?;
         check_target(frame, target)?;
         check_prepared("MeshNPass", &self.prepared, &PreparedFor::of(frame))?;
         match self.method {

@@ -285,7 +285,6 @@ impl Renderer<SplatScene> for PointSplatter {
         frame: &Frame,
         target: &SpatialTarget,
     ) -> Result<()> {
-        frame.validate()?;
         check_target(frame, target)?;
         check_prepared("PointSplatter", &self.prepared, &self.needs(scene, frame))?;
         let passes = self.passes(frame, scene.groups());

@@ -172,7 +172,6 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         frame: &Frame,
         target: &SpatialTarget,
     ) -> Result<()> {
-        frame.validate()?;
         scene.validate()?;
         check_target(frame, target)?;
         let wanted = PreparedFor::of(scene, frame);

@@ -268,7 +268,6 @@ impl Renderer<VolumeScene> for VolumeSlicer {
         frame: &Frame,
         target: &SpatialTarget,
     ) -> Result<()> {
-        frame.validate()?;
         scene.validate()?;
         check_target(frame, target)?;
         let wanted = PreparedFor::for_slices(scene, frame);

@@ -200,7 +200,6 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
         frame: &Frame,
         target: &SpatialTarget,
     ) -> Result<()> {
-        frame.validate()?;
         check_target(frame, target)?;
         let key = PreparedFor::of(frame, mesh);
         check_prepared("MeshSinglePass", &self.prepared, &key)?;
