@@ -20,15 +20,8 @@ pub(crate) fn fullscreen_pipeline_with(
     format: wgpu::TextureFormat,
     constants: &[(&str, f64)],
 ) -> wgpu::RenderPipeline {
-    let options = wgpu::PipelineCompilationOptions {
-        constants,
-        zero_initialize_workgroup_memory: true,
-    };
-    let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-        label: Some(label),
-        bind_group_layouts: layouts,
-        immediate_size: 0,
-    });
+    let options = compilation(constants);
+    let layout = pipeline_layout(device, label, layouts);
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(label),
         layout: Some(&layout),
@@ -49,6 +42,30 @@ pub(crate) fn fullscreen_pipeline_with(
         }),
         multiview_mask: None,
         cache: None,
+    })
+}
+
+/// Compilation options with `constants` (the overrides of `wgsl/shared/multiview.wgsl` and
+/// the stage's own) and zeroed workgroup memory: every pipeline of the crate compiles so.
+pub(crate) fn compilation<'a>(
+    constants: &'a [(&'a str, f64)],
+) -> wgpu::PipelineCompilationOptions<'a> {
+    wgpu::PipelineCompilationOptions {
+        constants,
+        zero_initialize_workgroup_memory: true,
+    }
+}
+
+/// A pipeline layout of `groups` (no immediates).
+pub(crate) fn pipeline_layout(
+    device: &wgpu::Device,
+    label: &str,
+    groups: &[Option<&wgpu::BindGroupLayout>],
+) -> wgpu::PipelineLayout {
+    device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: Some(label),
+        bind_group_layouts: groups,
+        immediate_size: 0,
     })
 }
 

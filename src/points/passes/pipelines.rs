@@ -5,7 +5,9 @@ use bytemuck::{Pod, Zeroable};
 use crate::error::Result;
 use crate::frame::frame_bind_group_layout;
 use crate::render::pass_params::PassParams;
-use crate::render::pipeline::{fullscreen_pipeline_with, storage_entry};
+use crate::render::pipeline::{
+    compilation, fullscreen_pipeline_with, pipeline_layout, storage_entry,
+};
 use crate::render::pipeline_cache::ShaderModules;
 use crate::render::specialize::Specialization;
 use crate::render::view_layers::nearest_depth_test;
@@ -127,21 +129,13 @@ pub(super) fn build(
     let cover_constants = spec.constants(&[("COVER_PADDING_PX", padding)]);
     let constants = spec.constants(&[]);
     let composite_constants = spec.constants(&[("SUBPIXEL_DEPTH", subpixel as u32 as f64)]);
-    let compile = |constants| wgpu::PipelineCompilationOptions {
-        constants,
-        zero_initialize_workgroup_memory: true,
-    };
-    let pipeline_layout = |label, groups: &[Option<&wgpu::BindGroupLayout>]| {
-        device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some(label),
-            bind_group_layouts: groups,
-            immediate_size: 0,
-        })
-    };
+
+    let layout_of =
+        |label, groups: &[Option<&wgpu::BindGroupLayout>]| pipeline_layout(device, label, groups);
     let cover_module = modules.get(device, "points/cover.wgsl")?;
     let cover = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
         label: Some("splat cover"),
-        layout: Some(&pipeline_layout(
+        layout: Some(&layout_of(
             "splat cover",
             &[
                 Some(&layouts.frame),
@@ -151,7 +145,7 @@ pub(super) fn build(
         )),
         module: &cover_module,
         entry_point: Some("cs_main"),
-        compilation_options: compile(&cover_constants),
+        compilation_options: compilation(&cover_constants),
         cache: None,
     });
     let (stage, format) = if subpixel {
@@ -162,7 +156,7 @@ pub(super) fn build(
     let module = modules.get(device, stage)?;
     let geometry = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(stage),
-        layout: Some(&pipeline_layout(
+        layout: Some(&layout_of(
             stage,
             &[
                 Some(&layouts.frame),
@@ -173,7 +167,7 @@ pub(super) fn build(
         vertex: wgpu::VertexState {
             module: &module,
             entry_point: Some("vs_splat"),
-            compilation_options: compile(&constants),
+            compilation_options: compilation(&constants),
             buffers: &[],
         },
         primitive: wgpu::PrimitiveState::default(),
@@ -182,7 +176,7 @@ pub(super) fn build(
         fragment: Some(wgpu::FragmentState {
             module: &module,
             entry_point: Some("fs_main"),
-            compilation_options: compile(&constants),
+            compilation_options: compilation(&constants),
             targets: &[Some(format.into())],
         }),
         multiview_mask: None,

@@ -6,6 +6,7 @@ use super::resources::{VolumeParams, VolumeResources};
 use crate::error::Result;
 use crate::frame::Frame;
 use crate::render::npass::NPassHarness;
+use crate::render::pipeline::compilation;
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
 use crate::render::Method;
@@ -71,10 +72,7 @@ impl VolumeRaycaster {
                     layout: Some(&layout),
                     module: &module,
                     entry_point: Some("cs_main"),
-                    compilation_options: wgpu::PipelineCompilationOptions {
-                        constants: &constants,
-                        zero_initialize_workgroup_memory: true,
-                    },
+                    compilation_options: compilation(&constants),
                     cache: None,
                 }),
             )

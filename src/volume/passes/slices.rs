@@ -10,7 +10,9 @@ use super::raycast::{check_volume_prepared, PreparedFor};
 use super::resources::VolumeResources;
 use crate::error::Result;
 use crate::frame::Frame;
-use crate::render::pipeline::{begin_pass, cleared, draw_fullscreen, fullscreen_pipeline};
+use crate::render::pipeline::{
+    begin_pass, cleared, compilation, draw_fullscreen, fullscreen_pipeline,
+};
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
 use crate::render::texture::{cached_texture_2d, Texture2d};
@@ -118,10 +120,7 @@ impl VolumeSlicer {
         let (alpha, resources, slices_layout) = (self.alpha, &self.resources, &self.slices_layout);
         let exact = (alpha == AlphaMode::Exact) as u32 as f64;
         let constants = spec.constants(&[("EXACT_ALPHA", exact)]);
-        let options = wgpu::PipelineCompilationOptions {
-            constants: &constants,
-            zero_initialize_workgroup_memory: true,
-        };
+        let options = compilation(&constants);
         let over = wgpu::BlendComponent {
             src_factor: wgpu::BlendFactor::One,
             dst_factor: wgpu::BlendFactor::OneMinusSrc1,

@@ -3,7 +3,9 @@
 use super::{CoverBounds, MeshSinglePassOptions, Visibility};
 use crate::error::Result;
 use crate::frame::frame_bind_group_layout;
-use crate::render::pipeline::{fullscreen_pipeline_with, storage_entry};
+use crate::render::pipeline::{
+    compilation, fullscreen_pipeline_with, pipeline_layout, storage_entry,
+};
 use crate::render::pipeline_cache::ShaderModules;
 use crate::render::specialize::Specialization;
 use crate::render::view_layers::nearest_depth_test;
@@ -143,17 +145,9 @@ pub(super) fn build(
     let cover_constants = spec.constants(&[("PAPER_BOUNDS", paper), ("COVER_PADDING_PX", padding)]);
     let compute_constants = spec.constants(&[("PAPER_BOUNDS", paper)]);
     let constants = spec.constants(&[]);
-    let compile = |constants| wgpu::PipelineCompilationOptions {
-        constants,
-        zero_initialize_workgroup_memory: true,
-    };
-    let pipeline_layout = |label, groups: &[Option<&wgpu::BindGroupLayout>]| {
-        device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some(label),
-            bind_group_layouts: groups,
-            immediate_size: 0,
-        })
-    };
+
+    let layout_of =
+        |label, groups: &[Option<&wgpu::BindGroupLayout>]| pipeline_layout(device, label, groups);
 
     let compute_stage = if options.visibility == Visibility::Compute {
         "mesh/single_pass_compute.wgsl"
@@ -165,7 +159,7 @@ pub(super) fn build(
     let compute_keys = (options.visibility == Visibility::Compute).then_some(&layouts.keys_write);
     let compute = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
         label: Some(compute_stage),
-        layout: Some(&pipeline_layout(
+        layout: Some(&layout_of(
             compute_stage,
             &[
                 Some(&layouts.frame),
@@ -175,7 +169,7 @@ pub(super) fn build(
         )),
         module: &modules.get(device, compute_stage)?,
         entry_point: Some("cs_main"),
-        compilation_options: compile(if options.visibility == Visibility::Compute {
+        compilation_options: compilation(if options.visibility == Visibility::Compute {
             &compute_constants
         } else {
             &cover_constants
@@ -190,7 +184,7 @@ pub(super) fn build(
             Some(
                 device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
                     label: Some(stage),
-                    layout: Some(&pipeline_layout(
+                    layout: Some(&layout_of(
                         stage,
                         &[Some(&layouts.frame), Some(&layouts.mesh), keys_write],
                     )),
@@ -202,7 +196,7 @@ pub(super) fn build(
                         } else {
                             "vs_cover"
                         }),
-                        compilation_options: compile(&constants),
+                        compilation_options: compilation(&constants),
                         buffers: &[],
                     },
                     primitive: wgpu::PrimitiveState::default(),
@@ -211,7 +205,7 @@ pub(super) fn build(
                     fragment: Some(wgpu::FragmentState {
                         module: &module,
                         entry_point: Some("fs_main"),
-                        compilation_options: compile(&constants),
+                        compilation_options: compilation(&constants),
                         targets: &[Some(target)],
                     }),
                     multiview_mask: None,
