@@ -36,6 +36,16 @@ pub enum Error {
         /// The adapter's limit.
         limit: u64,
     },
+    /// An input would need more CPU memory than the budget (`crate::budget`).
+    #[error("{what} needs {bytes} bytes, over the memory budget of {budget} bytes (raise it with --max-memory, or autostereo::budget::set_max_memory)")]
+    MemoryBudget {
+        /// What would be allocated, in words.
+        what: String,
+        /// Its cost.
+        bytes: u64,
+        /// The budget.
+        budget: u64,
+    },
     /// Device creation failed.
     #[error("could not create a device on '{adapter}': {source}")]
     RequestDevice {

@@ -78,18 +78,24 @@ impl RgbImage {
     }
 
     /// Write a PNG (RGB8).
+    /// Encoded in memory first: the file is created only once the PNG exists, so a failure
+    /// leaves no empty or partial file behind.
     pub fn save_png(&self, path: &Path) -> Result<()> {
-        image::save_buffer(
-            path,
-            &self.data,
-            self.width,
-            self.height,
-            image::ExtendedColorType::Rgb8,
-        )
-        .map_err(|e| Error::Image {
+        use image::ImageEncoder;
+        let fail = |reason: String| Error::Image {
             path: path.to_path_buf(),
-            reason: e.to_string(),
-        })
+            reason,
+        };
+        let mut png = Vec::new();
+        image::codecs::png::PngEncoder::new(&mut png)
+            .write_image(
+                &self.data,
+                self.width,
+                self.height,
+                image::ExtendedColorType::Rgb8,
+            )
+            .map_err(|e| fail(e.to_string()))?;
+        std::fs::write(path, png).map_err(|e| Error::io(path, e))
     }
 
     /// Read any PNG as RGB8.

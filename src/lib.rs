@@ -13,9 +13,11 @@
 
 #![warn(missing_docs)]
 
+pub mod budget;
 pub mod camera;
 pub mod display;
 pub mod error;
+pub mod file;
 pub mod frame;
 pub mod gpu;
 pub mod image_io;

@@ -50,7 +50,8 @@ impl Calibration {
     /// Read a `visual.json`. Each field may be `{"value": x}` (as Looking Glass writes them) or a
     /// plain number. Missing or non-numeric fields are errors naming the field.
     pub fn load(path: &Path) -> Result<Self> {
-        let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+        // BOM, CRLF and non-UTF-8 bytes as every text input (`crate::file`).
+        let text = crate::file::read_text(path)?;
         Self::from_json(&text, path)
     }
 

@@ -1,5 +1,13 @@
-//! Wavefront OBJ loading through tobj.
+//! Wavefront OBJ loading through tobj; materials (`mtllib`) read here, never by tobj.
+//!
+//! tobj's MTL parser panics on a colour line with fewer than three numbers, and it opens
+//! whatever `mtllib` names (a FIFO, `/dev/zero`). So the OBJ text is read by
+//! `crate::file::read_text` (a regular file, bounded; BOM, CR and CRLF line ends handled) and
+//! handed to tobj from memory, and the one material property used, the diffuse colour `Kd`,
+//! comes from [`load_mtl`].
 
+use std::cell::RefCell;
+use std::collections::HashMap;
 use std::path::Path;
 
 use glam::Vec3;
@@ -12,21 +20,33 @@ pub(super) fn load(path: &Path) -> Result<Mesh> {
         path: path.to_path_buf(),
         reason,
     };
-    if !path.is_file() {
+    if !path.exists() {
         return Err(fail("no such file".into()));
     }
+    let text = crate::file::read_text(path)?;
     let options = tobj::LoadOptions {
         triangulate: true,
         single_index: true,
         ignore_points: true,
         ignore_lines: true,
     };
-    let (models, materials) =
-        tobj::load_obj(path, &options).map_err(|e| fail(format!("malformed OBJ: {e}")))?;
-    let materials = materials.unwrap_or_else(|e| {
+    let dir = path.parent().unwrap_or(Path::new("."));
+    let material_problems = RefCell::new(Vec::new());
+    let (models, materials) = tobj::load_obj_buf(&mut text.as_bytes(), &options, |mtl| {
+        match load_mtl(&dir.join(mtl)) {
+            Ok((materials, names)) => Ok((materials, names.into_iter().collect())),
+            Err(e) => {
+                material_problems.borrow_mut().push(e.to_string());
+                Err(tobj::LoadError::MaterialParseError)
+            }
+        }
+    })
+    .map_err(|e| fail(format!("malformed OBJ: {e}")))?;
+    let materials = materials.unwrap_or_else(|_| {
         log::warn!(
-            "{}: materials not loaded ({e}); using the default colour",
-            path.display()
+            "{}: materials not loaded ({}); using the default colour",
+            path.display(),
+            material_problems.borrow().join("; ")
         );
         Vec::new()
     });
@@ -84,4 +104,49 @@ pub(super) fn load(path: &Path) -> Result<Mesh> {
     }
     mesh.validate().map_err(|e| fail(e.to_string()))?;
     Ok(mesh)
+}
+
+/// The materials of an MTL file, with only what the renderers use: name and diffuse colour.
+fn load_mtl(path: &Path) -> Result<(Vec<tobj::Material>, HashMap<String, usize>)> {
+    let text = crate::file::read_text(path)?;
+    let fail = |line: usize, reason: String| Error::Mesh {
+        path: path.to_path_buf(),
+        reason: format!("MTL line {line}: {reason}"),
+    };
+    let mut materials: Vec<tobj::Material> = Vec::new();
+    let mut names = HashMap::new();
+    for (i, line) in text.lines().enumerate() {
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("newmtl") => {
+                let name = words.collect::<Vec<_>>().join(" ");
+                if name.is_empty() {
+                    return Err(fail(i + 1, "newmtl without a name".into()));
+                }
+                names.insert(name.clone(), materials.len());
+                materials.push(tobj::Material {
+                    name,
+                    ..Default::default()
+                });
+            }
+            Some("Kd") => {
+                let values: Vec<f32> = words.filter_map(|w| w.parse().ok()).collect();
+                let rgb = match values[..] {
+                    [r, g, b] if values.iter().all(|v| v.is_finite()) => [r, g, b],
+                    _ => {
+                        return Err(fail(
+                            i + 1,
+                            format!("Kd needs three finite numbers: {line}"),
+                        ))
+                    }
+                };
+                match materials.last_mut() {
+                    Some(material) => material.diffuse = Some(rgb),
+                    None => return Err(fail(i + 1, "Kd before any newmtl".into())),
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok((materials, names))
 }

@@ -208,7 +208,7 @@ pub const MAX_POINTS: usize = (u32::MAX / 6) as usize;
 
 /// The vertices of a Wavefront OBJ (`v x y z [r g b]`), nothing else.
 fn obj_vertices(path: &Path) -> Result<PointCloud> {
-    let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+    let text = crate::file::read_text(path)?;
     let fail = |line: usize, reason: &str| Error::Points {
         path: path.into(),
         reason: format!("line {}: {reason}", line + 1),

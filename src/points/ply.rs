@@ -117,7 +117,7 @@ struct Header {
 
 /// Load the `vertex` element of a PLY file.
 pub fn load(path: &Path) -> Result<PointCloud> {
-    let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+    let bytes = crate::file::read_bounded(path, crate::file::MAX_TEXT_BYTES, "the PLY limit")?;
     parse(&bytes).map_err(|reason| Error::Points {
         path: path.into(),
         reason,

@@ -34,7 +34,13 @@ pub struct Volume {
     pub data: Vec<f32>,
 }
 
-/// Check dimensions before anything is allocated: each ≥ 1, product ≤ [`MAX_VOXELS`].
+/// Peak CPU bytes per voxel from file to GPU upload: the decoded samples (f32), their
+/// Sobel gradients (4 × f32), the half-float texels (4 × f16) and up to 4 bytes of file data.
+pub const PEAK_BYTES_PER_VOXEL: u64 = 4 + 16 + 8 + 4;
+
+/// Check dimensions before anything is allocated: each ≥ 1, product ≤ [`MAX_VOXELS`], and the
+/// volume's peak memory ([`PEAK_BYTES_PER_VOXEL`] per voxel) within the budget
+/// (`crate::budget`).
 pub fn check_dims(dims: [u64; 3]) -> Result<u64> {
     if dims.contains(&0) {
         return Err(Error::invalid(
@@ -52,6 +58,12 @@ pub fn check_dims(dims: [u64; 3]) -> Result<u64> {
                 format!("{dims:?}: more than {MAX_VOXELS} voxels"),
             )
         })?;
+    crate::budget::check(
+        || {
+            format!("a {dims:?} volume ({count} voxels × {PEAK_BYTES_PER_VOXEL} bytes from file to GPU)")
+        },
+        count * PEAK_BYTES_PER_VOXEL,
+    )?;
     Ok(count)
 }
 

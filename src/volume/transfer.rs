@@ -102,7 +102,7 @@ impl TransferFunction {
     /// Read a text file: one control point per line, `scalar r g b a` (all in 0..1); blank
     /// lines and `#` comments ignored.
     pub fn load(path: &Path) -> Result<Self> {
-        let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+        let text = crate::file::read_text(path)?;
         Self::parse(&text)
             .map_err(|e| Error::invalid("transfer function", format!("{}: {e}", path.display())))
     }

@@ -88,8 +88,15 @@ pub fn gpu() -> Result<autostereo::gpu::GpuContext> {
     Ok(ctx)
 }
 
-/// Fail unless `path`'s parent directory exists (so errors come before minutes of rendering).
+/// Fail unless `path` is a `.png` in an existing directory (so errors come before minutes of
+/// rendering, and no empty file is left behind).
 pub fn check_output(path: &std::path::Path) -> Result<()> {
+    let png = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("png"));
+    if !png {
+        bail!("{}: only PNG is written (name it .png)", path.display());
+    }
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         if !dir.is_dir() {
             bail!("output directory {} does not exist", dir.display());
@@ -177,6 +184,10 @@ pub struct RenderArgs {
     /// Print one JSON object with the run's parameters and timing on stdout.
     #[arg(long)]
     pub json: bool,
+    /// CPU memory budget for loading (bytes, or with K/M/G/T; default 8G): inputs that would
+    /// need more are refused before anything is allocated.
+    #[arg(long, value_parser = autostereo::budget::parse_bytes)]
+    pub max_memory: Option<u64>,
 }
 
 impl RenderArgs {
@@ -184,6 +195,9 @@ impl RenderArgs {
     pub fn check(&self) -> Result<()> {
         if let Some(out) = &self.out {
             check_output(out)?;
+        }
+        if let Some(bytes) = self.max_memory {
+            autostereo::budget::set_max_memory(bytes);
         }
         Ok(())
     }

@@ -93,7 +93,7 @@ pub struct VolumeArgs {
     #[arg(long)]
     no_skip_empty: bool,
     /// Average blocks of F³ voxels first (for volumes over the adapter's 3D texture limit).
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=256))]
     downsample: u32,
     /// Also write every view as DIR/view_NN.png.
     #[arg(long)]
@@ -171,8 +171,12 @@ fn load(args: &VolumeArgs) -> Result<(Volume, String)> {
 
 fn transfer(args: &VolumeArgs, default: &str) -> Result<TransferFunction> {
     let name = args.tf.as_deref().unwrap_or(default);
-    if Path::new(name).is_file() {
-        Ok(TransferFunction::load(Path::new(name))?)
+    let path = Path::new(name);
+    // A name with a path separator or an extension is a file, even when it is missing:
+    // "no such file" is the error then, not "unknown preset".
+    let looks_like_file = name.contains(std::path::MAIN_SEPARATOR) || path.extension().is_some();
+    if path.exists() || looks_like_file {
+        Ok(TransferFunction::load(path).with_context(|| format!("--tf {name}"))?)
     } else {
         Ok(TransferFunction::preset(name)?)
     }

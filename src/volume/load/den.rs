@@ -15,6 +15,7 @@ const HEADER_BYTES: usize = 29 * 2 + 4;
 
 /// Load a `.den` file (unit spacing: the format has none).
 pub fn load_den(path: &Path) -> Result<Volume> {
+    crate::file::check_regular(path)?;
     let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
     if bytes.len() < HEADER_BYTES {
         return Err(format_error(
@@ -58,7 +59,7 @@ pub fn load_den(path: &Path) -> Result<Volume> {
         i32::from_le_bytes(len4)
     };
     let dims = map_len.map(|l| l as u64);
-    let count = check_dims(dims)?;
+    let count = check_dims(dims).map_err(|e| format_error(path, e.to_string()))?;
     if map_length as i64 != count as i64 {
         return Err(format_error(
             path,

@@ -155,12 +155,20 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
 
 /// Load a `.nrrd` (attached data) or `.nhdr` (detached, `data file:` relative to it).
 pub fn load_nrrd(path: &Path) -> Result<Volume> {
+    crate::file::check_regular(path)?;
     let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
-    let head_len = bytes
-        .windows(2)
-        .take(MAX_HEADER_BYTES)
-        .position(|w| w == b"\n\n")
-        .map(|p| p + 2);
+    // The header ends at the first blank line, with LF or CRLF line ends.
+    let end = |mark: &[u8]| {
+        bytes
+            .windows(mark.len())
+            .take(MAX_HEADER_BYTES)
+            .position(|w| w == mark)
+            .map(|p| p + mark.len())
+    };
+    let head_len = match (end(b"\n\n"), end(b"\r\n\r\n")) {
+        (Some(a), Some(b)) => Some(a.min(b)),
+        (a, b) => a.or(b),
+    };
     let header_text = match head_len {
         Some(n) => String::from_utf8_lossy(&bytes[..n]).into_owned(),
         // A detached header may end without a blank line.
@@ -173,25 +181,45 @@ pub fn load_nrrd(path: &Path) -> Result<Volume> {
         }
     };
     let header = parse_header(path, &header_text)?;
-    let expected = data_bytes(header.dims.map(u64::from), header.kind)?;
-    let payload: Vec<u8> = match &header.data_file {
+    let expected = data_bytes(header.dims.map(u64::from), header.kind)
+        .map_err(|e| format_error(path, e.to_string()))?;
+    // Never read or inflate past what the header announces (+1 byte to detect excess).
+    let wanted = expected.saturating_add(header.byte_skip);
+    let mut payload = Vec::new();
+    let read = match &header.data_file {
         Some(name) => {
             let data_path = path.parent().unwrap_or(Path::new(".")).join(name);
-            std::fs::read(&data_path).map_err(|e| Error::io(&data_path, e))?
+            let named = |e: Error| format_error(path, format!("`data file: {name}`: {e}"));
+            crate::file::check_regular(&data_path).map_err(named)?;
+            let file =
+                std::fs::File::open(&data_path).map_err(|e| named(Error::io(&data_path, e)))?;
+            let reader = std::io::BufReader::new(file);
+            if header.gzip {
+                flate2::read::GzDecoder::new(reader)
+                    .take(wanted.saturating_add(1))
+                    .read_to_end(&mut payload)
+            } else {
+                reader
+                    .take(wanted.saturating_add(1))
+                    .read_to_end(&mut payload)
+            }
         }
-        None => bytes[head_len.unwrap_or(bytes.len())..].to_vec(),
+        None => {
+            let attached = &bytes[head_len.unwrap_or(bytes.len())..];
+            if header.gzip {
+                flate2::read::GzDecoder::new(attached)
+                    .take(wanted.saturating_add(1))
+                    .read_to_end(&mut payload)
+            } else {
+                payload = attached.to_vec();
+                Ok(payload.len())
+            }
+        }
     };
-    let payload = if header.gzip {
-        let mut out = Vec::new();
-        // Never inflate past what the header announces (+1 byte to detect excess).
-        flate2::read::GzDecoder::new(&payload[..])
-            .take(expected.saturating_add(header.byte_skip).saturating_add(1))
-            .read_to_end(&mut out)
-            .map_err(|e| format_error(path, format!("gzip data: {e}")))?;
-        out
-    } else {
-        payload
-    };
+    read.map_err(|e| {
+        let what = if header.gzip { "gzip data" } else { "data" };
+        format_error(path, format!("{what}: {e}"))
+    })?;
     let available = (payload.len() as u64).saturating_sub(header.byte_skip);
     if available < expected {
         return Err(format_error(

@@ -23,7 +23,8 @@ pub struct RawSpec {
 
 /// Load a raw volume; the file must hold exactly `header_bytes` + the samples.
 pub fn load_raw(path: &Path, spec: &RawSpec) -> Result<Volume> {
-    let needed = data_bytes(spec.dims.map(u64::from), spec.kind)?
+    let needed = data_bytes(spec.dims.map(u64::from), spec.kind)
+        .map_err(|e| format_error(path, e.to_string()))?
         .checked_add(spec.header_bytes)
         .ok_or_else(|| {
             format_error(
@@ -34,9 +35,7 @@ pub fn load_raw(path: &Path, spec: &RawSpec) -> Result<Volume> {
                 ),
             )
         })?;
-    let actual = std::fs::metadata(path)
-        .map_err(|e| Error::io(path, e))?
-        .len();
+    let actual = crate::file::check_regular(path)?.len();
     if actual != needed {
         return Err(format_error(
             path,

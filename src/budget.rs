@@ -1,0 +1,73 @@
+//! The memory budget: what a loader or renderer may allocate on the CPU, checked from a file's
+//! header and the flags before anything is allocated.
+//!
+//! One process-wide figure, 8 GiB by default, raised or lowered with [`set_max_memory`] (the
+//! CLI's `--max-memory`). Inputs whose cost is over it are refused with
+//! [`crate::Error::MemoryBudget`], which names the figure, the budget and how to raise it; so a
+//! 1 MB file that claims a 1024³ volume is an error, not an abort on a 32 GiB allocation.
+
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use crate::error::{Error, Result};
+
+/// The default budget: 8 GiB.
+pub const DEFAULT_MAX_MEMORY: u64 = 8 << 30;
+
+static MAX_MEMORY: AtomicU64 = AtomicU64::new(DEFAULT_MAX_MEMORY);
+
+/// The budget now, in bytes.
+pub fn max_memory() -> u64 {
+    MAX_MEMORY.load(Ordering::Relaxed)
+}
+
+/// Set the budget for this process.
+pub fn set_max_memory(bytes: u64) {
+    MAX_MEMORY.store(bytes, Ordering::Relaxed);
+}
+
+/// `Err(MemoryBudget)` when `bytes` (the cost of `what`) exceed the budget.
+pub fn check(what: impl FnOnce() -> String, bytes: u64) -> Result<()> {
+    let budget = max_memory();
+    if bytes > budget {
+        return Err(Error::MemoryBudget {
+            what: what(),
+            bytes,
+            budget,
+        });
+    }
+    Ok(())
+}
+
+/// `2G`, `512M`, `64K` or plain bytes (binary units), as `--max-memory` takes them.
+pub fn parse_bytes(text: &str) -> std::result::Result<u64, String> {
+    let t = text.trim();
+    let (digits, shift) = match t.char_indices().last() {
+        Some((i, 'K' | 'k')) => (&t[..i], 10),
+        Some((i, 'M' | 'm')) => (&t[..i], 20),
+        Some((i, 'G' | 'g')) => (&t[..i], 30),
+        Some((i, 'T' | 't')) => (&t[..i], 40),
+        _ => (t, 0),
+    };
+    let n: u64 = digits
+        .trim()
+        .parse()
+        .map_err(|_| format!("'{text}' is not a size (bytes, or with K, M, G, T)"))?;
+    n.checked_mul(1u64 << shift)
+        .filter(|&b| b > 0)
+        .ok_or_else(|| format!("'{text}': must be between 1 byte and 16 EiB"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::parse_bytes;
+
+    #[test]
+    fn sizes_parse() {
+        assert_eq!(parse_bytes("4096"), Ok(4096));
+        assert_eq!(parse_bytes("2G"), Ok(2 << 30));
+        assert_eq!(parse_bytes("512m"), Ok(512 << 20));
+        assert!(parse_bytes("0").is_err());
+        assert!(parse_bytes("x").is_err());
+        assert!(parse_bytes("99999999999T").is_err());
+    }
+}
