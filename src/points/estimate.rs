@@ -80,10 +80,14 @@ fn adaptive_grid(points: &[Vec3]) -> Grid {
 }
 
 /// The `NEIGHBOURS` nearest points to point i as (squared distance, index), nearest first.
+/// A cell holding more than [`crate::points::groups::MAX_CANDIDATES`] points (a dense cluster,
+/// identical points) is sampled, not scanned whole: the neighbours are then the nearest among
+/// those seen, and the work per point stays bounded.
 fn nearest(grid: &Grid, points: &[Vec3], i: usize, near: &mut Vec<(f32, u32)>) {
     near.clear();
     let p = points[i];
     let home = grid.cell_of(p);
+    let budget = crate::points::groups::MAX_CANDIDATES;
     let consider = |near: &mut Vec<(f32, u32)>, j: u32| {
         if j as usize == i {
             return;
@@ -104,9 +108,14 @@ fn nearest(grid: &Grid, points: &[Vec3], i: usize, near: &mut Vec<(f32, u32)>) {
             (0..points.len() as u32).for_each(|j| consider(near, j));
             return;
         }
+        let mut seen = 0usize;
         for cell in grid.shell(home, shell) {
-            for &j in grid.points_in(cell) {
-                consider(near, j);
+            let here = grid.points_in(cell);
+            let take = here.len().min(budget.saturating_sub(seen));
+            here[..take].iter().for_each(|&j| consider(near, j));
+            seen += take;
+            if seen >= budget {
+                return;
             }
         }
         // Points in later shells are at least shell · cell away.

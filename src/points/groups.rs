@@ -25,8 +25,14 @@ pub struct Grouping {
     pub group_of: Vec<u32>,
     /// Number of groups K.
     pub groups: u32,
-    /// Overlapping pairs that share a group (0 for [`GroupCount::Auto`] unless capped).
+    /// Overlapping pairs that share a group (0 for [`GroupCount::Auto`] unless capped). Exact
+    /// unless `truncated` > 0; then a lower bound.
     pub conflicts: u64,
+    /// Splats whose neighbour scan stopped at [`MAX_CANDIDATES`] (dense clusters: a splat with
+    /// thousands of overlapping neighbours); their group is the best among those seen.
+    pub truncated: u32,
+    /// Candidate pairs examined: the work done, at most [`MAX_CANDIDATES`] per splat.
+    pub checks: u64,
 }
 
 impl Grouping {
@@ -40,73 +46,131 @@ impl Grouping {
     }
 }
 
-/// Splats larger than this × the median radius are placed last, by brute force, so that one huge
-/// splat does not turn the grid into one cell.
+/// Splats larger than this × the typical radius are placed last, on a grid of their own, so
+/// that one huge splat does not turn the grid into one cell.
 const LARGE_PER_MEDIAN: f32 = 8.0;
+
+/// Most candidates a splat's placement examines. Ordinary clouds have a few dozen overlapping
+/// neighbours; a dense cluster (identical points, a far outlier cluster collapsed by f32
+/// rounding) can have all n, which made grouping quadratic. Past this bound the splat takes the
+/// best group among the candidates seen: bounded work, at the price of possible (counted as
+/// `truncated`) overlaps inside a group, in clouds that have no distinct surface there anyway.
+pub const MAX_CANDIDATES: usize = 4096;
 
 /// Greedy colouring of `splats`: each splat takes the first group none of its overlapping,
 /// already placed neighbours is in. `Fixed(k)` must be ≥ 1 and is bounded by the caller.
+/// Work is at most [`MAX_CANDIDATES`] candidates per splat, plus sorting into grids.
 pub fn assign(splats: &Splats, count: GroupCount) -> Grouping {
     let n = splats.positions.len();
     let limit = match count {
         GroupCount::Auto => MAX_AUTO_GROUPS,
         GroupCount::Fixed(k) => k.max(1),
     };
-    let cap = LARGE_PER_MEDIAN * splats.median_radius();
+    // Zero-radius splats overlap nothing: they neither set the typical radius nor the reach.
+    let cap = LARGE_PER_MEDIAN * typical_radius(&splats.radii);
     let (normal, large): (Vec<usize>, Vec<usize>) = (0..n).partition(|&i| splats.radii[i] <= cap);
     // Normal splats find every normal neighbour within r_i + r_j ≤ r_i + reach on the grid.
     let reach = normal.iter().fold(0.0f32, |m, &i| m.max(splats.radii[i]));
-    let grid = Grid::new(&splats.positions, 2.0 * reach);
     const UNASSIGNED: u32 = u32::MAX;
-    let mut group_of = vec![UNASSIGNED; n];
-    let mut clashes = vec![0u32; limit as usize];
-    let mut groups = 0u32;
-    let mut conflicts = 0u64;
-    let mut place =
-        |i: usize, candidates: &mut dyn Iterator<Item = u32>, group_of: &mut Vec<u32>| {
+    let mut state = Placement {
+        splats,
+        group_of: vec![UNASSIGNED; n],
+        clashes: vec![0u32; limit as usize],
+        groups: 0,
+        conflicts: 0,
+        truncated: 0,
+        checks: 0,
+    };
+    if reach > 0.0 {
+        let grid = Grid::new(&splats.positions, 2.0 * reach);
+        for &i in &normal {
             let (p, r) = (splats.positions[i], splats.radii[i]);
-            clashes.iter_mut().for_each(|c| *c = 0);
-            for j in candidates {
-                let g = group_of[j as usize];
-                if g != UNASSIGNED
-                    && p.distance(splats.positions[j as usize]) < r + splats.radii[j as usize]
-                {
-                    clashes[g as usize] += 1;
-                }
-            }
-            let group = match clashes.iter().position(|&c| c == 0) {
-                Some(free) => free as u32,
-                None => {
-                    let (least, c) = clashes
-                        .iter()
-                        .enumerate()
-                        .min_by_key(|(_, c)| **c)
-                        .expect("at least one group");
-                    conflicts += *c as u64;
-                    least as u32
-                }
-            };
-            group_of[i] = group;
-            groups = groups.max(group + 1);
-        };
-    for &i in &normal {
-        place(
-            i,
-            &mut grid.near(splats.positions[i], splats.radii[i] + reach),
-            &mut group_of,
-        );
+            state.place(i, grid.near(p, r + reach));
+        }
+    } else {
+        // Every normal splat has radius 0: no overlaps among them.
+        normal.iter().for_each(|&i| state.group_of[i] = 0);
+        state.groups = state.groups.max(1);
     }
-    // Large splats (outliers, usually few) check every placed splat.
-    for &i in &large {
-        place(i, &mut (0..n as u32), &mut group_of);
+    // Large splats (outliers, usually few) on a grid sized for the largest.
+    if !large.is_empty() {
+        let largest = large.iter().fold(0.0f32, |m, &i| m.max(splats.radii[i]));
+        let grid = Grid::new(&splats.positions, 2.0 * largest);
+        for &i in &large {
+            let (p, r) = (splats.positions[i], splats.radii[i]);
+            state.place(i, grid.near(p, r + largest));
+        }
     }
+    let mut groups = state.groups;
     if let GroupCount::Fixed(k) = count {
         groups = k.max(1);
     }
     Grouping {
-        group_of,
+        group_of: state.group_of,
         groups: groups.max(1),
-        conflicts,
+        conflicts: state.conflicts,
+        truncated: state.truncated,
+        checks: state.checks,
+    }
+}
+
+/// The median of the positive radii (0 when none is positive).
+fn typical_radius(radii: &[f32]) -> f32 {
+    let mut positive: Vec<f32> = radii.iter().copied().filter(|&r| r > 0.0).collect();
+    if positive.is_empty() {
+        return 0.0;
+    }
+    let mid = positive.len() / 2;
+    *positive.select_nth_unstable_by(mid, f32::total_cmp).1
+}
+
+/// The colouring's state while splats are placed one by one.
+struct Placement<'a> {
+    splats: &'a Splats,
+    group_of: Vec<u32>,
+    /// Per group: placed, overlapping candidates of the splat being placed.
+    clashes: Vec<u32>,
+    groups: u32,
+    conflicts: u64,
+    truncated: u32,
+    checks: u64,
+}
+
+impl Placement<'_> {
+    /// Put splat `i` in the first group none of its placed, overlapping `candidates` is in (or
+    /// the least clashing when all are), looking at no more than [`MAX_CANDIDATES`].
+    fn place(&mut self, i: usize, candidates: impl Iterator<Item = u32>) {
+        let s = self.splats;
+        let (p, r) = (s.positions[i], s.radii[i]);
+        self.clashes.iter_mut().for_each(|c| *c = 0);
+        let mut seen = 0usize;
+        for j in candidates {
+            if seen == MAX_CANDIDATES {
+                self.truncated += 1;
+                break;
+            }
+            seen += 1;
+            let g = self.group_of[j as usize];
+            if g != u32::MAX && p.distance(s.positions[j as usize]) < r + s.radii[j as usize] {
+                self.clashes[g as usize] += 1;
+            }
+        }
+        self.checks += seen as u64;
+        let group = match self.clashes.iter().position(|&c| c == 0) {
+            Some(free) => free as u32,
+            None => {
+                let (least, c) = self
+                    .clashes
+                    .iter()
+                    .enumerate()
+                    .min_by_key(|(_, c)| **c)
+                    .expect("at least one group");
+                self.conflicts += *c as u64;
+                least as u32
+            }
+        };
+        self.group_of[i] = group;
+        self.groups = self.groups.max(group + 1);
     }
 }
 
@@ -172,6 +236,54 @@ mod tests {
             g.groups, 5,
             "the huge splat overlaps all: a group of its own"
         );
+    }
+
+    /// The worst clouds the hostile tests found (identical points, mostly zero radii, two tight
+    /// clusters far apart, one huge splat among many): work grows linearly with n.
+    #[test]
+    fn degenerate_clouds_cost_linear_work() {
+        let cloud = |kind: &str, n: usize| -> Splats {
+            let mut s = row(n, 0.01, 0.05);
+            match kind {
+                "identical" => s.positions.iter_mut().for_each(|p| *p = Vec3::ONE),
+                "zero radii" => s
+                    .radii
+                    .iter_mut()
+                    .skip(1)
+                    .step_by(10)
+                    .for_each(|r| *r = 0.0),
+                "mostly zero radii" => {
+                    for (i, r) in s.radii.iter_mut().enumerate() {
+                        *r = if i % 10 == 0 { 0.05 } else { 0.0 };
+                    }
+                }
+                "clusters" => {
+                    for (i, p) in s.positions.iter_mut().enumerate() {
+                        *p = Vec3::splat((i % 2) as f32 * 1.0e6) + Vec3::X * (i as f32 * 1e-9);
+                    }
+                }
+                "half huge" => s.radii.iter_mut().step_by(2).for_each(|r| *r = 50.0),
+                _ => {}
+            }
+            s
+        };
+        for kind in [
+            "identical",
+            "zero radii",
+            "mostly zero radii",
+            "clusters",
+            "half huge",
+        ] {
+            let small = assign(&cloud(kind, 10_000), GroupCount::Auto);
+            let big = assign(&cloud(kind, 20_000), GroupCount::Auto);
+            assert!(big.checks <= (MAX_CANDIDATES * 20_000) as u64, "{kind}");
+            assert!(
+                big.checks as f64 <= 2.2 * small.checks.max(1) as f64,
+                "{kind}: {} checks for 10k splats, {} for 20k",
+                small.checks,
+                big.checks
+            );
+        }
     }
 
     #[test]
