@@ -189,3 +189,42 @@ fn cli_flags_are_refused_not_clamped_and_failures_leave_no_file() {
     let (ok, stderr) = cli(&["volume", "--max-memory", "lots"]);
     assert!(!ok && stderr.contains("not a size"), "{stderr}");
 }
+
+/// f32 samples near ±f32::MAX made every voxel NaN ("voxel 0 is NaN", no file named).
+#[test]
+fn extreme_float_samples_normalise() {
+    let samples: Vec<f32> = vec![3.4e38, -3.4e38, 0.0, 1.0, -1.0, 3.4e38, 2.0, 5.0];
+    let bytes: Vec<u8> = samples.iter().flat_map(|v| v.to_le_bytes()).collect();
+    let spec = RawSpec {
+        dims: [2, 2, 2],
+        kind: SampleType::F32,
+        big_endian: false,
+        header_bytes: 0,
+        spacing: [1.0; 3],
+    };
+    let v = load_raw(&write("extreme.raw", &bytes), &spec).unwrap();
+    assert!(v
+        .data
+        .iter()
+        .all(|s| s.is_finite() && (0.0..=1.0).contains(s)));
+    assert_eq!((v.data[0], v.data[1]), (1.0, 0.0));
+}
+
+/// A 16384×1×1 volume failed on a `--step` the user never set; now the default step fits and
+/// the error is the adapter's 3D texture limit, with what to do.
+#[test]
+fn a_very_long_volume_gets_the_texture_limit_error() {
+    let raw = write("long.raw", &[0u8; 16384]);
+    let (ok, stderr) = cli(&[
+        "volume",
+        raw.to_str().unwrap(),
+        "--raw-dims",
+        "16384,1,1",
+        "--raw-type",
+        "u8",
+        "--size",
+        "16x16",
+    ]);
+    assert!(!ok && !stderr.contains("sampling step"), "{stderr}");
+    assert!(stderr.contains("--downsample"), "{stderr}");
+}

@@ -74,7 +74,17 @@ impl MultiViewCamera {
             near: (distance - 2.0 * radius).max(distance * 0.01),
             far: distance + 2.0 * radius,
         };
-        camera.validate()?;
+        // Only the data decides this camera: say so, rather than blame a flag never given.
+        camera.validate().map_err(|e| {
+            Error::invalid(
+                "camera framing",
+                format!(
+                    "the scene's bounds {:?} .. {:?} (radius {radius}) give no usable camera \
+                     ({e}); centre or scale the data",
+                    bounds.min, bounds.max
+                ),
+            )
+        })?;
         Ok(camera)
     }
 

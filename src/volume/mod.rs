@@ -124,12 +124,14 @@ impl Volume {
             let hi = finite.fold(f32::NEG_INFINITY, f32::max);
             [lo, hi]
         });
+        // In f64: the span of samples near ±f32::MAX overflows f32 (and made every voxel NaN).
+        let (lo, hi) = (f64::from(lo), f64::from(hi));
         let scale = if hi > lo { 1.0 / (hi - lo) } else { 0.0 };
         let data = samples
             .into_iter()
             .map(|v| {
                 if v.is_finite() {
-                    ((v - lo) * scale).clamp(0.0, 1.0)
+                    ((f64::from(v) - lo) * scale).clamp(0.0, 1.0) as f32
                 } else {
                     0.0
                 }

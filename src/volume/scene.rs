@@ -182,7 +182,11 @@ impl VolumeScene {
         // Everything is checked before the upload.
         volume.validate()?;
         let voxel = volume.min_spacing();
-        let step = step.unwrap_or(0.5 * voxel);
+        // Half a voxel, or what keeps a ray within MAX_SAMPLES_PER_RAY on a very long volume
+        // (a 16384×1×1 volume must not fail on a step the user never set).
+        let step = step.unwrap_or_else(|| {
+            (0.5 * voxel).max(volume.extent().length() / (MAX_SAMPLES_PER_RAY - 1.0))
+        });
         check_scene(volume.extent(), &transfer, step, model)?;
         let texture = VolumeTexture::new_validated(device, queue, volume)?;
         static NEXT_ID: AtomicU64 = AtomicU64::new(0);
@@ -234,7 +238,7 @@ fn check_scene(extent: Vec3, transfer: &TransferFunction, step: f32, model: Mat4
     let diagonal = extent.length();
     if !(step.is_finite() && step > 0.0 && diagonal / step <= MAX_SAMPLES_PER_RAY) {
         return Err(Error::invalid(
-            "sampling step",
+            "sampling step (--step, --slices)",
             format!(
                 "{step}: must be positive and at least {} (the box diagonal / {MAX_SAMPLES_PER_RAY})",
                 diagonal / MAX_SAMPLES_PER_RAY

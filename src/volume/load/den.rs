@@ -74,5 +74,11 @@ pub fn load_den(path: &Path) -> Result<Volume> {
         ));
     }
     let samples = data[..count as usize].iter().map(|&b| b as f32).collect();
-    to_volume(map_len.map(|l| l as u32), [1.0; 3], samples, SampleType::U8)
+    to_volume(
+        path,
+        map_len.map(|l| l as u32),
+        [1.0; 3],
+        samples,
+        SampleType::U8,
+    )
 }

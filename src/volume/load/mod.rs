@@ -103,7 +103,9 @@ pub(crate) fn data_bytes(dims: [u64; 3], kind: SampleType) -> Result<u64> {
 
 /// Normalise decoded samples: 8-bit unsigned by 255 (keeps transfer functions meaningful),
 /// everything else by its own min..max.
+/// Errors name the file `path`.
 pub(crate) fn to_volume(
+    path: &Path,
     dims: [u32; 3],
     spacing: [f32; 3],
     samples: Vec<f32>,
@@ -111,6 +113,7 @@ pub(crate) fn to_volume(
 ) -> Result<Volume> {
     let range = (kind == SampleType::U8).then_some([0.0, 255.0]);
     Volume::from_samples(dims, spacing, samples, range)
+        .map_err(|e| format_error(path, e.to_string()))
 }
 
 pub(crate) fn format_error(path: &Path, reason: impl Into<String>) -> Error {

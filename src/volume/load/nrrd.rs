@@ -236,5 +236,5 @@ pub fn load_nrrd(path: &Path) -> Result<Volume> {
         header.kind,
         header.big_endian,
     );
-    to_volume(header.dims, header.spacing, samples, header.kind)
+    to_volume(path, header.dims, header.spacing, samples, header.kind)
 }

@@ -55,5 +55,5 @@ pub fn load_raw(path: &Path, spec: &RawSpec) -> Result<Volume> {
         spec.kind,
         spec.big_endian,
     );
-    to_volume(spec.dims, spec.spacing, samples, spec.kind)
+    to_volume(path, spec.dims, spec.spacing, samples, spec.kind)
 }
