@@ -228,3 +228,25 @@ fn a_very_long_volume_gets_the_texture_limit_error() {
     assert!(!ok && !stderr.contains("sampling step"), "{stderr}");
     assert!(stderr.contains("--downsample"), "{stderr}");
 }
+
+/// Meshes and point clouds are under the budget too (checked from the file size or the PLY
+/// header's count, before parsing or allocating).
+#[test]
+fn meshes_and_point_clouds_are_under_the_budget() {
+    let obj = write("budget.obj", format!("{TRIANGLE}f 1 2 3\n").as_bytes());
+    let ply = write(
+        "budget.ply",
+        b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n",
+    );
+    for (command, file) in [("mesh", &obj), ("points", &ply)] {
+        let file = file.to_str().unwrap();
+        let (ok, stderr) = cli(&[command, file, "--max-memory", "64", "--size", "8x8"]);
+        assert!(
+            !ok && stderr.contains("memory budget of 64 bytes"),
+            "{command}: {stderr}"
+        );
+        assert!(stderr.contains(file), "{command} names the file: {stderr}");
+        let (ok, stderr) = cli(&[command, file, "--size", "8x8"]);
+        assert!(ok, "{command} within the default budget: {stderr}");
+    }
+}

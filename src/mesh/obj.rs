@@ -15,6 +15,11 @@ use glam::Vec3;
 use super::{Mesh, DEFAULT_COLOR};
 use crate::error::{Error, Result};
 
+/// Peak CPU bytes per OBJ file byte: a vertex or face line takes at least 8 bytes; a vertex
+/// costs ≈ 112 bytes (tobj's arrays, the mesh's positions, normals and colours, the uploaded
+/// vertex) and a triangle ≈ 24: an upper bound of 17 per byte, checked before parsing.
+pub(crate) const MESH_PEAK_PER_OBJ_BYTE: u64 = 17;
+
 pub(super) fn load(path: &Path) -> Result<Mesh> {
     let fail = |reason: String| Error::Mesh {
         path: path.to_path_buf(),
@@ -24,6 +29,18 @@ pub(super) fn load(path: &Path) -> Result<Mesh> {
         return Err(fail("no such file".into()));
     }
     let text = crate::file::read_text(path)?;
+    let bytes = text.len() as u64;
+    crate::budget::check(
+        || {
+            format!(
+                "an OBJ of {bytes} bytes (up to {} vertices and triangles, {MESH_PEAK_PER_OBJ_BYTE} \
+                 bytes of memory per file byte)",
+                bytes / 8
+            )
+        },
+        bytes.saturating_mul(MESH_PEAK_PER_OBJ_BYTE),
+    )
+    .map_err(|e| fail(e.to_string()))?;
     let options = tobj::LoadOptions {
         triangulate: true,
         single_index: true,

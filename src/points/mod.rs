@@ -207,8 +207,26 @@ impl PointCloud {
 pub const MAX_POINTS: usize = (u32::MAX / 6) as usize;
 
 /// The vertices of a Wavefront OBJ (`v x y z [r g b]`), nothing else.
+/// Peak CPU bytes per point from file to GPU upload: the cloud and its splats (positions,
+/// normals, colours, radii: 40 bytes each), the estimation and grouping grids (≈ 64), the
+/// uploaded `GpuSplat`s (32) and the group sort (≈ 24).
+pub const PEAK_BYTES_PER_POINT: u64 = 200;
+
+/// `Err(MemoryBudget)` when `points` points exceed the budget (`crate::budget`).
+pub(crate) fn check_point_budget(points: u64) -> Result<()> {
+    crate::budget::check(
+        || format!("{points} points × {PEAK_BYTES_PER_POINT} bytes from file to GPU"),
+        points.saturating_mul(PEAK_BYTES_PER_POINT),
+    )
+}
+
 fn obj_vertices(path: &Path) -> Result<PointCloud> {
     let text = crate::file::read_text(path)?;
+    // A vertex line takes at least 8 bytes ("v 0 0 0\n").
+    check_point_budget(text.len() as u64 / 8).map_err(|e| Error::Points {
+        path: path.into(),
+        reason: e.to_string(),
+    })?;
     let fail = |line: usize, reason: &str| Error::Points {
         path: path.into(),
         reason: format!("line {}: {reason}", line + 1),

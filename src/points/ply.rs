@@ -393,6 +393,7 @@ fn read_vertices(
     let radii = has(|s| matches!(s, Slot::Radius), 1);
     check_count(reader, element)?;
     let n = element.count;
+    super::check_point_budget(n as u64).map_err(|e| e.to_string())?;
     let mut cloud = PointCloud {
         positions: Vec::with_capacity(n),
         normals: normals.then(|| Vec::with_capacity(n)),
