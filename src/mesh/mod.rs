@@ -36,6 +36,17 @@ impl Mesh {
         obj::load(path)
     }
 
+    /// Parse OBJ text from memory (`name` labels errors; `mtllib` is not read).
+    pub fn from_obj_text(text: &str, name: &std::path::Path) -> Result<Self> {
+        obj::parse(text, name, None)
+    }
+
+    /// Check MTL text as the OBJ loader reads it (name and diffuse colour per material):
+    /// `Ok(materials)` or the first malformed line.
+    pub fn check_mtl_text(text: &str, name: &std::path::Path) -> Result<usize> {
+        obj::parse_mtl(text, name).map(|(materials, _)| materials.len())
+    }
+
     /// Number of triangles.
     pub fn triangle_count(&self) -> usize {
         self.indices.len() / 3

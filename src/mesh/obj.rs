@@ -41,15 +41,27 @@ pub(super) fn load(path: &Path) -> Result<Mesh> {
         bytes.saturating_mul(MESH_PEAK_PER_OBJ_BYTE),
     )
     .map_err(|e| fail(e.to_string()))?;
+    parse(&text, path, Some(path.parent().unwrap_or(Path::new("."))))
+}
+
+/// Parse OBJ `text` (`path` names it in errors); `mtllib` files are read from `materials`,
+/// or ignored when it is `None` (text from memory, e.g. the fuzz targets).
+pub(super) fn parse(text: &str, path: &Path, materials: Option<&Path>) -> Result<Mesh> {
+    let fail = |reason: String| Error::Mesh {
+        path: path.to_path_buf(),
+        reason,
+    };
     let options = tobj::LoadOptions {
         triangulate: true,
         single_index: true,
         ignore_points: true,
         ignore_lines: true,
     };
-    let dir = path.parent().unwrap_or(Path::new("."));
     let material_problems = RefCell::new(Vec::new());
     let (models, materials) = tobj::load_obj_buf(&mut text.as_bytes(), &options, |mtl| {
+        let Some(dir) = materials else {
+            return Err(tobj::LoadError::OpenFileFailed);
+        };
         match load_mtl(&dir.join(mtl)) {
             Ok((materials, names)) => Ok((materials, names.into_iter().collect())),
             Err(e) => {
@@ -60,6 +72,9 @@ pub(super) fn load(path: &Path) -> Result<Mesh> {
     })
     .map_err(|e| fail(format!("malformed OBJ: {e}")))?;
     let materials = materials.unwrap_or_else(|_| {
+        if material_problems.borrow().is_empty() {
+            return Vec::new(); // none named, or not read (text from memory)
+        }
         log::warn!(
             "{}: materials not loaded ({}); using the default colour",
             path.display(),
@@ -125,7 +140,14 @@ pub(super) fn load(path: &Path) -> Result<Mesh> {
 
 /// The materials of an MTL file, with only what the renderers use: name and diffuse colour.
 fn load_mtl(path: &Path) -> Result<(Vec<tobj::Material>, HashMap<String, usize>)> {
-    let text = crate::file::read_text(path)?;
+    parse_mtl(&crate::file::read_text(path)?, path)
+}
+
+/// Parse MTL `text` (`path` names it in errors).
+pub(super) fn parse_mtl(
+    text: &str,
+    path: &Path,
+) -> Result<(Vec<tobj::Material>, HashMap<String, usize>)> {
     let fail = |line: usize, reason: String| Error::Mesh {
         path: path.to_path_buf(),
         reason: format!("MTL line {line}: {reason}"),

@@ -17,6 +17,11 @@ const HEADER_BYTES: usize = 29 * 2 + 4;
 pub fn load_den(path: &Path) -> Result<Volume> {
     crate::file::check_regular(path)?;
     let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+    parse_den(&bytes, path)
+}
+
+/// A `.den` file's `bytes` (`path` names it in errors).
+pub fn parse_den(bytes: &[u8], path: &Path) -> Result<Volume> {
     if bytes.len() < HEADER_BYTES {
         return Err(format_error(
             path,

@@ -6,8 +6,8 @@ mod den;
 mod nrrd;
 mod raw;
 
-pub use den::load_den;
-pub use nrrd::load_nrrd;
+pub use den::{load_den, parse_den};
+pub use nrrd::{load_nrrd, parse_nrrd};
 pub use raw::{load_raw, RawSpec};
 
 use std::path::Path;

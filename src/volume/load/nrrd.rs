@@ -157,6 +157,12 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
 pub fn load_nrrd(path: &Path) -> Result<Volume> {
     crate::file::check_regular(path)?;
     let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+    parse_nrrd(&bytes, path)
+}
+
+/// A NRRD file's `bytes` (`path` names it in errors; a detached `data file:` is read relative
+/// to it).
+pub fn parse_nrrd(bytes: &[u8], path: &Path) -> Result<Volume> {
     // The header ends at the first blank line, with LF or CRLF line ends.
     let end = |mark: &[u8]| {
         bytes
