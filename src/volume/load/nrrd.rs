@@ -178,7 +178,7 @@ pub fn parse_nrrd(bytes: &[u8], path: &Path) -> Result<Volume> {
     let header_text = match head_len {
         Some(n) => String::from_utf8_lossy(&bytes[..n]).into_owned(),
         // A detached header may end without a blank line.
-        None if bytes.len() <= MAX_HEADER_BYTES => String::from_utf8_lossy(&bytes).into_owned(),
+        None if bytes.len() <= MAX_HEADER_BYTES => String::from_utf8_lossy(bytes).into_owned(),
         None => {
             return Err(format_error(
                 path,
