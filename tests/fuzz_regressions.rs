@@ -35,7 +35,9 @@ fn run(target: &str, data: &[u8]) {
         "display_spec" => {
             if let Ok(d) = Display::parse(&text) {
                 let mask = d.mask();
-                (0..3).for_each(|c| drop(mask.view(7, 3, c)));
+                for c in 0..3 {
+                    let _ = mask.view(7, 3, c);
+                }
             }
         }
         other => panic!("no fuzz target '{other}'"),
