@@ -3,7 +3,6 @@
 mod common;
 
 use std::path::PathBuf;
-use std::process::Command;
 
 use autostereo::camera::Bounds;
 use autostereo::camera::MultiViewCamera;
@@ -250,18 +249,7 @@ fn calibration_with_missing_or_bad_fields_is_an_error() {
     assert!(Calibration::from_json(&zero.to_string(), "v.json".as_ref()).is_err());
 }
 
-/// Run the CLI; return (success, stderr).
-fn cli(args: &[&str]) -> (bool, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_autostereo"))
-        .args(args)
-        .env("RUST_LOG", "off")
-        .output()
-        .unwrap();
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+use common::cli;
 
 #[test]
 fn cli_reports_bad_input_without_panicking() {

@@ -2,6 +2,8 @@
 //! aborts on allocation, reads that never end) and the unclear errors they got. Each case
 //! failed on the code before it was fixed.
 
+mod common;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -150,17 +152,7 @@ fn line_ends_byte_order_marks_and_stray_bytes_are_read() {
     Calibration::load(&write("bom_visual.json", &bom)).unwrap();
 }
 
-fn cli(args: &[&str]) -> (bool, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_autostereo"))
-        .args(args)
-        .env("RUST_LOG", "off")
-        .output()
-        .unwrap();
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+use common::cli;
 
 #[test]
 fn cli_flags_are_refused_not_clamped_and_failures_leave_no_file() {

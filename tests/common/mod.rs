@@ -104,3 +104,16 @@ pub fn assert_missing_feature(device: &wgpu::Device, error: &autostereo::Error, 
         "in words: {message}"
     );
 }
+
+/// Run the CLI with logging off; return (success, stderr).
+pub fn cli(args: &[&str]) -> (bool, String) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_autostereo"))
+        .args(args)
+        .env("RUST_LOG", "off")
+        .output()
+        .unwrap();
+    (
+        out.status.success(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
