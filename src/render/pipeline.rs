@@ -56,6 +56,18 @@ pub(crate) fn compilation<'a>(
     }
 }
 
+/// A bind group layout of `entries`.
+pub(crate) fn bind_group_layout(
+    device: &wgpu::Device,
+    label: &str,
+    entries: &[wgpu::BindGroupLayoutEntry],
+) -> wgpu::BindGroupLayout {
+    device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some(label),
+        entries,
+    })
+}
+
 /// A pipeline layout of `groups` (no immediates).
 pub(crate) fn pipeline_layout(
     device: &wgpu::Device,

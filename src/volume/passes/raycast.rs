@@ -124,16 +124,22 @@ impl PreparedFor {
     }
 }
 
-/// `Err(NotPrepared)` unless `prepared` is `wanted` and the scene's uploads are current.
-pub(crate) fn check_volume_prepared(
-    renderer: &'static str,
-    prepared: &Option<PreparedFor>,
-    resources: &VolumeResources,
-    scene: &VolumeScene,
-    wanted: PreparedFor,
-) -> Result<()> {
-    let current = prepared.filter(|_| resources.uploaded_for(scene));
-    check_prepared(renderer, &current, &wanted)
+/// The start of both volume renderers' `encode`: a valid scene, a target of the frame's size,
+/// and `Err(NotPrepared)` unless `prepared` is `wanted` and the scene's uploads are current.
+pub(crate) struct VolumeEncode<'a> {
+    pub renderer: &'static str,
+    pub prepared: &'a Option<PreparedFor>,
+    pub resources: &'a VolumeResources,
+    pub wanted: PreparedFor,
+}
+
+impl VolumeEncode<'_> {
+    pub fn check(&self, scene: &VolumeScene, frame: &Frame, target: &SpatialTarget) -> Result<()> {
+        scene.validate()?;
+        check_target(frame, target)?;
+        let current = self.prepared.filter(|_| self.resources.uploaded_for(scene));
+        check_prepared(self.renderer, &current, &self.wanted)
+    }
 }
 
 impl Renderer<VolumeScene> for VolumeRaycaster {
@@ -145,7 +151,6 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         frame: &Frame,
     ) -> Result<()> {
         begin_prepare(device, frame, &mut self.prepared)?;
-        scene.validate()?;
         let key = PreparedFor::of(scene, frame);
         self.resources.upload(device, queue, scene)?;
         if let Some(npass) = &mut self.npass {
@@ -170,16 +175,13 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         frame: &Frame,
         target: &SpatialTarget,
     ) -> Result<()> {
-        scene.validate()?;
-        check_target(frame, target)?;
-        let wanted = PreparedFor::of(scene, frame);
-        check_volume_prepared(
-            "VolumeRaycaster",
-            &self.prepared,
-            &self.resources,
-            scene,
-            wanted,
-        )?;
+        VolumeEncode {
+            renderer: "VolumeRaycaster",
+            prepared: &self.prepared,
+            resources: &self.resources,
+            wanted: PreparedFor::of(scene, frame),
+        }
+        .check(scene, frame, target)?;
         let camera = &frame.camera;
         // One dispatch per camera: all K views per pixel, or one fixed camera per view / centre.
         let params = |use_mask, offset| VolumeResources::params(scene, frame, use_mask, offset);

@@ -163,12 +163,14 @@ impl VolumeResources {
     /// Upload what `scene` needs: the pre-integration table (rebuilt only when the transfer
     /// function or step changed) and the transparent-brick flags (per volume and transfer
     /// function). Each upload goes into a new texture, never over one a frame may still use.
+    /// The scene's public fields are checked first.
     pub fn upload(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         scene: &VolumeScene,
     ) -> Result<()> {
+        scene.validate()?;
         if !self.table_fresh(scene) {
             let step_voxels = scene.step / scene.voxel;
             let table = PreintegrationTable::new(&scene.transfer, step_voxels)?;

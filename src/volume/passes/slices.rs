@@ -6,10 +6,11 @@
 use bytemuck::{Pod, Zeroable};
 use glam::{Vec3, Vec4Swizzles};
 
-use super::raycast::{check_volume_prepared, PreparedFor};
+use super::raycast::{PreparedFor, VolumeEncode};
 use super::resources::VolumeResources;
 use crate::error::Result;
 use crate::frame::Frame;
+use crate::render::begin_prepare;
 use crate::render::pipeline::{
     begin_pass, cleared, compilation, draw_fullscreen, fullscreen_pipeline,
 };
@@ -17,7 +18,6 @@ use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
 use crate::render::texture::{cached_texture_2d, Texture2d};
 use crate::render::Renderer;
-use crate::render::{begin_prepare, check_target};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 use crate::volume::VolumeScene;
 
@@ -243,7 +243,6 @@ impl Renderer<VolumeScene> for VolumeSlicer {
         frame: &Frame,
     ) -> Result<()> {
         begin_prepare(device, frame, &mut self.prepared)?;
-        scene.validate()?;
         let key = PreparedFor::for_slices(scene, frame);
         self.resources.upload(device, queue, scene)?;
         self.ensure_pipeline(device, key.spec)?;
@@ -267,16 +266,13 @@ impl Renderer<VolumeScene> for VolumeSlicer {
         frame: &Frame,
         target: &SpatialTarget,
     ) -> Result<()> {
-        scene.validate()?;
-        check_target(frame, target)?;
-        let wanted = PreparedFor::for_slices(scene, frame);
-        check_volume_prepared(
-            "VolumeSlicer",
-            &self.prepared,
-            &self.resources,
-            scene,
-            wanted,
-        )?;
+        VolumeEncode {
+            renderer: "VolumeSlicer",
+            prepared: &self.prepared,
+            resources: &self.resources,
+            wanted: PreparedFor::for_slices(scene, frame),
+        }
+        .check(scene, frame, target)?;
         let spec = Specialization::of(frame);
         let params = VolumeResources::params(scene, frame, true, 0.0);
         let volume_group = self.resources.bind(device, scene, frame, &[params]);

@@ -4,7 +4,7 @@ use super::{CoverBounds, MeshSinglePassOptions, Visibility};
 use crate::error::Result;
 use crate::frame::frame_bind_group_layout;
 use crate::render::pipeline::{
-    compilation, fullscreen_pipeline_with, pipeline_layout, storage_entry,
+    bind_group_layout, compilation, fullscreen_pipeline_with, pipeline_layout, storage_entry,
 };
 use crate::render::pipeline_cache::ShaderModules;
 use crate::render::specialize::Specialization;
@@ -35,12 +35,7 @@ impl Layouts {
         let vf = wgpu::ShaderStages::VERTEX_FRAGMENT;
         let cs = wgpu::ShaderStages::COMPUTE;
         let fs = wgpu::ShaderStages::FRAGMENT;
-        let layout = |label, entries: &[wgpu::BindGroupLayoutEntry]| {
-            device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-                label: Some(label),
-                entries,
-            })
-        };
+        let layout = |label, entries: &[_]| bind_group_layout(device, label, entries);
         Self {
             frame: frame_bind_group_layout(device),
             mesh: layout(
