@@ -21,7 +21,9 @@ const OPTIONAL_FEATURES: wgpu::Features = wgpu::Features::TIMESTAMP_QUERY
     .union(wgpu::Features::SHADER_INT64_ATOMIC_MIN_MAX)
     .union(wgpu::Features::SHADER_INT64_ATOMIC_ALL_OPS)
     .union(wgpu::Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES)
-    .union(wgpu::Features::FLOAT32_FILTERABLE);
+    .union(wgpu::Features::FLOAT32_FILTERABLE)
+    .union(wgpu::Features::MULTIVIEW)
+    .union(wgpu::Features::CLIP_DISTANCES);
 
 /// An adapter, its device and queue. Owns them; renderers borrow the device.
 ///
@@ -156,6 +158,8 @@ pub fn describe_features(features: wgpu::Features) -> String {
             "dual-source blending (a blend factor per colour channel)",
         ),
         (wgpu::Features::TIMESTAMP_QUERY, "GPU timestamp queries"),
+        (wgpu::Features::CLIP_DISTANCES, "clip distances"),
+        (wgpu::Features::MULTIVIEW, "multiview render passes"),
         (
             wgpu::Features::FLOAT32_FILTERABLE,
             "filterable 32-bit float textures",

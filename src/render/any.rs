@@ -3,7 +3,10 @@
 
 use crate::error::{Error, Result};
 use crate::frame::Frame;
-use crate::mesh::passes::{MeshNPass, MeshSinglePass, MeshSinglePassOptions, Visibility};
+use crate::mesh::passes::{
+    MeshLayered, MeshMrt, MeshNPass, MeshSinglePass, MeshSinglePassOptions, MeshTiled, TileClip,
+    Visibility,
+};
 use crate::mesh::MeshBuffers;
 use crate::points::passes::{PointSplatter, SplatOptions, DEFAULT_EPSILON_FRACTION};
 use crate::points::SplatScene;
@@ -56,7 +59,10 @@ impl AnyRenderer {
                         ..Default::default()
                     },
                 )?),
-                _ => Box::new(MeshNPass::new(device, method)?),
+                Method::Tiled => Box::new(MeshTiled::new(device, TileClip::Auto)?),
+                Method::Layered => Box::new(MeshLayered::new(device)?),
+                Method::Mrt => Box::new(MeshMrt::new(device)?),
+                Method::NPass | Method::SingleView => Box::new(MeshNPass::new(device, method)?),
             }),
             AnyScene::Points(splats) => AnyRenderer::Points(Box::new(PointSplatter::new(
                 device,
@@ -125,6 +131,14 @@ impl Renderer<AnyScene> for AnyRenderer {
                 r.encode(device, encoder, s, frame, target)
             }
             _ => Err(self.mismatch(scene)),
+        }
+    }
+
+    fn atlas(&self) -> Option<&crate::render::atlas::Atlas> {
+        match self {
+            AnyRenderer::Mesh(r) => r.atlas(),
+            AnyRenderer::Points(r) => r.atlas(),
+            AnyRenderer::Volume(r) => r.atlas(),
         }
     }
 }

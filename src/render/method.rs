@@ -15,11 +15,33 @@ pub enum Method {
     NPass,
     /// The centre camera only (what a 2D display would show).
     SingleView,
+    /// de Sorbier et al.: the geometry duplicated per view in one draw (instancing), each copy
+    /// in its own tile of one atlas laid out as a Looking Glass quilt, one depth buffer; then
+    /// the mask composites from the atlas.
+    Tiled,
+    /// Beck et al.: one draw into the layers of a texture array, per-layer depth (multiview
+    /// where the adapter has it, in as few passes as its view limit allows; one pass per
+    /// layer where it has none); then the mask composites.
+    Layered,
+    /// de Sorbier, Nozick & Biri: up to 8 views per draw into multiple render targets sharing
+    /// one depth buffer. Views of one draw occlude each other through that buffer: an
+    /// approximation, measured against the N-pass.
+    Mrt,
 }
 
 impl Method {
     /// Every method, in the order the tools list them.
-    pub const ALL: [Method; 3] = [Method::SinglePass, Method::NPass, Method::SingleView];
+    pub const ALL: [Method; 6] = [
+        Method::SinglePass,
+        Method::NPass,
+        Method::SingleView,
+        Method::Tiled,
+        Method::Layered,
+        Method::Mrt,
+    ];
+
+    /// The per-view duplication methods (one draw renders every view's copy).
+    pub const DUPLICATION: [Method; 3] = [Method::Tiled, Method::Layered, Method::Mrt];
 
     /// Name as the CLI spells it.
     pub fn name(self) -> &'static str {
@@ -27,6 +49,9 @@ impl Method {
             Method::SinglePass => "single-pass",
             Method::NPass => "n-pass",
             Method::SingleView => "single-view",
+            Method::Tiled => "tiled",
+            Method::Layered => "layered",
+            Method::Mrt => "mrt",
         }
     }
 }
@@ -63,6 +88,6 @@ mod tests {
         for m in Method::ALL {
             assert_eq!(m.name().parse::<Method>().unwrap(), m);
         }
-        assert!("tiled".parse::<Method>().is_err());
+        assert!("tile".parse::<Method>().is_err());
     }
 }

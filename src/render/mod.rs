@@ -5,6 +5,8 @@
 //! - [`mask_image`]: the display mask as a view-index image (GPU side of the mask oracle).
 //! - [`composite`]: N per-view layers → spatial image (every N-pass method).
 //! - [`output`]: the spatial image into a caller's texture or surface (BGRA8, sRGB…).
+//! - [`quilt`], [`atlas`]: the Looking Glass quilt layout, the atlas the tiled methods render
+//!   into (and quilt files are read into), and its compositing.
 //! - [`ViewLayers`]: the per-view (or per-group) layers those passes render into.
 //! - [`gpu_buffer`]: the one resizable GPU buffer type and the storage-binding limit check;
 //!   `dispatch`: the one compute dispatch splitter.
@@ -15,6 +17,7 @@
 //! `use autostereo::render::…` reaches every renderer.
 
 mod any;
+pub mod atlas;
 pub mod composite;
 pub(crate) mod dispatch;
 pub mod gpu_buffer;
@@ -25,6 +28,7 @@ pub mod output;
 pub(crate) mod pass_params;
 pub(crate) mod pipeline;
 pub(crate) mod pipeline_cache;
+pub mod quilt;
 mod renderer;
 pub(crate) mod specialize;
 pub(crate) mod storage_fence;
@@ -41,7 +45,8 @@ pub(crate) use renderer::{begin_prepare, check_prepared, check_target};
 pub use view_layers::ViewLayers;
 
 pub use crate::mesh::passes::{
-    CoverBounds, MeshNPass, MeshSinglePass, MeshSinglePassOptions, Visibility,
+    CoverBounds, MeshLayered, MeshMrt, MeshNPass, MeshSinglePass, MeshSinglePassOptions, MeshTiled,
+    TileClip, Visibility,
 };
 pub use crate::points::passes::{PointSplatter, SplatDepth, SplatOptions};
 pub use crate::volume::passes::{AlphaMode, VolumeParams, VolumeRaycaster, VolumeSlicer};

@@ -110,20 +110,54 @@ pub(crate) fn begin_pass<'e>(
     color: wgpu::RenderPassColorAttachment<'_>,
     depth: Option<&wgpu::TextureView>,
 ) -> wgpu::RenderPass<'e> {
+    begin_pass_to(
+        encoder,
+        label,
+        PassTargets {
+            colors: &[Some(color)],
+            depth,
+            keep_depth: false,
+            multiview_mask: None,
+        },
+    )
+}
+
+/// What a render pass writes: colour attachments, a depth buffer (cleared to the far plane;
+/// kept after the pass if `keep_depth`) and the multiview layers, if any.
+pub(crate) struct PassTargets<'a> {
+    pub colors: &'a [Option<wgpu::RenderPassColorAttachment<'a>>],
+    pub depth: Option<&'a wgpu::TextureView>,
+    pub keep_depth: bool,
+    pub multiview_mask: Option<std::num::NonZeroU32>,
+}
+
+/// Begin a render pass writing `targets` ([`begin_pass`] in general).
+pub(crate) fn begin_pass_to<'e>(
+    encoder: &'e mut wgpu::CommandEncoder,
+    label: &str,
+    targets: PassTargets<'_>,
+) -> wgpu::RenderPass<'e> {
+    let store = if targets.keep_depth {
+        wgpu::StoreOp::Store
+    } else {
+        wgpu::StoreOp::Discard
+    };
     encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
         label: Some(label),
-        color_attachments: &[Some(color)],
-        depth_stencil_attachment: depth.map(|view| wgpu::RenderPassDepthStencilAttachment {
-            view,
-            depth_ops: Some(wgpu::Operations {
-                load: wgpu::LoadOp::Clear(1.0),
-                store: wgpu::StoreOp::Discard,
-            }),
-            stencil_ops: None,
+        color_attachments: targets.colors,
+        depth_stencil_attachment: targets.depth.map(|view| {
+            wgpu::RenderPassDepthStencilAttachment {
+                view,
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(1.0),
+                    store,
+                }),
+                stencil_ops: None,
+            }
         }),
         timestamp_writes: None,
         occlusion_query_set: None,
-        multiview_mask: None,
+        multiview_mask: targets.multiview_mask,
     })
 }
 

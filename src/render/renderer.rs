@@ -36,6 +36,12 @@ pub trait Renderer<S: ?Sized> {
         target: &SpatialTarget,
     ) -> Result<()>;
 
+    /// The per-view images of the last frame as a quilt atlas, where the method renders one
+    /// (the tiled methods); `None` for the others.
+    fn atlas(&self) -> Option<&crate::render::atlas::Atlas> {
+        None
+    }
+
     /// Prepare, encode one frame, submit it and wait for the GPU.
     fn render(
         &mut self,

@@ -1,19 +1,10 @@
 // Volumes, compute path: one invocation per pixel marches the rays of the pixel's K views
-// (or, for the N-pass baseline and the single view, one ray from a fixed camera) through the
-// volume box, front to back with early termination, classified by the pre-integration table
-// (Engel et al. 2001) and Blinn-Phong shaded from the averaged Sobel gradients (paper §3.5.1).
-//
-// Samples sit on the eye-depth planes d = k·Δ shared by every view (the view-aligned slices of
-// the paper), so a single-pass ray and the N-pass ray of the same view and pixel take the same
-// samples: the two methods differ only in which views they evaluate per pixel.
-//
-// Empty-space skipping (exact): after a segment that added nothing, the ray looks up its
-// brick; when every segment inside the brick is transparent under the transfer function
-// (src/volume/bricks.rs), it jumps to its last sample plane inside the brick. The skipped
-// segments would each have added exactly zero, so the image is unchanged bit for bit.
+// (or, for the N-pass baseline and the single view, one ray from a fixed camera) and writes
+// the spatial image (volume/shared/march.wgsl marches).
 #import shared/frame.wgsl
 #import shared/multiview.wgsl
 #import volume/shared/volume.wgsl
+#import volume/shared/march.wgsl
 
 // Bindings read by shared/frame.wgsl.
 @group(0) @binding(0) var<uniform> frame: Frame;
@@ -25,143 +16,6 @@
 
 @group(1) @binding(4) var transparent_bricks: texture_3d<u32>;
 @group(2) @binding(0) var output: texture_storage_2d<rgba8unorm, write>;
-
-// Brick edge in voxels; keep in sync with `BRICK` in src/volume/bricks.rs.
-const BRICK: f32 = 4.0;
-// Empty-space skipping compiled in (src/volume/passes/raycast.rs sets it per scene): without
-// it the march is the plain loop.
-override SKIP_EMPTY: bool = true;
-
-// Texture-space position of sample plane k (eye depth k·Δ) on the ray o + u·d.
-fn plane_position(o: vec3<f32>, d: vec3<f32>, k: f32) -> vec3<f32> {
-    let depth = k * params.step;
-    return o + (depth / frame.camera.focal_distance) * d;
-}
-
-// The ray o + u·d in brick units (texture position × voxels / BRICK), set up once per ray.
-struct BrickRay {
-    origin: vec3<f32>,
-    inv_dir: vec3<f32>,
-    scale: vec3<f32>,
-    last: vec3<u32>,
-}
-
-fn brick_ray(o: vec3<f32>, d: vec3<f32>) -> BrickRay {
-    let scale = vec3<f32>(textureDimensions(volume)) / BRICK;
-    return BrickRay(o * scale, 1.0 / (d * scale), scale, textureDimensions(transparent_bricks) - 1u);
-}
-
-// At texture position p on the ray: the eye depth where the ray leaves p's brick (x) and
-// whether that brick is transparent (y = 1). A ray lying in a brick face can give NaN (no skip:
-// NaN fails the caller's comparisons) or, where min/max drop the NaN, the exit of the other
-// axes: still exact, as samples on the face read only voxels of that brick's span.
-fn brick_exit(ray: BrickRay, p: vec3<f32>) -> vec2<f32> {
-    let brick = min(vec3<u32>(max(floor(p * ray.scale), vec3<f32>(0.0))), ray.last);
-    let a = (vec3<f32>(brick) - ray.origin) * ray.inv_dir;
-    let b = (vec3<f32>(brick) + 1.0 - ray.origin) * ray.inv_dir;
-    let u_out = min(min(max(a.x, b.x), max(a.y, b.y)), max(a.z, b.z));
-    let transparent = textureLoad(transparent_bricks, brick, 0).x != 0u;
-    return vec2<f32>(u_out * frame.camera.focal_distance, select(0.0, 1.0, transparent));
-}
-
-// The shaded segment between samples `front` and `back` (back on plane k) of the ray
-// origin + t·dir.
-fn segment(front: vec4<f32>, back: vec4<f32>, k: f32, origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
-    let depth = k * params.step;
-    return shaded_segment(front, back, origin + (depth / frame.camera.focal_distance) * dir, origin);
-}
-
-// `acc` with `seg` composited behind it (front to back, premultiplied).
-fn over(acc: vec4<f32>, seg: vec4<f32>) -> vec4<f32> {
-    return vec4<f32>(acc.rgb + (1.0 - acc.a) * seg.rgb, acc.a + (1.0 - acc.a) * seg.a);
-}
-
-// The volume sample on plane k of the ray o + u·d (texture space).
-fn sample_plane(o: vec3<f32>, d: vec3<f32>, k: f32) -> vec4<f32> {
-    return textureSampleLevel(volume, linear_clamp, plane_position(o, d, k), 0.0);
-}
-
-// Premultiplied RGBA along the ray origin + t·dir (eye depth t·fd).
-fn march(origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
-    let fd = frame.camera.focal_distance;
-    let o = (params.tex_from_eye * vec4<f32>(origin, 1.0)).xyz;
-    let d = (params.tex_from_eye * vec4<f32>(dir, 0.0)).xyz;
-    // Slab test against [0, 1]³ (IEEE division: axis-parallel rays give ±inf, handled by min/max).
-    let inv = 1.0 / d;
-    let a = (vec3<f32>(0.0) - o) * inv;
-    let b = (vec3<f32>(1.0) - o) * inv;
-    let t_in = max(max(min(a.x, b.x), min(a.y, b.y)), min(a.z, b.z));
-    let t_out = min(min(max(a.x, b.x), max(a.y, b.y)), max(a.z, b.z));
-    let d_in = max(t_in * fd, frame.camera.near);
-    let d_out = min(t_out * fd, frame.camera.far);
-    if (!(d_out > d_in)) {
-        return vec4<f32>(0.0);
-    }
-    let k0 = ceil(d_in / params.step);
-    let k1 = floor(d_out / params.step);
-    let count = min(u32(max(k1 - k0, 0.0)), params.max_samples);
-    var front = sample_plane(o, d, k0);
-    var acc = vec4<f32>(0.0);
-    if (!SKIP_EMPTY) {
-        // The plain loop: measured ≈ 25 % faster on llvmpipe than the skipping loop with its
-        // look-ups disabled, so it is a separate specialisation.
-        for (var i = 1u; i <= count; i++) {
-            let back = sample_plane(o, d, k0 + f32(i));
-            acc = over(acc, segment(front, back, k0 + f32(i), origin, dir));
-            if (acc.a >= OPAQUE) {
-                break;
-            }
-            front = back;
-        }
-        return acc;
-    }
-    // Sample i sits on plane k0 + i; the front sample is i − 1. Bricks are looked up only
-    // after a transparent segment, and once per brick that turned out not to be transparent.
-    // A jump lands on the brick's last plane j and only re-samples there (`resume`): the one
-    // texture fetch per iteration stays on one code path for all lanes.
-    let bricks = brick_ray(o, d);
-    var look_up = true;
-    var resume = false;
-    var next_look_up = 0u;
-    var i = 1u;
-    loop {
-        if (i > count) {
-            break;
-        }
-        if (look_up && i - 1u >= next_look_up) {
-            look_up = false;
-            let exit = brick_exit(bricks, plane_position(o, d, k0 + f32(i - 1u)));
-            // Last plane inside the brick, relative to k0.
-            let last = floor(exit.x / params.step) - k0;
-            if (exit.y != 0.0 && last > f32(i - 1u)) {
-                i = u32(min(last, f32(count)));
-                resume = true;
-            } else {
-                // Not transparent (or no whole segment left in it): no look-up until past it.
-                next_look_up = select(i, u32(max(last, 0.0)) + 1u, last >= f32(i - 1u));
-            }
-        }
-        let back = sample_plane(o, d, k0 + f32(i));
-        if (!resume) {
-            let seg = segment(front, back, k0 + f32(i), origin, dir);
-            acc = over(acc, seg);
-            if (acc.a >= OPAQUE) {
-                break;
-            }
-            look_up = seg.a <= 0.0;
-        }
-        resume = false;
-        front = back;
-        i++;
-    }
-    return acc;
-}
-
-fn ray_color(frag: vec2<f32>, offset: f32) -> vec4<f32> {
-    let x = camera_focal_point(frame.camera, frag);
-    let o = vec3<f32>(offset, 0.0, 0.0);
-    return march(o, x - o);
-}
 
 @compute @workgroup_size(8, 8)
 fn cs_main(@builtin(global_invocation_id) id: vec3<u32>) {
@@ -189,7 +43,5 @@ fn cs_main(@builtin(global_invocation_id) id: vec3<u32>) {
             }
         }
     }
-    // Exact per channel: each subpixel is composited over the background with its own α.
-    let rgb = color + (vec3<f32>(1.0) - alpha) * frame.background.rgb;
-    textureStore(output, px, vec4<f32>(rgb, 1.0));
+    textureStore(output, px, over_background(color, alpha));
 }

@@ -169,9 +169,14 @@ pub struct RenderArgs {
     /// Image size WxH in pixels.
     #[arg(long, value_parser = parse_size, default_value = "512x512")]
     pub size: [u32; 2],
-    /// Rendering method: single-pass | n-pass | single-view.
+    /// Rendering method: single-pass | n-pass | single-view | tiled | layered | mrt (the last
+    /// three duplicate the geometry per view in one draw; docs/USAGE.md compares them).
     #[arg(long, value_parser = method_parser(), default_value = "single-pass")]
     pub method: Method,
+    /// With --method tiled: also write the atlas as a Looking Glass quilt (PNG; the name gets
+    /// the `_qs{cols}x{rows}a{aspect}` suffix Looking Glass software reads).
+    #[arg(long)]
+    pub quilt_out: Option<PathBuf>,
     /// Also render N-pass and report psnr_db, max_abs_err, frac_off_2 against it.
     #[arg(long)]
     pub compare: bool,
@@ -195,6 +200,15 @@ impl RenderArgs {
     pub fn check(&self) -> Result<()> {
         if let Some(out) = &self.out {
             check_output(out)?;
+        }
+        if let Some(quilt) = &self.quilt_out {
+            check_output(quilt)?;
+            if self.method != Method::Tiled {
+                bail!(
+                    "--quilt-out: the {} method renders no quilt atlas; use --method tiled",
+                    self.method
+                );
+            }
         }
         if let Some(bytes) = self.max_memory {
             autostereo::budget::set_max_memory(bytes);

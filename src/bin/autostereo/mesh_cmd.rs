@@ -5,11 +5,12 @@ use std::path::PathBuf;
 use anyhow::{Context, Result};
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::{
-    CoverBounds, MeshNPass, MeshSinglePass, MeshSinglePassOptions, Method, Renderer, Visibility,
+    CoverBounds, MeshLayered, MeshMrt, MeshNPass, MeshSinglePass, MeshSinglePassOptions, MeshTiled,
+    Method, Renderer, TileClip, Visibility,
 };
 
 use crate::args::{gpu, RenderArgs};
-use crate::run::{compare_with, report, run_fields, run_summary, timed};
+use crate::run::{compare_with, report, run_fields, run_summary, save_quilt, timed};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum VisibilityArg {
@@ -23,6 +24,16 @@ pub enum VisibilityArg {
     Compute,
     /// The paper's one depth per pixel (approximate).
     Fast,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum TileClipArg {
+    /// Clip distances where the adapter has them, else discard.
+    Auto,
+    /// Four clip distances per vertex (needs CLIP_DISTANCES).
+    ClipDistances,
+    /// Discard fragments outside the tile (any adapter).
+    Discard,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -45,6 +56,9 @@ pub struct MeshArgs {
     /// formula.
     #[arg(long, value_enum, default_value = "exact")]
     bounds: BoundsArg,
+    /// Tiled method: how each view's copy is kept inside its tile.
+    #[arg(long, value_enum, default_value = "auto")]
+    tile_clip: TileClipArg,
     /// Reorder triangles along a Morton curve before rendering (locality; every method).
     #[arg(long)]
     sort_triangles: bool,
@@ -74,6 +88,9 @@ pub fn run(args: MeshArgs) -> Result<()> {
     )?;
     if let Some(out) = &args.common.out {
         run.image.save_png(out)?;
+    }
+    if let Some(quilt) = &args.common.quilt_out {
+        save_quilt(&ctx, renderer.as_ref(), quilt)?;
     }
     let diff = if args.common.compare {
         let mut npass = MeshNPass::new(device, Method::NPass)?;
@@ -113,6 +130,16 @@ fn renderer(device: &wgpu::Device, args: &MeshArgs) -> Result<Box<dyn Renderer<M
             device,
             single_pass_options(device, args),
         )?),
+        Method::Tiled => Box::new(MeshTiled::new(
+            device,
+            match args.tile_clip {
+                TileClipArg::Auto => TileClip::Auto,
+                TileClipArg::ClipDistances => TileClip::ClipDistances,
+                TileClipArg::Discard => TileClip::Discard,
+            },
+        )?),
+        Method::Layered => Box::new(MeshLayered::new(device)?),
+        Method::Mrt => Box::new(MeshMrt::new(device)?),
     })
 }
 

@@ -9,7 +9,7 @@ use autostereo::points::{GroupCount, PointCloud, SplatScene};
 use autostereo::render::{Method, PointSplatter, SplatDepth, SplatOptions};
 
 use crate::args::{gpu, RenderArgs};
-use crate::run::{compare_with, report, run_fields, run_summary, timed};
+use crate::run::{compare_with, report, run_fields, run_summary, save_quilt, timed};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum DepthArg {
@@ -78,6 +78,9 @@ pub fn run(args: PointsArgs) -> Result<()> {
     let run = timed(&ctx, &mut renderer, &scene, &frame, args.common.frames)?;
     if let Some(out) = &args.common.out {
         run.image.save_png(out)?;
+    }
+    if let Some(quilt) = &args.common.quilt_out {
+        save_quilt(&ctx, &renderer, quilt)?;
     }
     let diff = if args.common.compare {
         let mut npass = PointSplatter::new(device, Method::NPass, options)?;

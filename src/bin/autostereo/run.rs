@@ -1,6 +1,8 @@
 //! What the render commands share: timed frames, the N-pass comparison, the report.
 
-use anyhow::Result;
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context, Result};
 use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::image_io::{compare, ImageDiff, RgbImage};
@@ -126,4 +128,19 @@ pub fn run_summary(
         run.timing,
         ctx.adapter_label()
     )
+}
+
+/// `--quilt-out`: the last frame's atlas as a Looking Glass quilt, named with its grid; returns
+/// the name written.
+pub fn save_quilt<S: ?Sized>(
+    ctx: &GpuContext,
+    renderer: &dyn Renderer<S>,
+    path: &Path,
+) -> Result<PathBuf> {
+    let atlas = renderer
+        .atlas()
+        .context("--quilt-out: this method renders no quilt atlas; use --method tiled")?;
+    let named = atlas.layout.file_name(path);
+    atlas.read(&ctx.device, &ctx.queue)?.save_png(&named)?;
+    Ok(named)
 }

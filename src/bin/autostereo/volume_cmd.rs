@@ -13,7 +13,7 @@ use autostereo::volume::{phantom, TransferFunction, Volume};
 use glam::Mat4;
 
 use crate::args::{check_output, gpu, RenderArgs};
-use crate::run::{compare_with, report, run_fields, run_summary, timed};
+use crate::run::{compare_with, report, run_fields, run_summary, save_quilt, timed};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum Builtin {
@@ -222,6 +222,9 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     let run = timed(&ctx, renderer.as_mut(), &scene, &frame, args.common.frames)?;
     if let Some(out) = &args.common.out {
         run.image.save_png(out)?;
+    }
+    if let Some(quilt) = &args.common.quilt_out {
+        save_quilt(&ctx, renderer.as_ref(), quilt)?;
     }
     if let Some(path) = &args.anaglyph {
         let n = frame.camera.views;

@@ -185,13 +185,13 @@ impl MeshNPass {
 
 /// What a [`MeshNPass`] was prepared for: the frame's size and views.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct PreparedFor {
+pub(crate) struct PreparedFor {
     size: [u32; 2],
     views: u32,
 }
 
 impl PreparedFor {
-    fn of(frame: &Frame) -> Self {
+    pub(crate) fn of(frame: &Frame) -> Self {
         Self {
             size: frame.size,
             views: frame.camera.views,

@@ -114,6 +114,15 @@ impl PointSplatter {
     /// Prepare layouts; pipelines are built per display specialisation on first use.
     pub fn new(device: &wgpu::Device, method: Method, options: SplatOptions) -> Result<Self> {
         options.validate()?;
+        if Method::DUPLICATION.contains(&method) {
+            return Err(Error::invalid(
+                "method",
+                format!(
+                    "{method} is not implemented for points yet (meshes and volumes have it); \
+                     use single-pass, n-pass or single-view"
+                ),
+            ));
+        }
         let layouts = Layouts::new(device);
         let npass = match method {
             Method::NPass => Some(NPassHarness::new(device, &layouts.frame)?),
@@ -188,6 +197,7 @@ impl PointSplatter {
             Method::NPass => (0..camera.views)
                 .map(|i| fixed(camera.view_offset(i)))
                 .collect(),
+            Method::Tiled | Method::Layered | Method::Mrt => unreachable!("refused by new"),
         }
     }
 

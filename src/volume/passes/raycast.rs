@@ -1,13 +1,19 @@
 //! Volume rendering by ray marching in a compute pass (`wgsl/volume/raycast.wgsl`): the
 //! single-pass method (each pixel marches the rays of its K views and writes the spatial image)
 //! and, with the same kernel and the same samples, the N-pass baseline and the single view.
+//! The duplication methods' volume form marches every view of every pixel in one dispatch
+//! (z = view) into texture-array layers (`raycast_layered.wgsl`) or the tiles of a quilt atlas
+//! (`raycast_tiled.wgsl`), then composites.
 
 use super::resources::{VolumeParams, VolumeResources};
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::frame::Frame;
+use crate::render::atlas::{Atlas, AtlasCompositor};
 use crate::render::npass::NPassHarness;
-use crate::render::pipeline::compilation;
+use crate::render::pass_params::constants_buffer;
+use crate::render::pipeline::{bind_group_layout, compilation};
 use crate::render::pipeline_cache::PipelineCache;
+use crate::render::quilt::QuiltLayout;
 use crate::render::specialize::Specialization;
 use crate::render::Method;
 use crate::render::ViewLayers;
@@ -21,30 +27,104 @@ pub struct VolumeRaycaster {
     resources: VolumeResources,
     output_layout: wgpu::BindGroupLayout,
     pipelines: PipelineCache<RaycastPipelineKey, wgpu::ComputePipeline>,
-    /// N-pass only.
+    /// N-pass and layered only.
     npass: Option<NPassHarness>,
+    /// Tiled only.
+    tiled: Option<Tiled>,
     prepared: Option<PreparedFor>,
+}
+
+/// The tiled method's atlas and its compositor.
+struct Tiled {
+    compositor: AtlasCompositor,
+    atlas: Option<Atlas>,
+}
+
+/// Where a dispatch writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Output {
+    /// The spatial target (single pass, single view) or one N-pass layer per dispatch.
+    Image,
+    /// Every layer of the N-pass array in one dispatch.
+    Layers,
+    /// Every tile of a quilt atlas in one dispatch.
+    Atlas,
+}
+
+impl Output {
+    fn of(method: Method) -> Result<Self> {
+        match method {
+            Method::SinglePass | Method::SingleView | Method::NPass => Ok(Self::Image),
+            Method::Layered => Ok(Self::Layers),
+            Method::Tiled => Ok(Self::Atlas),
+            Method::Mrt => Err(Error::invalid(
+                "method",
+                "mrt renders meshes only: its point is one depth buffer shared by the views of \
+                 a draw, and volumes have no depth buffer; tiled and layered duplicate a \
+                 volume's views",
+            )),
+        }
+    }
+
+    fn stage(self) -> &'static str {
+        match self {
+            Self::Image => "volume/raycast.wgsl",
+            Self::Layers => "volume/raycast_layered.wgsl",
+            Self::Atlas => "volume/raycast_tiled.wgsl",
+        }
+    }
+
+    fn layout(self, device: &wgpu::Device) -> wgpu::BindGroupLayout {
+        let storage = |view_dimension| wgpu::BindGroupLayoutEntry {
+            binding: 0,
+            visibility: wgpu::ShaderStages::COMPUTE,
+            ty: wgpu::BindingType::StorageTexture {
+                access: wgpu::StorageTextureAccess::WriteOnly,
+                format: crate::target::SPATIAL_FORMAT,
+                view_dimension,
+            },
+            count: None,
+        };
+        let quilt = wgpu::BindGroupLayoutEntry {
+            binding: 1,
+            visibility: wgpu::ShaderStages::COMPUTE,
+            ty: wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Uniform,
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+            count: None,
+        };
+        let d2 = wgpu::TextureViewDimension::D2;
+        match self {
+            Self::Image => bind_group_layout(device, "volume output", &[storage(d2)]),
+            Self::Layers => bind_group_layout(
+                device,
+                "volume output layers",
+                &[storage(wgpu::TextureViewDimension::D2Array)],
+            ),
+            Self::Atlas => bind_group_layout(device, "volume output atlas", &[storage(d2), quilt]),
+        }
+    }
 }
 
 impl VolumeRaycaster {
     /// Prepare layouts and the sampler; pipelines are built per display specialisation.
     pub fn new(device: &wgpu::Device, method: Method) -> Result<Self> {
+        let output = Output::of(method)?;
         let resources = VolumeResources::new(device, wgpu::ShaderStages::COMPUTE);
-        let output_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("volume output"),
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::COMPUTE,
-                ty: wgpu::BindingType::StorageTexture {
-                    access: wgpu::StorageTextureAccess::WriteOnly,
-                    format: crate::target::SPATIAL_FORMAT,
-                    view_dimension: wgpu::TextureViewDimension::D2,
-                },
-                count: None,
-            }],
-        });
+        let output_layout = output.layout(device);
         let npass = match method {
-            Method::NPass => Some(NPassHarness::new(device, &resources.frame_layout)?),
+            Method::NPass | Method::Layered => {
+                Some(NPassHarness::new(device, &resources.frame_layout)?)
+            }
+            _ => None,
+        };
+        let tiled = match output {
+            Output::Atlas => Some(Tiled {
+                compositor: AtlasCompositor::new(device, &resources.frame_layout)?,
+                atlas: None,
+            }),
             _ => None,
         };
         Ok(Self {
@@ -53,6 +133,7 @@ impl VolumeRaycaster {
             output_layout,
             pipelines: PipelineCache::new("volume ray-marching"),
             npass,
+            tiled,
             prepared: None,
         })
     }
@@ -61,9 +142,10 @@ impl VolumeRaycaster {
     /// override constant: without it the march is the plain loop, no look-up overhead).
     fn ensure_pipeline(&mut self, device: &wgpu::Device, key: RaycastPipelineKey) -> Result<()> {
         let (resources, output_layout) = (&self.resources, &self.output_layout);
+        let stage = Output::of(self.method)?.stage();
         self.pipelines.prepare(device, key, |modules| {
             let layout = resources.pipeline_layout(device, "volume raycast", output_layout);
-            let module = modules.get(device, "volume/raycast.wgsl")?;
+            let module = modules.get(device, stage)?;
             let skip = f64::from(u8::from(key.skip_empty));
             let constants = key.spec.constants(&[("SKIP_EMPTY", skip)]);
             Ok(
@@ -156,6 +238,13 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         if let Some(npass) = &mut self.npass {
             npass.prepare(device, frame)?;
         }
+        if let Some(tiled) = &mut self.tiled {
+            let layout = QuiltLayout::for_views(frame.camera.views, frame.size);
+            if !tiled.atlas.as_ref().is_some_and(|a| a.fits(&layout, false)) {
+                tiled.atlas = None; // free before allocating the replacement
+                tiled.atlas = Some(Atlas::new(device, layout, false)?);
+            }
+        }
         self.ensure_pipeline(
             device,
             RaycastPipelineKey {
@@ -183,11 +272,14 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         }
         .check(scene, frame, target)?;
         let camera = &frame.camera;
-        // One dispatch per camera: all K views per pixel, or one fixed camera per view / centre.
+        // One dispatch per camera: all K views per pixel, or one fixed camera per view /
+        // centre; the duplication methods one dispatch for every view.
         let params = |use_mask, offset| VolumeResources::params(scene, frame, use_mask, offset);
         let dispatches: Vec<VolumeParams> = match self.method {
             Method::SinglePass => vec![params(true, 0.0)],
-            Method::SingleView => vec![params(false, 0.0)],
+            Method::SingleView | Method::Tiled | Method::Layered | Method::Mrt => {
+                vec![params(false, 0.0)]
+            }
             Method::NPass => (0..camera.views)
                 .map(|i| params(false, camera.view_offset(i)))
                 .collect(),
@@ -197,9 +289,45 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
             spec: Specialization::of(frame),
             skip_empty: scene.skip_empty,
         };
-        let outputs: Vec<&wgpu::TextureView> = match &self.npass {
-            Some(npass) => npass.layers().layer_views.iter().collect(),
-            None => vec![&target.view],
+        let output = |resources: &[wgpu::BindingResource]| {
+            let entries: Vec<_> = resources
+                .iter()
+                .enumerate()
+                .map(|(i, resource)| wgpu::BindGroupEntry {
+                    binding: i as u32,
+                    resource: resource.clone(),
+                })
+                .collect();
+            device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("volume output"),
+                layout: &self.output_layout,
+                entries: &entries,
+            })
+        };
+        let view = wgpu::BindingResource::TextureView;
+        // (output group, views in the dispatch's z) per dispatch.
+        let outputs: Vec<(wgpu::BindGroup, u32)> = match (&self.npass, &self.tiled) {
+            (_, Some(tiled)) => {
+                let atlas = tiled.atlas.as_ref().expect("allocated by prepare");
+                let quilt = constants_buffer(
+                    device,
+                    "quilt layout",
+                    wgpu::BufferUsages::UNIFORM,
+                    bytemuck::bytes_of(&atlas.layout.uniform()),
+                );
+                let group = output(&[view(&atlas.color.view), quilt.as_entire_binding()]);
+                vec![(group, camera.views)]
+            }
+            (Some(npass), _) if self.method == Method::Layered => {
+                vec![(output(&[view(&npass.layers().array_view)]), camera.views)]
+            }
+            (Some(npass), _) => npass
+                .layers()
+                .layer_views
+                .iter()
+                .map(|layer| (output(&[view(layer)]), 1))
+                .collect(),
+            (None, None) => vec![(output(&[view(&target.view)]), 1)],
         };
         {
             let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
@@ -208,25 +336,28 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
             });
             pass.set_pipeline(self.pipelines.get(&key).expect("built by prepare"));
             pass.set_bind_group(0, &self.resources.frame.bind_group, &[]);
-            for (i, output) in outputs.iter().enumerate() {
-                let output_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-                    label: Some("volume output"),
-                    layout: &self.output_layout,
-                    entries: &[wgpu::BindGroupEntry {
-                        binding: 0,
-                        resource: wgpu::BindingResource::TextureView(output),
-                    }],
-                });
+            for (i, (output_group, views)) in outputs.iter().enumerate() {
                 let offset = self.resources.params.offset(i);
                 pass.set_bind_group(1, &volume_group, &[offset]);
-                pass.set_bind_group(2, &output_group, &[]);
-                pass.dispatch_workgroups(frame.size[0].div_ceil(8), frame.size[1].div_ceil(8), 1);
+                pass.set_bind_group(2, output_group, &[]);
+                let [w, h] = frame.size;
+                pass.dispatch_workgroups(w.div_ceil(8), h.div_ceil(8), *views);
             }
         }
         if let Some(npass) = &self.npass {
             npass.composite(device, encoder, &self.resources.frame, target);
         }
+        if let Some(tiled) = &self.tiled {
+            let atlas = tiled.atlas.as_ref().expect("allocated by prepare");
+            tiled
+                .compositor
+                .encode(device, encoder, &self.resources.frame, atlas, target);
+        }
         Ok(())
+    }
+
+    fn atlas(&self) -> Option<&Atlas> {
+        self.tiled.as_ref()?.atlas.as_ref()
     }
 }
 

@@ -1,0 +1,256 @@
+//! Layered duplication (Beck et al.): the mesh drawn once per pass into several layers of a
+//! texture array at once (wgpu multiview: `@builtin(view_index)` picks the layer's camera),
+//! each layer with its own depth, then the N-pass compositing. The adapter caps the layers per
+//! pass (`max_multiview_view_count`, 6 on lavapipe): the views are split into as few passes as
+//! that allows ([`MeshLayered::views_per_pass`]). Without multiview (GL) nothing can route one
+//! draw to several layers, so the method is one pass per layer: the N-pass renderer itself.
+
+use std::num::NonZeroU32;
+
+use super::{batches, draw_mesh, mesh_pipeline, views_buffer, views_entry, ViewBatch};
+use crate::error::Result;
+use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
+use crate::mesh::passes::npass::{MeshNPass, PreparedFor};
+use crate::mesh::MeshBuffers;
+use crate::render::npass::NPassHarness;
+use crate::render::pass_params::PassParams;
+use crate::render::pipeline::{begin_pass_to, bind_group_layout, cleared, PassTargets};
+use crate::render::pipeline_cache::PipelineCache;
+use crate::render::view_layers::DEPTH_FORMAT;
+use crate::render::{begin_prepare, check_prepared, check_target, Method, Renderer};
+use crate::target::{SpatialTarget, SPATIAL_FORMAT};
+
+/// The layered mesh renderer: multiview where the adapter has it, else one pass per layer.
+pub struct MeshLayered {
+    path: Path,
+}
+
+#[allow(clippy::large_enum_variant)]
+enum Path {
+    Multiview(Multiview),
+    PerLayer(MeshNPass),
+}
+
+impl MeshLayered {
+    /// Multiview if `device` has it (and at least 2 views per pass), else one pass per layer.
+    pub fn new(device: &wgpu::Device) -> Result<Self> {
+        let max = device.limits().max_multiview_view_count;
+        let path = if device.features().contains(wgpu::Features::MULTIVIEW) && max >= 2 {
+            Path::Multiview(Multiview::new(device, max)?)
+        } else {
+            Path::PerLayer(MeshNPass::new(device, Method::NPass)?)
+        };
+        Ok(Self { path })
+    }
+
+    /// Layers one pass renders: the adapter's multiview limit, or 1 without multiview.
+    pub fn views_per_pass(&self) -> u32 {
+        match &self.path {
+            Path::Multiview(m) => m.max_per_pass,
+            Path::PerLayer(_) => 1,
+        }
+    }
+
+    /// How this adapter renders the layers, in words (reports, the CLI).
+    pub fn describe(&self) -> String {
+        match &self.path {
+            Path::Multiview(m) => format!(
+                "multiview, at most {} layers per pass (the adapter's limit)",
+                m.max_per_pass
+            ),
+            Path::PerLayer(_) => {
+                "one pass per layer: the adapter has no multiview (MULTIVIEW)".to_string()
+            }
+        }
+    }
+}
+
+/// The multiview path's pipelines and scratch.
+struct Multiview {
+    max_per_pass: u32,
+    views_layout: wgpu::BindGroupLayout,
+    layout: wgpu::PipelineLayout,
+    frame: FrameBinding,
+    batch: PassParams<ViewBatch>,
+    /// By layers per pass.
+    pipelines: PipelineCache<u32, wgpu::RenderPipeline>,
+    npass: NPassHarness,
+    /// One depth layer per layer of a pass.
+    depth: Option<wgpu::Texture>,
+    prepared: Option<PreparedFor>,
+}
+
+impl Multiview {
+    fn new(device: &wgpu::Device, max_per_pass: u32) -> Result<Self> {
+        let frame_layout = frame_bind_group_layout(device);
+        let views_layout = bind_group_layout(
+            device,
+            "layered views",
+            &[
+                views_entry(0),
+                PassParams::<ViewBatch>::layout_entry(1, wgpu::ShaderStages::VERTEX),
+            ],
+        );
+        let layout = crate::render::pipeline::pipeline_layout(
+            device,
+            "mesh layered",
+            &[Some(&frame_layout), Some(&views_layout)],
+        );
+        Ok(Self {
+            max_per_pass,
+            views_layout,
+            layout,
+            batch: PassParams::new(device, "layered view batches"),
+            pipelines: PipelineCache::new("mesh layered"),
+            npass: NPassHarness::new(device, &frame_layout)?,
+            frame: FrameBinding::new(device, &frame_layout),
+            depth: None,
+            prepared: None,
+        })
+    }
+
+    fn prepare(&mut self, device: &wgpu::Device, frame: &Frame) -> Result<()> {
+        begin_prepare(device, frame, &mut self.prepared)?;
+        self.npass.prepare(device, frame)?;
+        let passes = batches(frame.camera.views, self.max_per_pass);
+        let deepest = passes.iter().map(|r| r.len() as u32).max().unwrap_or(1);
+        let fits = |d: &wgpu::Texture| {
+            [d.width(), d.height()] == frame.size && d.depth_or_array_layers() == deepest
+        };
+        if !self.depth.as_ref().is_some_and(fits) {
+            self.depth = None;
+            self.depth = Some(device.create_texture(&wgpu::TextureDescriptor {
+                label: Some("layered depth"),
+                size: wgpu::Extent3d {
+                    width: frame.size[0],
+                    height: frame.size[1],
+                    depth_or_array_layers: deepest,
+                },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format: DEPTH_FORMAT,
+                usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+                view_formats: &[],
+            }));
+        }
+        for layers in passes.iter().map(|r| r.len() as u32) {
+            let layout = &self.layout;
+            self.pipelines.prepare(device, layers, |modules| {
+                let module = modules.get(device, "mesh/layered.wgsl")?;
+                let targets = [Some(SPATIAL_FORMAT.into())];
+                let mask = multiview_mask(layers);
+                mesh_pipeline(device, "mesh layered", &module, layout, &targets, mask)
+            })?;
+        }
+        self.prepared = Some(PreparedFor::of(frame));
+        Ok(())
+    }
+
+    fn encode(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        mesh: &MeshBuffers,
+        frame: &Frame,
+        target: &SpatialTarget,
+    ) -> Result<()> {
+        check_target(frame, target)?;
+        check_prepared("MeshLayered", &self.prepared, &PreparedFor::of(frame))?;
+        self.frame.write(device, frame);
+        let passes = batches(frame.camera.views, self.max_per_pass);
+        let params: Vec<ViewBatch> = passes.iter().map(ViewBatch::of).collect();
+        self.batch.write(device, &params);
+        let views = views_buffer(device, &frame.camera);
+        let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("layered views"),
+            layout: &self.views_layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: views.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: self.batch.binding(),
+                },
+            ],
+        });
+        let layers = &self.npass.layers().texture;
+        let depth = self.depth.as_ref().expect("allocated by prepare");
+        let array = |texture: &wgpu::Texture, first: u32, count: u32| {
+            texture.create_view(&wgpu::TextureViewDescriptor {
+                label: Some("layered pass layers"),
+                dimension: Some(wgpu::TextureViewDimension::D2Array),
+                base_array_layer: first,
+                array_layer_count: Some(count),
+                ..Default::default()
+            })
+        };
+        for (i, range) in passes.iter().enumerate() {
+            let count = range.len() as u32;
+            let color = array(layers, range.start, count);
+            let depth = array(depth, 0, count);
+            let mut pass = begin_pass_to(
+                encoder,
+                "mesh layered",
+                PassTargets {
+                    colors: &[Some(cleared(&color, frame.background))],
+                    depth: Some(&depth),
+                    keep_depth: false,
+                    multiview_mask: multiview_mask(count),
+                },
+            );
+            pass.set_pipeline(self.pipelines.get(&count).expect("built by prepare"));
+            pass.set_bind_group(0, &self.frame.bind_group, &[]);
+            pass.set_bind_group(1, &group, &[self.batch.offset(i)]);
+            draw_mesh(&mut pass, mesh, 1);
+        }
+        self.npass.composite(device, encoder, &self.frame, target);
+        Ok(())
+    }
+}
+
+/// The multiview mask of `layers` layers: the lowest `layers` bits.
+fn multiview_mask(layers: u32) -> Option<NonZeroU32> {
+    NonZeroU32::new(u32::MAX >> (32 - layers.clamp(1, 32)))
+}
+
+impl Renderer<MeshBuffers> for MeshLayered {
+    fn prepare(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        mesh: &MeshBuffers,
+        frame: &Frame,
+    ) -> Result<()> {
+        match &mut self.path {
+            Path::Multiview(m) => m.prepare(device, frame),
+            Path::PerLayer(n) => n.prepare(device, queue, mesh, frame),
+        }
+    }
+
+    fn encode(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        mesh: &MeshBuffers,
+        frame: &Frame,
+        target: &SpatialTarget,
+    ) -> Result<()> {
+        match &mut self.path {
+            Path::Multiview(m) => m.encode(device, encoder, mesh, frame, target),
+            Path::PerLayer(n) => n.encode(device, encoder, mesh, frame, target),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn masks_have_the_lowest_bits() {
+        assert_eq!(super::multiview_mask(1).unwrap().get(), 1);
+        assert_eq!(super::multiview_mask(6).unwrap().get(), 0b11_1111);
+        assert_eq!(super::multiview_mask(32).unwrap().get(), u32::MAX);
+    }
+}

@@ -1,0 +1,172 @@
+//! The mesh duplication methods: every view's copy of the mesh in one draw, the way engines
+//! without this crate's single pass render multi-view images (the baselines it must beat).
+//!
+//! - [`MeshTiled`] (de Sorbier et al.): instanced per view into the tiles of one quilt atlas
+//!   with one depth buffer (`wgsl/mesh/tiled.wgsl`, `tiled_discard.wgsl`).
+//! - [`MeshLayered`] (Beck et al.): multiview into texture-array layers with per-layer depth
+//!   (`wgsl/mesh/layered.wgsl`); one pass per layer where the adapter has no multiview.
+//! - [`MeshMrt`] (de Sorbier, Nozick & Biri): ≤ 8 views per draw into multiple render targets
+//!   sharing one depth buffer (`wgsl/mesh/mrt.wgsl`).
+//!
+//! All of them transform and shade with `wgsl/mesh/shared/view_vertex.wgsl`, the N-pass's
+//! code, and take their cameras from [`MultiViewCamera::view_uniform`].
+
+mod layered;
+mod mrt;
+mod tiled;
+
+pub use layered::MeshLayered;
+pub use mrt::MeshMrt;
+pub use tiled::{MeshTiled, TileClip};
+
+use std::num::NonZeroU32;
+use std::ops::Range;
+
+use bytemuck::Zeroable;
+
+use crate::camera::{MultiViewCamera, ViewUniform};
+use crate::display::MAX_VIEWS;
+use crate::error::Result;
+use crate::mesh::MeshBuffers;
+use crate::render::pass_params::constants_buffer;
+use crate::render::view_layers::nearest_depth_test;
+
+/// The views one pass of the layered and MRT methods draws.
+/// Keep in sync with `ViewBatch` in wgsl/mesh/shared/view_vertex.wgsl.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct ViewBatch {
+    /// First view of the pass.
+    pub first: u32,
+    /// Views in the pass.
+    pub count: u32,
+    _pad: [u32; 2],
+}
+const _: () = assert!(std::mem::size_of::<ViewBatch>() == 16);
+crate::shader::gpu_layout!(ViewBatch, "ViewBatch", [first, count]);
+
+impl ViewBatch {
+    fn of(range: &Range<u32>) -> Self {
+        Self {
+            first: range.start,
+            count: range.len() as u32,
+            _pad: [0; 2],
+        }
+    }
+}
+
+/// Bytes of the per-view camera array (`array<View, MAX_VIEWS>` in the shaders).
+const VIEWS_BYTES: u64 = MAX_VIEWS as u64 * std::mem::size_of::<ViewUniform>() as u64;
+
+/// Every view's camera of `camera`, in a uniform buffer of this frame's own
+/// (`src/render/pass_params.rs` says why not a queue write).
+pub(crate) fn views_buffer(device: &wgpu::Device, camera: &MultiViewCamera) -> wgpu::Buffer {
+    let mut views = vec![ViewUniform::zeroed(); MAX_VIEWS as usize];
+    for (i, view) in views.iter_mut().enumerate().take(camera.views as usize) {
+        *view = camera.view_uniform(camera.view_offset(i as u32));
+    }
+    constants_buffer(
+        device,
+        "duplicated views",
+        wgpu::BufferUsages::UNIFORM,
+        bytemuck::cast_slice(&views),
+    )
+}
+
+/// The group-layout entry of [`views_buffer`] at `binding`.
+pub(crate) fn views_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+        ty: wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Uniform,
+            has_dynamic_offset: false,
+            min_binding_size: wgpu::BufferSize::new(VIEWS_BYTES),
+        },
+        count: None,
+    }
+}
+
+/// `views` split into the fewest passes of at most `max` views, as equal as possible (the
+/// first passes take the remainder).
+pub fn batches(views: u32, max: u32) -> Vec<Range<u32>> {
+    let max = max.max(1);
+    let passes = views.div_ceil(max).max(1);
+    let (base, extra) = (views / passes, views % passes);
+    let mut start = 0;
+    (0..passes)
+        .map(|i| {
+            let len = base + u32::from(i < extra);
+            let range = start..start + len;
+            start += len;
+            range
+        })
+        .collect()
+}
+
+/// A pipeline drawing `MeshBuffers` with `module`'s `vs_main` / `fs_main` into `targets`, with
+/// the nearest-depth test every mesh pass uses (and `multiview` layers, if any).
+pub(crate) fn mesh_pipeline(
+    device: &wgpu::Device,
+    label: &str,
+    module: &wgpu::ShaderModule,
+    layout: &wgpu::PipelineLayout,
+    targets: &[Option<wgpu::ColorTargetState>],
+    multiview_mask: Option<NonZeroU32>,
+) -> Result<wgpu::RenderPipeline> {
+    crate::gpu::checked(device, &format!("building the {label} pipeline"), || {
+        device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some(label),
+            layout: Some(layout),
+            vertex: wgpu::VertexState {
+                module,
+                entry_point: Some("vs_main"),
+                compilation_options: Default::default(),
+                buffers: &[Some(MeshBuffers::vertex_layout())],
+            },
+            // No culling: OBJ winding is not reliable; shading is two-sided.
+            primitive: wgpu::PrimitiveState::default(),
+            depth_stencil: Some(nearest_depth_test()),
+            multisample: Default::default(),
+            fragment: Some(wgpu::FragmentState {
+                module,
+                entry_point: Some("fs_main"),
+                compilation_options: Default::default(),
+                targets,
+            }),
+            multiview_mask,
+            cache: None,
+        })
+    })
+}
+
+/// Record the mesh's vertex and index buffers and draw `instances` copies of it.
+pub(crate) fn draw_mesh(pass: &mut wgpu::RenderPass<'_>, mesh: &MeshBuffers, instances: u32) {
+    pass.set_vertex_buffer(0, mesh.vertices.slice(..));
+    pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
+    pass.draw_indexed(0..mesh.index_count, 0, 0..instances);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::batches;
+
+    #[test]
+    fn batches_are_few_and_even() {
+        assert_eq!(batches(8, 6), vec![0..4, 4..8]);
+        assert_eq!(
+            batches(45, 8),
+            vec![0..8, 8..16, 16..24, 24..31, 31..38, 38..45]
+        );
+        assert_eq!(batches(1, 8), vec![0..1]);
+        assert_eq!(batches(6, 6), vec![0..6]);
+        for views in 1..=64 {
+            for max in 1..=9 {
+                let b = batches(views, max);
+                assert_eq!(b.len() as u32, views.div_ceil(max));
+                assert!(b.iter().all(|r| r.len() as u32 <= max && !r.is_empty()));
+                assert_eq!(b.last().unwrap().end, views);
+            }
+        }
+    }
+}

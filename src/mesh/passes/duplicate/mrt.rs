@@ -1,0 +1,167 @@
+//! MRT duplication (de Sorbier, Nozick & Biri): per pass, one instanced draw of up to 8 views'
+//! copies of the mesh over the whole image, each copy's fragments written with α = 1 to its
+//! own render target and α = 0 (blended away) to the others; the targets are layers of the
+//! N-pass's array and share one depth buffer, as in the paper. That sharing is the method's
+//! error: a nearer fragment of one view hides farther ones of the other views of its pass
+//! (measured against the N-pass in tests/duplication.rs).
+
+use super::{batches, draw_mesh, mesh_pipeline, views_buffer, views_entry, ViewBatch};
+use crate::error::Result;
+use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
+use crate::mesh::passes::npass::PreparedFor;
+use crate::mesh::MeshBuffers;
+use crate::render::npass::NPassHarness;
+use crate::render::pass_params::PassParams;
+use crate::render::pipeline::{
+    begin_pass_to, bind_group_layout, cleared, pipeline_layout, PassTargets,
+};
+use crate::render::pipeline_cache::PipelineCache;
+use crate::render::ViewLayers;
+use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
+use crate::target::{SpatialTarget, SPATIAL_FORMAT};
+
+/// Most render targets the paper (and `wgsl/mesh/mrt.wgsl`) writes per pass.
+pub const MAX_TARGETS: u32 = 8;
+
+/// The MRT mesh renderer.
+pub struct MeshMrt {
+    max_per_pass: u32,
+    views_layout: wgpu::BindGroupLayout,
+    layout: wgpu::PipelineLayout,
+    frame: FrameBinding,
+    batch: PassParams<ViewBatch>,
+    /// By render targets per pass.
+    pipelines: PipelineCache<u32, wgpu::RenderPipeline>,
+    npass: NPassHarness,
+    prepared: Option<PreparedFor>,
+}
+
+impl MeshMrt {
+    /// Layouts; pipelines are built per target count by `prepare`.
+    pub fn new(device: &wgpu::Device) -> Result<Self> {
+        let limits = device.limits();
+        let bytes_per_target = 4; // RGBA8
+        let max_per_pass = MAX_TARGETS
+            .min(limits.max_color_attachments)
+            .min(limits.max_color_attachment_bytes_per_sample / bytes_per_target)
+            .max(1);
+        let frame_layout = frame_bind_group_layout(device);
+        let views_layout = bind_group_layout(
+            device,
+            "mrt views",
+            &[
+                views_entry(0),
+                PassParams::<ViewBatch>::layout_entry(1, wgpu::ShaderStages::VERTEX_FRAGMENT),
+            ],
+        );
+        let layout = pipeline_layout(
+            device,
+            "mesh mrt",
+            &[Some(&frame_layout), Some(&views_layout)],
+        );
+        Ok(Self {
+            max_per_pass,
+            views_layout,
+            layout,
+            batch: PassParams::new(device, "mrt view batches"),
+            pipelines: PipelineCache::new("mesh mrt"),
+            npass: NPassHarness::new(device, &frame_layout)?,
+            frame: FrameBinding::new(device, &frame_layout),
+            prepared: None,
+        })
+    }
+
+    /// Views one pass renders (render targets): 8, or fewer where the adapter allows fewer.
+    pub fn views_per_pass(&self) -> u32 {
+        self.max_per_pass
+    }
+
+    /// Per-view images of the last frame (layer i = view i), if any.
+    pub fn view_layers(&self) -> Option<&ViewLayers> {
+        self.npass.view_layers()
+    }
+}
+
+impl Renderer<MeshBuffers> for MeshMrt {
+    fn prepare(
+        &mut self,
+        device: &wgpu::Device,
+        _queue: &wgpu::Queue,
+        _mesh: &MeshBuffers,
+        frame: &Frame,
+    ) -> Result<()> {
+        begin_prepare(device, frame, &mut self.prepared)?;
+        self.npass.prepare(device, frame)?;
+        for range in batches(frame.camera.views, self.max_per_pass) {
+            let targets = range.len() as u32;
+            let layout = &self.layout;
+            self.pipelines.prepare(device, targets, |modules| {
+                let module = modules.get(device, "mesh/mrt.wgsl")?;
+                let blended = Some(wgpu::ColorTargetState {
+                    format: SPATIAL_FORMAT,
+                    blend: Some(wgpu::BlendState::ALPHA_BLENDING),
+                    write_mask: wgpu::ColorWrites::ALL,
+                });
+                let states = vec![blended; targets as usize];
+                mesh_pipeline(device, "mesh mrt", &module, layout, &states, None)
+            })?;
+        }
+        self.prepared = Some(PreparedFor::of(frame));
+        Ok(())
+    }
+
+    fn encode(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        mesh: &MeshBuffers,
+        frame: &Frame,
+        target: &SpatialTarget,
+    ) -> Result<()> {
+        check_target(frame, target)?;
+        check_prepared("MeshMrt", &self.prepared, &PreparedFor::of(frame))?;
+        self.frame.write(device, frame);
+        let passes = batches(frame.camera.views, self.max_per_pass);
+        let params: Vec<ViewBatch> = passes.iter().map(ViewBatch::of).collect();
+        self.batch.write(device, &params);
+        let views = views_buffer(device, &frame.camera);
+        let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("mrt views"),
+            layout: &self.views_layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: views.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: self.batch.binding(),
+                },
+            ],
+        });
+        let layers = self.npass.layers();
+        for (i, range) in passes.iter().enumerate() {
+            let colors: Vec<_> = layers.layer_views[range.start as usize..range.end as usize]
+                .iter()
+                .map(|view| Some(cleared(view, frame.background)))
+                .collect();
+            let mut pass = begin_pass_to(
+                encoder,
+                "mesh mrt",
+                PassTargets {
+                    colors: &colors,
+                    depth: Some(&layers.depth_view),
+                    keep_depth: false,
+                    multiview_mask: None,
+                },
+            );
+            let targets = range.len() as u32;
+            pass.set_pipeline(self.pipelines.get(&targets).expect("built by prepare"));
+            pass.set_bind_group(0, &self.frame.bind_group, &[]);
+            pass.set_bind_group(1, &group, &[self.batch.offset(i)]);
+            draw_mesh(&mut pass, mesh, targets);
+        }
+        self.npass.composite(device, encoder, &self.frame, target);
+        Ok(())
+    }
+}

@@ -1,0 +1,196 @@
+//! Tiled duplication (de Sorbier et al.): one instanced draw, instance i = view i's copy of the
+//! mesh in view i's tile of a quilt atlas with one depth buffer; then the mask composites from
+//! the atlas. The atlas is a Looking Glass quilt as it stands ([`MeshTiled::atlas`]).
+
+use super::{draw_mesh, mesh_pipeline, views_buffer, views_entry};
+use crate::error::Result;
+use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
+use crate::mesh::passes::npass::PreparedFor;
+use crate::mesh::MeshBuffers;
+use crate::render::atlas::{Atlas, AtlasCompositor};
+use crate::render::pass_params::constants_buffer;
+use crate::render::pipeline::{
+    begin_pass_to, bind_group_layout, cleared, pipeline_layout, PassTargets,
+};
+use crate::render::quilt::QuiltLayout;
+use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
+use crate::target::{SpatialTarget, SPATIAL_FORMAT};
+
+/// How a copy is kept inside its tile.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum TileClip {
+    /// Clip distances where the adapter has them, else [`TileClip::Discard`].
+    #[default]
+    Auto,
+    /// Four clip distances per vertex (exact clipping before rasterisation; needs
+    /// `CLIP_DISTANCES`).
+    ClipDistances,
+    /// Fragments outside the tile are discarded (any adapter; costs early depth testing).
+    Discard,
+}
+
+impl TileClip {
+    /// Lower-case name (reports).
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Auto => "auto",
+            Self::ClipDistances => "clip-distances",
+            Self::Discard => "discard",
+        }
+    }
+
+    /// What `self` is on `device`: `Auto` resolved; `ClipDistances` fails with
+    /// `Error::MissingFeature` where the adapter has none.
+    pub fn resolve(self, device: &wgpu::Device) -> Result<Self> {
+        let has = device.features().contains(wgpu::Features::CLIP_DISTANCES);
+        match self {
+            Self::Auto if has => Ok(Self::ClipDistances),
+            Self::Auto => Ok(Self::Discard),
+            Self::ClipDistances => {
+                crate::gpu::require_features(
+                    device,
+                    wgpu::Features::CLIP_DISTANCES,
+                    "tiled rendering clipped by clip distances",
+                    "--tile-clip discard",
+                )?;
+                Ok(self)
+            }
+            Self::Discard => Ok(self),
+        }
+    }
+}
+
+/// The tiled mesh renderer.
+pub struct MeshTiled {
+    clip: TileClip,
+    pipeline: wgpu::RenderPipeline,
+    views_layout: wgpu::BindGroupLayout,
+    frame: FrameBinding,
+    compositor: AtlasCompositor,
+    atlas: Option<Atlas>,
+    prepared: Option<PreparedFor>,
+}
+
+impl MeshTiled {
+    /// Build the pipeline for `clip` (resolved on `device`).
+    pub fn new(device: &wgpu::Device, clip: TileClip) -> Result<Self> {
+        let clip = clip.resolve(device)?;
+        let frame_layout = frame_bind_group_layout(device);
+        let quilt_entry = wgpu::BindGroupLayoutEntry {
+            binding: 1,
+            visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+            ty: wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Uniform,
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+            count: None,
+        };
+        let views_layout = bind_group_layout(device, "tiled views", &[views_entry(0), quilt_entry]);
+        let stage = match clip {
+            TileClip::ClipDistances => "mesh/tiled.wgsl",
+            _ => "mesh/tiled_discard.wgsl",
+        };
+        let module = crate::shader::module(device, stage)?;
+        let layout = pipeline_layout(
+            device,
+            "mesh tiled",
+            &[Some(&frame_layout), Some(&views_layout)],
+        );
+        let targets = [Some(SPATIAL_FORMAT.into())];
+        let pipeline = mesh_pipeline(device, "mesh tiled", &module, &layout, &targets, None)?;
+        Ok(Self {
+            clip,
+            pipeline,
+            views_layout,
+            compositor: AtlasCompositor::new(device, &frame_layout)?,
+            frame: FrameBinding::new(device, &frame_layout),
+            atlas: None,
+            prepared: None,
+        })
+    }
+
+    /// How copies are clipped to their tiles on this adapter.
+    pub fn clip(&self) -> TileClip {
+        self.clip
+    }
+}
+
+impl Renderer<MeshBuffers> for MeshTiled {
+    fn prepare(
+        &mut self,
+        device: &wgpu::Device,
+        _queue: &wgpu::Queue,
+        _mesh: &MeshBuffers,
+        frame: &Frame,
+    ) -> Result<()> {
+        begin_prepare(device, frame, &mut self.prepared)?;
+        let layout = QuiltLayout::for_views(frame.camera.views, frame.size);
+        if !self.atlas.as_ref().is_some_and(|a| a.fits(&layout, true)) {
+            self.atlas = None; // free before allocating the replacement
+            self.atlas = Some(Atlas::new(device, layout, true)?);
+        }
+        self.prepared = Some(PreparedFor::of(frame));
+        Ok(())
+    }
+
+    fn encode(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        mesh: &MeshBuffers,
+        frame: &Frame,
+        target: &SpatialTarget,
+    ) -> Result<()> {
+        check_target(frame, target)?;
+        check_prepared("MeshTiled", &self.prepared, &PreparedFor::of(frame))?;
+        self.frame.write(device, frame);
+        let atlas = self.atlas.as_ref().expect("allocated by prepare");
+        let views = views_buffer(device, &frame.camera);
+        let quilt = constants_buffer(
+            device,
+            "quilt layout",
+            wgpu::BufferUsages::UNIFORM,
+            bytemuck::bytes_of(&atlas.layout.uniform()),
+        );
+        let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("tiled views"),
+            layout: &self.views_layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: views.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: quilt.as_entire_binding(),
+                },
+            ],
+        });
+        {
+            let depth = &atlas.depth.as_ref().expect("tiled atlases have depth").view;
+            // The depth is kept: it is each view's depth map (the MRT test's oracle).
+            let mut pass = begin_pass_to(
+                encoder,
+                "mesh tiled",
+                PassTargets {
+                    colors: &[Some(cleared(&atlas.color.view, frame.background))],
+                    depth: Some(depth),
+                    keep_depth: true,
+                    multiview_mask: None,
+                },
+            );
+            pass.set_pipeline(&self.pipeline);
+            pass.set_bind_group(0, &self.frame.bind_group, &[]);
+            pass.set_bind_group(1, &group, &[]);
+            draw_mesh(&mut pass, mesh, frame.camera.views);
+        }
+        self.compositor
+            .encode(device, encoder, &self.frame, atlas, target);
+        Ok(())
+    }
+
+    fn atlas(&self) -> Option<&Atlas> {
+        self.atlas.as_ref()
+    }
+}

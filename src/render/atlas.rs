@@ -1,0 +1,214 @@
+//! One texture holding every view as a tile of a Looking Glass quilt (`quilt.rs`): the tiled
+//! method's render target (with its one depth buffer), a quilt read from a file, and the
+//! compositing from either into the spatial image (`wgsl/render/composite_atlas.wgsl`).
+
+use super::pass_params::constants_buffer;
+use super::pipeline::{bind_group_layout, draw_fullscreen, fullscreen_pipeline};
+use super::quilt::QuiltLayout;
+use super::texture::{texture_2d, texture_2d_layout_entry, Texture2d};
+use super::view_layers::DEPTH_FORMAT;
+use crate::error::{Error, Result};
+use crate::frame::FrameBinding;
+use crate::image_io::RgbImage;
+use crate::target::{SpatialTarget, SPATIAL_FORMAT};
+
+/// The atlas texture (RGBA8, quilt layout) and, for rendering into it, one depth buffer.
+pub struct Atlas {
+    /// Where each view's tile is.
+    pub layout: QuiltLayout,
+    /// The colour atlas (render attachment, sampled, storage-writable, copy source).
+    pub(crate) color: Texture2d,
+    /// One depth buffer for every tile (render attachment, copy source), if rendered into.
+    pub(crate) depth: Option<Texture2d>,
+}
+
+impl Atlas {
+    /// An atlas of `layout`, with a depth buffer if `with_depth`, after checking its size
+    /// against the device limits.
+    pub fn new(device: &wgpu::Device, layout: QuiltLayout, with_depth: bool) -> Result<Self> {
+        let size = layout.size();
+        let limit = device.limits().max_texture_dimension_2d;
+        if size[0] > limit || size[1] > limit || size.contains(&0) {
+            return Err(Error::LimitExceeded {
+                what: format!(
+                    "quilt atlas side ({}x{} tiles of {}x{})",
+                    layout.cols, layout.rows, layout.tile[0], layout.tile[1]
+                ),
+                value: size[0].max(size[1]).into(),
+                limit: limit.into(),
+            });
+        }
+        let usage = wgpu::TextureUsages::RENDER_ATTACHMENT
+            | wgpu::TextureUsages::TEXTURE_BINDING
+            | wgpu::TextureUsages::STORAGE_BINDING
+            | wgpu::TextureUsages::COPY_SRC
+            | wgpu::TextureUsages::COPY_DST;
+        let scope = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
+        let color = texture_2d(device, "quilt atlas", size, SPATIAL_FORMAT, usage);
+        let depth = with_depth.then(|| {
+            let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC;
+            texture_2d(device, "quilt atlas depth", size, DEPTH_FORMAT, usage)
+        });
+        if let Some(e) = pollster::block_on(scope.pop()) {
+            return Err(Error::Gpu {
+                operation: format!("allocating a {}x{} quilt atlas", size[0], size[1]),
+                message: e.to_string(),
+            });
+        }
+        Ok(Self {
+            layout,
+            color,
+            depth,
+        })
+    }
+
+    /// An atlas holding `image`, a quilt of `layout` (its size must be the layout's).
+    pub fn from_image(
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        image: &RgbImage,
+        layout: QuiltLayout,
+    ) -> Result<Self> {
+        if [image.width, image.height] != layout.size() {
+            return Err(Error::invalid(
+                "quilt",
+                format!(
+                    "image is {}x{}, a {}x{} grid of {}x{} tiles is {}x{}",
+                    image.width,
+                    image.height,
+                    layout.cols,
+                    layout.rows,
+                    layout.tile[0],
+                    layout.tile[1],
+                    layout.size()[0],
+                    layout.size()[1]
+                ),
+            ));
+        }
+        let atlas = Self::new(device, layout, false)?;
+        let rgba: Vec<u8> = image
+            .data
+            .chunks_exact(3)
+            .flat_map(|p| [p[0], p[1], p[2], 255])
+            .collect();
+        queue.write_texture(
+            atlas.color.texture.as_image_copy(),
+            &rgba,
+            wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(image.width * 4),
+                rows_per_image: None,
+            },
+            atlas.color.texture.size(),
+        );
+        Ok(atlas)
+    }
+
+    /// The colour texture (RGBA8 with the spatial image's encoding).
+    pub fn texture(&self) -> &wgpu::Texture {
+        &self.color.texture
+    }
+
+    /// Whether this atlas is `layout` (and has depth if `with_depth`).
+    pub fn fits(&self, layout: &QuiltLayout, with_depth: bool) -> bool {
+        self.layout == *layout && self.depth.is_some() == with_depth
+    }
+
+    /// The quilt as an image (rows top-down, view 0 bottom-left).
+    pub fn read(&self, device: &wgpu::Device, queue: &wgpu::Queue) -> Result<RgbImage> {
+        let rgba = crate::readback::read_texture_rgba8(device, queue, &self.color.texture, 0)?;
+        Ok(RgbImage::from_rgba(self.layout.size(), &rgba))
+    }
+
+    /// The depth buffer as f32 texels (rows top-down), if there is one.
+    pub fn read_depth(&self, device: &wgpu::Device, queue: &wgpu::Queue) -> Result<Vec<f32>> {
+        let depth = self.depth.as_ref().ok_or_else(|| {
+            Error::invalid("quilt atlas", "has no depth buffer (only tiled renders do)")
+        })?;
+        let bytes = crate::readback::read_texture_rgba8(device, queue, &depth.texture, 0)?;
+        Ok(bytemuck::pod_collect_to_vec(&bytes))
+    }
+
+    /// GPU bytes (colour and depth).
+    pub fn bytes(&self) -> u64 {
+        let [w, h] = self.layout.size();
+        let per_texel = if self.depth.is_some() { 8 } else { 4 };
+        w as u64 * h as u64 * per_texel
+    }
+}
+
+/// Compositing from an atlas into the spatial image.
+pub struct AtlasCompositor {
+    pipeline: wgpu::RenderPipeline,
+    layout: wgpu::BindGroupLayout,
+}
+
+impl AtlasCompositor {
+    /// Build the pipeline; `frame_layout` is the shared group-0 layout.
+    pub fn new(device: &wgpu::Device, frame_layout: &wgpu::BindGroupLayout) -> Result<Self> {
+        let layout = bind_group_layout(
+            device,
+            "composite atlas",
+            &[
+                texture_2d_layout_entry(0, wgpu::ShaderStages::FRAGMENT),
+                wgpu::BindGroupLayoutEntry {
+                    binding: 1,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Buffer {
+                        ty: wgpu::BufferBindingType::Uniform,
+                        has_dynamic_offset: false,
+                        min_binding_size: None,
+                    },
+                    count: None,
+                },
+            ],
+        );
+        let module = crate::shader::module(device, "render/composite_atlas.wgsl")?;
+        let pipeline = fullscreen_pipeline(
+            device,
+            "composite atlas",
+            &module,
+            &[Some(frame_layout), Some(&layout)],
+            SPATIAL_FORMAT,
+        );
+        Ok(Self { pipeline, layout })
+    }
+
+    /// Record the compositing of `atlas` into `target` with `frame`'s mask.
+    pub fn encode(
+        &self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        frame: &FrameBinding,
+        atlas: &Atlas,
+        target: &SpatialTarget,
+    ) {
+        let quilt = constants_buffer(
+            device,
+            "quilt layout",
+            wgpu::BufferUsages::UNIFORM,
+            bytemuck::bytes_of(&atlas.layout.uniform()),
+        );
+        let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("composite atlas"),
+            layout: &self.layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: wgpu::BindingResource::TextureView(&atlas.color.view),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: quilt.as_entire_binding(),
+                },
+            ],
+        });
+        draw_fullscreen(
+            encoder,
+            "composite atlas",
+            &self.pipeline,
+            &[&frame.bind_group, &group],
+            &target.view,
+        );
+    }
+}

@@ -1,0 +1,189 @@
+//! The Looking Glass quilt layout: N view images tiled into one atlas, view 0 bottom-left,
+//! left → right then bottom → top. The tiled method renders into this layout, so its atlas is
+//! a quilt as it stands; `wgsl/shared/quilt.wgsl` addresses tiles the same way.
+
+use std::path::{Path, PathBuf};
+
+use crate::error::{Error, Result};
+
+/// Keep in sync with `Quilt` in wgsl/shared/quilt.wgsl.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct QuiltUniform {
+    /// Tiles per row and per column.
+    pub grid: [u32; 2],
+    /// Size of one tile in texels.
+    pub tile: [u32; 2],
+}
+
+crate::shader::gpu_layout!(QuiltUniform, "Quilt", [grid, tile]);
+const _: () = assert!(std::mem::size_of::<QuiltUniform>() == 16);
+
+/// A grid of `cols × rows` tiles of `tile` texels holding `views` views.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct QuiltLayout {
+    /// Tiles per row.
+    pub cols: u32,
+    /// Rows of tiles.
+    pub rows: u32,
+    /// Size of one view's tile in texels.
+    pub tile: [u32; 2],
+    /// Views stored (≤ cols × rows; the last tiles may be empty).
+    pub views: u32,
+}
+
+impl QuiltLayout {
+    /// The grid for `views` tiles of `tile`: the smallest largest side (so that the atlas fits
+    /// the texture limits best), then the fewest empty tiles, then more columns than rows.
+    pub fn for_views(views: u32, tile: [u32; 2]) -> Self {
+        let views = views.max(1);
+        let (cols, rows) = (1..=views)
+            .map(|cols| (cols, views.div_ceil(cols)))
+            .min_by_key(|&(cols, rows)| {
+                let side = (cols as u64 * tile[0] as u64).max(rows as u64 * tile[1] as u64);
+                (side, cols * rows - views, rows)
+            })
+            .expect("at least one grid");
+        Self {
+            cols,
+            rows,
+            tile,
+            views,
+        }
+    }
+
+    /// A given grid; fails when it has fewer tiles than `views`.
+    pub fn with_grid(cols: u32, rows: u32, tile: [u32; 2], views: u32) -> Result<Self> {
+        if cols == 0 || rows == 0 || (cols as u64 * rows as u64) < views as u64 {
+            return Err(Error::invalid(
+                "quilt",
+                format!("a {cols}x{rows} grid cannot hold {views} views"),
+            ));
+        }
+        Ok(Self {
+            cols,
+            rows,
+            tile,
+            views,
+        })
+    }
+
+    /// Size of the whole atlas in texels.
+    pub fn size(&self) -> [u32; 2] {
+        [
+            self.cols.saturating_mul(self.tile[0]),
+            self.rows.saturating_mul(self.tile[1]),
+        ]
+    }
+
+    /// Top-left texel of view `view`'s tile (image rows top-down; view 0 is bottom-left).
+    pub fn tile_origin(&self, view: u32) -> [u32; 2] {
+        let col = view % self.cols;
+        let row_from_top = self.rows - 1 - view / self.cols;
+        [col * self.tile[0], row_from_top * self.tile[1]]
+    }
+
+    /// Width / height of one view.
+    pub fn aspect(&self) -> f32 {
+        self.tile[0] as f32 / self.tile[1] as f32
+    }
+
+    /// The GPU form.
+    pub fn uniform(&self) -> QuiltUniform {
+        QuiltUniform {
+            grid: [self.cols, self.rows],
+            tile: self.tile,
+        }
+    }
+
+    /// The Looking Glass name suffix, `_qs{cols}x{rows}a{aspect}`.
+    pub fn suffix(&self) -> String {
+        let aspect = format!("{:.4}", self.aspect());
+        let aspect = aspect.trim_end_matches('0').trim_end_matches('.');
+        format!("_qs{}x{}a{aspect}", self.cols, self.rows)
+    }
+
+    /// `path` named as Looking Glass software expects: the suffix before the extension, unless
+    /// the name already ends in this layout's suffix.
+    pub fn file_name(&self, path: &Path) -> PathBuf {
+        let stem = path
+            .file_stem()
+            .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
+        let suffix = self.suffix();
+        if stem.ends_with(&suffix) {
+            return path.to_path_buf();
+        }
+        let ext = path
+            .extension()
+            .map_or_else(|| "png".to_string(), |e| e.to_string_lossy().into_owned());
+        path.with_file_name(format!("{stem}{suffix}.{ext}"))
+    }
+}
+
+/// Grid and view aspect read from a Looking Glass quilt name (`…_qs5x9a0.75.png`), if it has
+/// one.
+pub fn parse_quilt_name(name: &str) -> Option<(u32, u32, f32)> {
+    let at = name.rfind("_qs")?;
+    let rest = &name[at + 3..];
+    let (cols, rest) = rest.split_once('x')?;
+    let (rows, rest) = rest.split_once('a')?;
+    let aspect: String = rest
+        .chars()
+        .take_while(|c| c.is_ascii_digit() || *c == '.')
+        .collect();
+    let aspect = aspect.trim_end_matches('.');
+    let (cols, rows, aspect) = (
+        cols.parse().ok()?,
+        rows.parse().ok()?,
+        aspect.parse::<f32>().ok()?,
+    );
+    (cols > 0 && rows > 0 && aspect.is_finite() && aspect > 0.0).then_some((cols, rows, aspect))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn grids_hold_every_view_and_stay_compact() {
+        for views in 1..=100 {
+            let q = QuiltLayout::for_views(views, [512, 512]);
+            assert!(q.cols * q.rows >= views, "{views}: {q:?}");
+            assert!(
+                q.cols * q.rows - views < q.cols.max(q.rows),
+                "{views}: {q:?}"
+            );
+        }
+        let q = QuiltLayout::for_views(8, [512, 512]);
+        assert_eq!((q.cols, q.rows), (3, 3));
+        let q = QuiltLayout::for_views(45, [420, 560]);
+        assert!(q.size()[0].max(q.size()[1]) <= 3360, "{q:?}");
+    }
+
+    #[test]
+    fn view_zero_is_bottom_left_then_left_to_right_bottom_to_top() {
+        let q = QuiltLayout::with_grid(3, 2, [10, 20], 5).unwrap();
+        assert_eq!(q.tile_origin(0), [0, 20]);
+        assert_eq!(q.tile_origin(2), [20, 20]);
+        assert_eq!(q.tile_origin(3), [0, 0]);
+        assert_eq!(q.tile_origin(4), [10, 0]);
+        assert!(QuiltLayout::with_grid(2, 2, [1, 1], 5).is_err());
+    }
+
+    #[test]
+    fn names_follow_looking_glass_and_parse_back() {
+        let q = QuiltLayout::with_grid(5, 9, [420, 560], 45).unwrap();
+        assert_eq!(q.suffix(), "_qs5x9a0.75");
+        let named = q.file_name(Path::new("out/dragon.png"));
+        assert_eq!(named, Path::new("out/dragon_qs5x9a0.75.png"));
+        assert_eq!(q.file_name(&named), named);
+        let name = named.file_name().unwrap().to_str().unwrap();
+        assert_eq!(parse_quilt_name(name), Some((5, 9, 0.75)));
+        let square = QuiltLayout::with_grid(3, 3, [64, 64], 8).unwrap();
+        assert_eq!(square.suffix(), "_qs3x3a1");
+        assert_eq!(parse_quilt_name("x_qs3x3a1.png"), Some((3, 3, 1.0)));
+        assert_eq!(parse_quilt_name("plain.png"), None);
+        assert_eq!(parse_quilt_name("x_qs0x3a1.png"), None);
+        assert_eq!(parse_quilt_name("x_qs3x3a.png"), None);
+    }
+}
