@@ -51,6 +51,7 @@ pub const STAGES: &[(&str, &str)] = &[
     wgsl!("mesh/mrt.wgsl"),
     wgsl!("render/composite.wgsl"),
     wgsl!("render/composite_atlas.wgsl"),
+    wgsl!("render/depth_readback.wgsl"),
     wgsl!("render/output.wgsl"),
     wgsl!("render/storage_fence.wgsl"),
     wgsl!("mesh/single_pass_cover.wgsl"),

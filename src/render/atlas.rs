@@ -18,7 +18,7 @@ pub struct Atlas {
     pub layout: QuiltLayout,
     /// The colour atlas (render attachment, sampled, storage-writable, copy source).
     pub(crate) color: Texture2d,
-    /// One depth buffer for every tile (render attachment, copy source), if rendered into.
+    /// One depth buffer for every tile (render attachment, sampled), if rendered into.
     pub(crate) depth: Option<Texture2d>,
 }
 
@@ -46,7 +46,8 @@ impl Atlas {
         let scope = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
         let color = texture_2d(device, "quilt atlas", size, SPATIAL_FORMAT, usage);
         let depth = with_depth.then(|| {
-            let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC;
+            let usage =
+                wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
             texture_2d(device, "quilt atlas depth", size, DEPTH_FORMAT, usage)
         });
         if let Some(e) = pollster::block_on(scope.pop()) {
@@ -125,8 +126,7 @@ impl Atlas {
         let depth = self.depth.as_ref().ok_or_else(|| {
             Error::invalid("quilt atlas", "has no depth buffer (only tiled renders do)")
         })?;
-        let bytes = crate::readback::read_texture_rgba8(device, queue, &depth.texture, 0)?;
-        Ok(bytemuck::pod_collect_to_vec(&bytes))
+        super::depth_readback::read_depth(device, queue, &depth.texture)
     }
 
     /// GPU bytes (colour and depth).
@@ -210,5 +210,66 @@ impl AtlasCompositor {
             &[&frame.bind_group, &group],
             &target.view,
         );
+    }
+}
+
+/// A quilt (an [`Atlas`], e.g. read from a file with [`Atlas::from_image`]) interleaved for a
+/// display: the frame's mask picks each subpixel's view tile.
+pub struct QuiltInterleaver {
+    compositor: AtlasCompositor,
+    frame: FrameBinding,
+}
+
+impl QuiltInterleaver {
+    /// Build the compositing pipeline.
+    pub fn new(device: &wgpu::Device) -> Result<Self> {
+        let frame_layout = crate::frame::frame_bind_group_layout(device);
+        Ok(Self {
+            compositor: AtlasCompositor::new(device, &frame_layout)?,
+            frame: FrameBinding::new(device, &frame_layout),
+        })
+    }
+
+    /// Record the interleaving of `atlas` for `frame`'s display into `target`. Fails when the
+    /// quilt holds fewer views than the display shows or the target is not the frame's size.
+    pub fn encode(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        atlas: &Atlas,
+        frame: &crate::frame::Frame,
+        target: &SpatialTarget,
+    ) -> Result<()> {
+        super::check_target(frame, target)?;
+        if atlas.layout.views < frame.camera.views {
+            return Err(Error::invalid(
+                "quilt",
+                format!(
+                    "holds {} views, the display shows {}",
+                    atlas.layout.views, frame.camera.views
+                ),
+            ));
+        }
+        self.frame.write(device, frame);
+        self.compositor
+            .encode(device, encoder, &self.frame, atlas, target);
+        Ok(())
+    }
+
+    /// Encode, submit and wait.
+    pub fn render(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        atlas: &Atlas,
+        frame: &crate::frame::Frame,
+        target: &SpatialTarget,
+    ) -> Result<()> {
+        let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+            label: Some("interleave quilt"),
+        });
+        self.encode(device, &mut encoder, atlas, frame, target)?;
+        queue.submit([encoder.finish()]);
+        crate::readback::wait_idle(device)
     }
 }

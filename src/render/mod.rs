@@ -19,6 +19,7 @@
 mod any;
 pub mod atlas;
 pub mod composite;
+pub(crate) mod depth_readback;
 pub(crate) mod dispatch;
 pub mod gpu_buffer;
 pub mod mask_image;
