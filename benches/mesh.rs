@@ -1,5 +1,5 @@
-//! Meshes: single-pass (every visibility mode) vs N-pass vs single view, side by side in one
-//! process on one adapter. Full Stanford dragon (871k triangles) and res2 (203k), 512²,
+//! Meshes: single-pass (every visibility mode) vs N-pass vs single view vs the duplication
+//! methods (tiled, layered, MRT), side by side in one process on one adapter. Full Stanford dragon (871k triangles) and res2 (203k), 512²,
 //! N = 8 (the paper's 8-view display) and N = 32 (a slanted display with the same lens).
 //! GPU time per frame from timestamp queries where the adapter has them.
 //!
@@ -15,7 +15,8 @@ use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::{
-    MeshNPass, MeshSinglePass, MeshSinglePassOptions, Method, Renderer, Visibility,
+    MeshLayered, MeshMrt, MeshNPass, MeshSinglePass, MeshSinglePassOptions, MeshTiled, Method,
+    Renderer, TileClip, Visibility,
 };
 use autostereo::target::SpatialTarget;
 use autostereo::timing::FrameTimer;
@@ -57,6 +58,14 @@ fn bench(c: &mut Criterion) {
         )
     })
     .collect();
+    let mut duplication: Vec<(&str, Box<dyn Renderer<MeshBuffers>>)> = vec![
+        (
+            "tiled",
+            Box::new(MeshTiled::new(device, TileClip::Auto).unwrap()),
+        ),
+        ("layered", Box::new(MeshLayered::new(device).unwrap())),
+        ("mrt", Box::new(MeshMrt::new(device).unwrap())),
+    ];
     for (mesh_name, file) in [
         ("dragon", "dragon_vrip.obj"),
         ("dragon-res2", "dragon_vrip_res2.obj"),
@@ -98,6 +107,14 @@ fn bench(c: &mut Criterion) {
                     single_view.encode(device, e, &buffers, &frame, &target)
                 })
             });
+            for (name, renderer) in &mut duplication {
+                group.bench_function(*name, |b| {
+                    renderer.prepare(device, queue, &buffers, &frame).unwrap();
+                    gpu_iter(b, &timer, device, queue, |e| {
+                        renderer.encode(device, e, &buffers, &frame, &target)
+                    })
+                });
+            }
             group.finish();
         }
     }

@@ -56,6 +56,8 @@ fn bench(c: &mut Criterion) {
             "single-view",
             splatter(Method::SingleView, SplatDepth::Exact),
         ),
+        ("tiled", splatter(Method::Tiled, SplatDepth::Exact)),
+        ("layered", splatter(Method::Layered, SplatDepth::Exact)),
     ];
     for views in [2u32, 8, 64] {
         let display = Display::parse(&format!("slanted:{views},8,2/3,7/6")).unwrap();

@@ -61,6 +61,8 @@ fn bench(c: &mut Criterion) {
         ),
         ("n-pass", raycaster(Method::NPass), true),
         ("single-view", raycaster(Method::SingleView), true),
+        ("tiled", raycaster(Method::Tiled), true),
+        ("layered", raycaster(Method::Layered), true),
     ];
     for (name, volume, tf) in data_sets() {
         let transfer = TransferFunction::preset(tf).unwrap();

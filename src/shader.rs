@@ -37,6 +37,9 @@ const SHARED: &[(&str, &str)] = &[
     wgsl!("volume/shared/march.wgsl"),
     wgsl!("points/shared/splat.wgsl"),
     wgsl!("points/shared/splat_quad.wgsl"),
+    wgsl!("points/shared/cover_rect.wgsl"),
+    wgsl!("points/shared/ray_sample.wgsl"),
+    wgsl!("points/shared/view_quad.wgsl"),
 ];
 
 /// One WGSL file per pipeline stage, by path under `wgsl/`: `render/` for the frame-level
@@ -70,6 +73,8 @@ pub const STAGES: &[(&str, &str)] = &[
     wgsl!("points/pixel.wgsl"),
     wgsl!("points/subpixel.wgsl"),
     wgsl!("points/composite.wgsl"),
+    wgsl!("points/tiled.wgsl"),
+    wgsl!("points/layered.wgsl"),
 ];
 
 /// The byte layout of a `#[repr(C)]` Rust struct that mirrors WGSL struct `wgsl`: its size and

@@ -1,5 +1,5 @@
-//! The per-view duplication methods (tiled, layered, MRT) against the N-pass oracle, for meshes
-//! and volumes, on several displays and N = 1, 2, 8, 45; the quilt round trip; MRT's occlusion
+//! The per-view duplication methods (tiled, layered, MRT) against the N-pass oracle, for meshes,
+//! points and volumes, on several displays and N = 1, 2, 8, 45; the quilt round trip; MRT's occlusion
 //! error explained by the shared depth buffer.
 
 mod common;
@@ -7,13 +7,15 @@ mod common;
 use autostereo::camera::Bounds;
 use autostereo::frame::Frame;
 use autostereo::image_io::{compare, ImageDiff, RgbImage};
-use autostereo::mesh::passes::duplicate::batches;
 use autostereo::mesh::{Mesh, MeshBuffers};
+use autostereo::points::passes::DEFAULT_EPSILON_FRACTION;
+use autostereo::points::{GroupCount, PointCloud, SplatScene};
 use autostereo::render::atlas::{Atlas, QuiltInterleaver};
+use autostereo::render::batches::batches;
 use autostereo::render::quilt::{parse_quilt_name, QuiltLayout};
 use autostereo::render::{
-    AnyRenderer, AnyScene, MeshMrt, MeshNPass, MeshTiled, Method, Renderer, TileClip,
-    VolumeRaycaster, VolumeScene,
+    AnyRenderer, AnyScene, MeshMrt, MeshNPass, MeshTiled, Method, PointSplatter, Renderer,
+    SplatOptions, TileClip, VolumeRaycaster, VolumeScene,
 };
 use autostereo::target::SpatialTarget;
 use autostereo::volume::{phantom, TransferFunction};
@@ -207,6 +209,30 @@ fn mrt_error_is_what_the_shared_depth_buffer_explains() {
     }
 }
 
+#[test]
+fn points_tiled_and_layered_match_the_npass() {
+    let (splats, _) = PointCloud::torus_scene().complete(1.0).unwrap();
+    let device = common::gpu().device.clone();
+    let scene = SplatScene::new(&device, &splats, GroupCount::Auto).unwrap();
+    let options = SplatOptions::for_scene(&scene, DEFAULT_EPSILON_FRACTION);
+    let error = PointSplatter::new(&device, Method::Mrt, options)
+        .err()
+        .unwrap();
+    assert!(error.to_string().contains("meshes only"), "{error}");
+    for &(spec, size) in DISPLAYS {
+        let frame = common::frame(splats.bounds().unwrap(), spec, 0.15, 1.0, size);
+        let mut npass = PointSplatter::new(&device, Method::NPass, options).unwrap();
+        let oracle = render(&mut npass, &scene, &frame);
+        for method in [Method::Tiled, Method::Layered] {
+            let mut renderer = PointSplatter::new(&device, method, options).unwrap();
+            let image = render(&mut renderer, &scene, &frame);
+            let name = format!("points-{method}-{spec}");
+            let diff = assert_matches(&name, &image, &oracle);
+            eprintln!("{name} ({}): {diff:?}", renderer.describe());
+        }
+    }
+}
+
 fn head_scene() -> (VolumeScene, Bounds) {
     let ctx = common::gpu();
     let head = phantom::ct_head(24).unwrap();
@@ -245,7 +271,14 @@ fn quilt_out_interleaved_again_is_the_tiled_image() {
     let (scene, bounds) = head_scene();
     let volume = AnyScene::Volume(Box::new(scene));
     let meshes = AnyScene::Mesh(buffers);
-    for (scene, bounds) in [(&meshes, mesh.bounds().unwrap()), (&volume, bounds)] {
+    let (splats, _) = PointCloud::torus_scene().complete(1.0).unwrap();
+    let points = AnyScene::Points(SplatScene::new(&device, &splats, GroupCount::Auto).unwrap());
+    let cases = [
+        (&meshes, mesh.bounds().unwrap()),
+        (&volume, bounds),
+        (&points, splats.bounds().unwrap()),
+    ];
+    for (scene, bounds) in cases {
         for &(spec, size) in &DISPLAYS[2..] {
             let frame = common::frame(bounds, spec, 0.15, 1.0, size);
             let mut tiled = AnyRenderer::new(&device, scene, Method::Tiled).unwrap();

@@ -18,6 +18,7 @@
 
 mod any;
 pub mod atlas;
+pub mod batches;
 pub mod composite;
 pub(crate) mod depth_readback;
 pub(crate) mod dispatch;

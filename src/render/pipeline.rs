@@ -194,3 +194,18 @@ pub(crate) fn storage_entry(
         count: None,
     }
 }
+
+/// The multiview mask of `layers` layers: the lowest `layers` bits.
+pub(crate) fn multiview_mask(layers: u32) -> Option<std::num::NonZeroU32> {
+    std::num::NonZeroU32::new(u32::MAX >> (32 - layers.clamp(1, 32)))
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn masks_have_the_lowest_bits() {
+        assert_eq!(super::multiview_mask(1).unwrap().get(), 1);
+        assert_eq!(super::multiview_mask(6).unwrap().get(), 0b11_1111);
+        assert_eq!(super::multiview_mask(32).unwrap().get(), u32::MAX);
+    }
+}

@@ -142,6 +142,47 @@ impl ViewLayers {
     }
 }
 
+/// A depth array of `layers` layers of `size` (multiview passes: one depth layer per view
+/// layer), reusing `slot` when it already fits.
+pub(crate) fn depth_array<'a>(
+    slot: &'a mut Option<wgpu::Texture>,
+    device: &wgpu::Device,
+    size: [u32; 2],
+    layers: u32,
+) -> &'a wgpu::Texture {
+    let fits =
+        |d: &wgpu::Texture| [d.width(), d.height()] == size && d.depth_or_array_layers() == layers;
+    if !slot.as_ref().is_some_and(fits) {
+        *slot = None; // free before allocating the replacement
+        *slot = Some(device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("multiview depth"),
+            size: wgpu::Extent3d {
+                width: size[0],
+                height: size[1],
+                depth_or_array_layers: layers,
+            },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: DEPTH_FORMAT,
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+            view_formats: &[],
+        }));
+    }
+    slot.as_ref().expect("allocated above")
+}
+
+/// Layers `first .. first + count` of `texture` as one array view (a multiview attachment).
+pub(crate) fn layer_range(texture: &wgpu::Texture, first: u32, count: u32) -> wgpu::TextureView {
+    texture.create_view(&wgpu::TextureViewDescriptor {
+        label: Some("multiview layers"),
+        dimension: Some(wgpu::TextureViewDimension::D2Array),
+        base_array_layer: first,
+        array_layer_count: Some(count),
+        ..Default::default()
+    })
+}
+
 /// Array layers to allocate for `layers` usable ones of `size`: never 1, and never a multiple
 /// of 6 when the layers are square. wgpu's GL backend picks the GL texture target from the
 /// descriptor alone: one layer makes a plain `TEXTURE_2D` and square multiples of 6 make a cube

@@ -16,19 +16,24 @@ override SUBPIXEL_DEPTH: bool = false;
 
 const FAR: f32 = 3.0e38;
 
+// The layer of group g (the layered method keeps N views per group, group-major).
+fn group_layer(g: u32) -> u32 {
+    return g * params.group_stride + params.group_base;
+}
+
 // Normalised colour of one subpixel from the (packed, depth bits) samples of every group.
 fn blend_subpixel(coord: vec2<u32>, background: f32) -> f32 {
     let layers = params.groups;
     var nearest = FAR;
     for (var g = 0u; g < layers; g++) {
-        let t = textureLoad(groups, coord, g, 0).xy;
+        let t = textureLoad(groups, coord, group_layer(g), 0).xy;
         if (t.y != 0u) {
             nearest = min(nearest, bitcast<f32>(t.y));
         }
     }
     var sum = vec2<f32>(0.0);
     for (var g = 0u; g < layers; g++) {
-        let t = textureLoad(groups, coord, g, 0).xy;
+        let t = textureLoad(groups, coord, group_layer(g), 0).xy;
         if (t.y != 0u && bitcast<f32>(t.y) <= nearest + params.epsilon) {
             sum += unpack2x16float(t.x);
         }
@@ -50,7 +55,7 @@ fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
     let layers = params.groups;
     var nearest = FAR;
     for (var g = 0u; g < layers; g++) {
-        let t = textureLoad(groups, px, g, 0);
+        let t = textureLoad(groups, px, group_layer(g), 0);
         if (t.w != 0u) {
             nearest = min(nearest, bitcast<f32>(t.w));
         }
@@ -58,7 +63,7 @@ fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
     var color = vec3<f32>(0.0);
     var weight = vec3<f32>(0.0);
     for (var g = 0u; g < layers; g++) {
-        let t = textureLoad(groups, px, g, 0);
+        let t = textureLoad(groups, px, group_layer(g), 0);
         if (t.w != 0u && bitcast<f32>(t.w) <= nearest + params.epsilon) {
             let r = unpack2x16float(t.x);
             let gr = unpack2x16float(t.y);

@@ -4,6 +4,7 @@
 // depths — for the in-group z-test and the ε test of the compositing. Exact when K = 1 (pixel
 // masks, the N-pass views, the single view).
 #import points/shared/splat_quad.wgsl
+#import points/shared/ray_sample.wgsl
 
 // Bindings read by points/shared/splat_quad.wgsl.
 @group(1) @binding(0) var<storage, read> eye_splats: array<Splat>;
@@ -14,11 +15,6 @@
 // Bindings read by shared/frame.wgsl.
 @group(0) @binding(0) var<uniform> frame: Frame;
 
-struct PixelOut {
-    @location(0) packed: vec4<u32>, // xyz: pack2x16float(colour_c · w_c, w_c); w: depth bits
-    @builtin(frag_depth) depth: f32,
-}
-
 @fragment
 fn fs_main(in: SplatQuadOut) -> PixelOut {
     let s = quad_splat(in);
@@ -28,23 +24,16 @@ fn fs_main(in: SplatQuadOut) -> PixelOut {
     var hits = 0.0;
     let rays = select(VIEWS_PER_PIXEL, 1u, params.use_mask == 0u);
     for (var c = 0u; c < rays; c++) {
-        let ray = offset_ray(in.position.xy, pass_offset(px, c));
-        let hit = splat_hit(ray, s);
-        if (hit.weight <= 0.0) {
+        let r = ray_sample(s, in.position.xy, pass_offset(px, c));
+        if (r.weight <= 0.0) {
             continue;
         }
-        let color = splat_color(s, ray, hit) * hit.weight;
         if (rays == 1u) {
-            packed = vec4<u32>(
-                pack2x16float(vec2<f32>(color.r, hit.weight)),
-                pack2x16float(vec2<f32>(color.g, hit.weight)),
-                pack2x16float(vec2<f32>(color.b, hit.weight)),
-                0u,
-            );
+            packed = one_ray_texel(r).packed;
         } else {
-            packed[c] = pack2x16float(vec2<f32>(color[c], hit.weight));
+            packed[c] = pack2x16float(vec2<f32>(r.color[c], r.weight));
         }
-        depth_sum += hit.depth;
+        depth_sum += r.depth;
         hits += 1.0;
     }
     if (hits == 0.0) {

@@ -7,6 +7,7 @@
 //! the display mask choosing each subpixel's ray; the N-pass baseline does it per view with the
 //! same kernel, ε and groups, then mask-composites; the single view once from the centre.
 
+mod duplicate;
 mod group_images;
 mod pipelines;
 
@@ -15,10 +16,11 @@ use crate::render::Method;
 pub use pipelines::SplatParams;
 
 use self::group_images::{GroupImages, GroupImagesKey};
-use self::pipelines::{Layouts, Pipelines, SplatPipelineKey, COVER_WORKGROUP};
+use self::pipelines::{Geometry, Layouts, Pipelines, SplatPipelineKey, COVER_WORKGROUP};
 use crate::error::{Error, Result};
 use crate::frame::{Frame, FrameBinding};
 use crate::points::SplatScene;
+use crate::render::atlas::{Atlas, AtlasCompositor};
 use crate::render::dispatch::dispatch_2d;
 use crate::render::gpu_buffer::GpuBuffer;
 use crate::render::npass::NPassHarness;
@@ -97,6 +99,11 @@ struct Scratch {
 /// Point-splat renderer for one [`Method`].
 pub struct PointSplatter {
     method: Method,
+    /// How `method` renders on this adapter: itself, or the N-pass for layered without
+    /// multiview.
+    path: Method,
+    /// Layered: layers per multiview pass.
+    max_per_pass: u32,
     options: SplatOptions,
     layouts: Layouts,
     frame: FrameBinding,
@@ -104,8 +111,13 @@ pub struct PointSplatter {
     pipelines: PipelineCache<SplatPipelineKey, Pipelines>,
     scratch: Option<Scratch>,
     images: Option<GroupImages>,
-    /// N-pass only.
+    /// N-pass and layered only.
     npass: Option<NPassHarness>,
+    /// Tiled only: the quilt atlas the views are composited into, and its compositor.
+    atlas: Option<Atlas>,
+    atlas_compositor: Option<AtlasCompositor>,
+    /// Layered only: a depth layer per layer of a multiview pass.
+    layer_depth: Option<wgpu::Texture>,
     prepared: Option<PreparedFor>,
     fence: StorageFence,
 }
@@ -114,22 +126,36 @@ impl PointSplatter {
     /// Prepare layouts; pipelines are built per display specialisation on first use.
     pub fn new(device: &wgpu::Device, method: Method, options: SplatOptions) -> Result<Self> {
         options.validate()?;
-        if Method::DUPLICATION.contains(&method) {
+        if method == Method::Mrt {
             return Err(Error::invalid(
                 "method",
-                format!(
-                    "{method} is not implemented for points yet (meshes and volumes have it); \
-                     use single-pass, n-pass or single-view"
-                ),
+                "mrt renders meshes only: a splat group image texel is 16 bytes and adapters \
+                 allow 32 bytes of render targets per sample, so MRT would hold 2 views per \
+                 pass; tiled and layered duplicate splats",
             ));
         }
+        let max_per_pass = device.limits().max_multiview_view_count;
+        let multiview = device.features().contains(wgpu::Features::MULTIVIEW) && max_per_pass >= 2;
+        let path = match method {
+            Method::Layered if !multiview => Method::NPass,
+            m => m,
+        };
         let layouts = Layouts::new(device);
-        let npass = match method {
-            Method::NPass => Some(NPassHarness::new(device, &layouts.frame)?),
+        let npass = match path {
+            Method::NPass | Method::Layered => Some(NPassHarness::new(device, &layouts.frame)?),
+            _ => None,
+        };
+        let atlas_compositor = match path {
+            Method::Tiled => Some(AtlasCompositor::new(device, &layouts.frame)?),
             _ => None,
         };
         Ok(Self {
             method,
+            path,
+            max_per_pass,
+            atlas: None,
+            atlas_compositor,
+            layer_depth: None,
             options,
             frame: FrameBinding::new(device, &layouts.frame),
             params: PassParams::new(device, "splat pass constants"),
@@ -164,12 +190,28 @@ impl PointSplatter {
             .as_ref()
             .and_then(|n| n.view_layers())
             .map_or(0, |l| l.bytes(4));
-        scratch + images + layers
+        let atlas = self.atlas.as_ref().map_or(0, Atlas::bytes);
+        scratch + images + layers + atlas
+    }
+
+    /// How this adapter renders the method, in words (the layered method without multiview
+    /// is one pass per layer: the N-pass).
+    pub fn describe(&self) -> String {
+        match (self.method, self.path) {
+            (Method::Layered, Method::Layered) => format!(
+                "multiview, at most {} layers per pass (the adapter's limit)",
+                self.max_per_pass
+            ),
+            (Method::Layered, _) => {
+                "one pass per layer: the adapter has no multiview (MULTIVIEW)".to_string()
+            }
+            (m, _) => m.name().to_string(),
+        }
     }
 
     /// Whether `frame` renders with per-subpixel depth images.
     fn subpixel(&self, frame: &Frame) -> bool {
-        self.method == Method::SinglePass
+        self.path == Method::SinglePass
             && self.options.depth == SplatDepth::Exact
             && frame.display.views_per_pixel() > 1
     }
@@ -184,9 +226,12 @@ impl PointSplatter {
             use_mask: 0,
             epsilon: self.options.epsilon,
             groups,
-            _pad: [0.0; 2],
+            group_stride: 1,
+            group_base: 0,
+            first_view: 0,
+            _pad: [0; 3],
         };
-        match self.method {
+        match self.path {
             Method::SinglePass => vec![SplatParams {
                 cover_lo: -camera.max_offset(),
                 cover_hi: camera.max_offset(),
@@ -197,7 +242,11 @@ impl PointSplatter {
             Method::NPass => (0..camera.views)
                 .map(|i| fixed(camera.view_offset(i)))
                 .collect(),
-            Method::Tiled | Method::Layered | Method::Mrt => unreachable!("refused by new"),
+            Method::Tiled => vec![fixed(0.0)],
+            Method::Layered => {
+                duplicate::layered_passes(fixed(0.0), camera.views, self.max_per_pass)
+            }
+            Method::Mrt => unreachable!("refused by new"),
         }
     }
 
@@ -237,10 +286,27 @@ impl PointSplatter {
         } else {
             1
         };
-        let size = [frame.size[0].saturating_mul(k), frame.size[1]];
+        let (size, groups) = match self.path {
+            Method::Tiled => {
+                let layout = self.quilt_layout(frame);
+                if !self.atlas.as_ref().is_some_and(|a| a.fits(&layout, false)) {
+                    self.atlas = None; // free before allocating the replacement
+                    self.atlas = Some(Atlas::new(device, layout, false)?);
+                }
+                (layout.size(), scene.groups())
+            }
+            Method::Layered => (
+                frame.size,
+                scene.groups().saturating_mul(frame.camera.views),
+            ),
+            _ => (
+                [frame.size[0].saturating_mul(k), frame.size[1]],
+                scene.groups(),
+            ),
+        };
         let key = GroupImagesKey {
             size,
-            groups: scene.groups(),
+            groups,
             subpixel,
         };
         if self.images.as_ref().map(|i| i.key) != Some(key) {
@@ -250,15 +316,48 @@ impl PointSplatter {
         if let Some(npass) = &mut self.npass {
             npass.prepare(device, frame)?;
         }
-        let key = SplatPipelineKey {
-            spec: Specialization::of(frame),
-            subpixel,
-        };
-        let layouts = &self.layouts;
-        self.pipelines.prepare(device, key, |modules| {
-            pipelines::build(device, modules, layouts, key)
-        })?;
+        if self.path == Method::Layered {
+            let deepest = self.layer_batches(frame).iter().map(|r| r.len()).max();
+            let layers = deepest.unwrap_or(1) as u32;
+            crate::render::view_layers::depth_array(
+                &mut self.layer_depth,
+                device,
+                frame.size,
+                layers,
+            );
+        }
+        for geometry in self.geometries(frame) {
+            let key = SplatPipelineKey {
+                spec: Specialization::of(frame),
+                geometry,
+            };
+            let layouts = &self.layouts;
+            self.pipelines.prepare(device, key, |modules| {
+                pipelines::build(device, modules, layouts, key)
+            })?;
+        }
         Ok(())
+    }
+
+    /// The geometry passes `frame` draws with (the layered method: one per batch size).
+    fn geometries(&self, frame: &Frame) -> Vec<Geometry> {
+        match self.path {
+            Method::Tiled => vec![Geometry::Tiled],
+            Method::Layered => {
+                let mut sizes: Vec<u32> = self
+                    .layer_batches(frame)
+                    .iter()
+                    .map(|r| r.len() as u32)
+                    .collect();
+                sizes.dedup();
+                sizes
+                    .into_iter()
+                    .map(|layers| Geometry::Layered { layers })
+                    .collect()
+            }
+            _ if self.subpixel(frame) => vec![Geometry::Subpixel],
+            _ => vec![Geometry::Pixel],
+        }
     }
 }
 
@@ -297,12 +396,15 @@ impl Renderer<SplatScene> for PointSplatter {
     ) -> Result<()> {
         check_target(frame, target)?;
         check_prepared("PointSplatter", &self.prepared, &self.needs(scene, frame))?;
+        if matches!(self.path, Method::Tiled | Method::Layered) {
+            return self.encode_duplicated(device, encoder, scene, frame, target);
+        }
         let passes = self.passes(frame, scene.groups());
         self.frame.write(device, frame);
         self.params.write(device, &passes);
         let key = SplatPipelineKey {
             spec: Specialization::of(frame),
-            subpixel: self.subpixel(frame),
+            geometry: self.geometries(frame)[0],
         };
         let pipelines = self.pipelines.get(&key).expect("built by prepare");
         let scratch = self.scratch.as_ref().expect("ensured");
@@ -393,5 +495,9 @@ impl Renderer<SplatScene> for PointSplatter {
             npass.composite(device, encoder, &self.frame, target);
         }
         Ok(())
+    }
+
+    fn atlas(&self) -> Option<&Atlas> {
+        self.atlas.as_ref()
     }
 }

@@ -6,7 +6,8 @@ use crate::error::Result;
 use crate::frame::frame_bind_group_layout;
 use crate::render::pass_params::PassParams;
 use crate::render::pipeline::{
-    bind_group_layout, compilation, fullscreen_pipeline_with, pipeline_layout, storage_entry,
+    bind_group_layout, compilation, fullscreen_pipeline_with, multiview_mask, pipeline_layout,
+    storage_entry,
 };
 use crate::render::pipeline_cache::ShaderModules;
 use crate::render::specialize::Specialization;
@@ -36,13 +37,30 @@ pub struct SplatParams {
     pub epsilon: f32,
     /// Group images to composite (the array may hold a spare layer: `ViewLayers`).
     pub groups: u32,
-    pub(super) _pad: [f32; 2],
+    /// Layer of group g in the group images: `g · group_stride + group_base` (the layered
+    /// method keeps N views per group, group-major; everything else 1 and 0).
+    pub group_stride: u32,
+    /// See `group_stride`.
+    pub group_base: u32,
+    /// Layered geometry passes: the view of multiview layer 0.
+    pub first_view: u32,
+    pub(super) _pad: [u32; 3],
 }
-const _: () = assert!(std::mem::size_of::<SplatParams>() == 32);
+const _: () = assert!(std::mem::size_of::<SplatParams>() == 48);
 crate::shader::gpu_layout!(
     SplatParams,
     "SplatParams",
-    [cover_lo, cover_hi, fixed_offset, use_mask, epsilon, groups]
+    [
+        cover_lo,
+        cover_hi,
+        fixed_offset,
+        use_mask,
+        epsilon,
+        groups,
+        group_stride,
+        group_base,
+        first_view
+    ]
 );
 
 pub(super) struct Layouts {
@@ -55,6 +73,8 @@ pub(super) struct Layouts {
     pub groups: wgpu::BindGroupLayout,
     /// Per-pass constants (dynamic offset).
     pub params: wgpu::BindGroupLayout,
+    /// The quilt layout (tiled geometry pass).
+    pub quilt: wgpu::BindGroupLayout,
 }
 
 impl Layouts {
@@ -93,6 +113,19 @@ impl Layouts {
                 "splat pass constants",
                 &[PassParams::<SplatParams>::layout_entry(0, cs | vf)],
             ),
+            quilt: layout(
+                "splat quilt layout",
+                &[wgpu::BindGroupLayoutEntry {
+                    binding: 0,
+                    visibility: vf,
+                    ty: wgpu::BindingType::Buffer {
+                        ty: wgpu::BufferBindingType::Uniform,
+                        has_dynamic_offset: false,
+                        min_binding_size: None,
+                    },
+                    count: None,
+                }],
+            ),
         }
     }
 }
@@ -103,14 +136,25 @@ pub(super) struct Pipelines {
     pub composite: wgpu::RenderPipeline,
 }
 
-/// Pipelines for one display specialisation; `subpixel`: exact depth at subpixel resolution.
+/// Which geometry pass draws the splats into the group images.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(super) enum Geometry {
+    /// One fragment per pixel, the pass's cover rectangles (`points/pixel.wgsl`).
+    Pixel,
+    /// Exact depth at subpixel resolution (K = 3 displays; `points/subpixel.wgsl`).
+    Subpixel,
+    /// Instanced per view into the tiles of an atlas (`points/tiled.wgsl`).
+    Tiled,
+    /// Multiview into `layers` layers at once (`points/layered.wgsl`).
+    Layered { layers: u32 },
+}
+
 /// What the splat pipelines are specialised for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub(super) struct SplatPipelineKey {
     /// The display's K and N.
     pub spec: Specialization,
-    /// Exact depth at subpixel resolution (K = 3 displays with exact depth).
-    pub subpixel: bool,
+    pub geometry: Geometry,
 }
 
 pub(super) fn build(
@@ -119,10 +163,15 @@ pub(super) fn build(
     layouts: &Layouts,
     key: SplatPipelineKey,
 ) -> Result<Pipelines> {
-    let SplatPipelineKey { spec, subpixel } = key;
+    let SplatPipelineKey { spec, geometry } = key;
+    let subpixel = geometry == Geometry::Subpixel;
     let padding = if subpixel { 0.5 } else { 1.0 / 16.0 };
     let cover_constants = spec.constants(&[("COVER_PADDING_PX", padding)]);
-    let constants = spec.constants(&[]);
+    // The duplicated quads are computed in the vertex stage, with the cover pass's padding.
+    let constants = match geometry {
+        Geometry::Tiled | Geometry::Layered { .. } => cover_constants.clone(),
+        _ => spec.constants(&[]),
+    };
     let composite_constants = spec.constants(&[("SUBPIXEL_DEPTH", subpixel as u32 as f64)]);
 
     let layout_of =
@@ -143,22 +192,28 @@ pub(super) fn build(
         compilation_options: compilation(&cover_constants),
         cache: None,
     });
-    let (stage, format) = if subpixel {
-        ("points/subpixel.wgsl", SUBPIXEL_FORMAT)
-    } else {
-        ("points/pixel.wgsl", PIXEL_FORMAT)
+    let (stage, format) = match geometry {
+        Geometry::Pixel => ("points/pixel.wgsl", PIXEL_FORMAT),
+        Geometry::Subpixel => ("points/subpixel.wgsl", SUBPIXEL_FORMAT),
+        Geometry::Tiled => ("points/tiled.wgsl", PIXEL_FORMAT),
+        Geometry::Layered { .. } => ("points/layered.wgsl", PIXEL_FORMAT),
     };
+    let multiview_mask = match geometry {
+        Geometry::Layered { layers } => multiview_mask(layers),
+        _ => None,
+    };
+    let mut groups = vec![
+        Some(&layouts.frame),
+        Some(&layouts.quad),
+        Some(&layouts.params),
+    ];
+    if geometry == Geometry::Tiled {
+        groups.push(Some(&layouts.quilt));
+    }
     let module = modules.get(device, stage)?;
     let geometry = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(stage),
-        layout: Some(&layout_of(
-            stage,
-            &[
-                Some(&layouts.frame),
-                Some(&layouts.quad),
-                Some(&layouts.params),
-            ],
-        )),
+        layout: Some(&layout_of(stage, &groups)),
         vertex: wgpu::VertexState {
             module: &module,
             entry_point: Some("vs_splat"),
@@ -174,7 +229,7 @@ pub(super) fn build(
             compilation_options: compilation(&constants),
             targets: &[Some(format.into())],
         }),
-        multiview_mask: None,
+        multiview_mask,
         cache: None,
     });
     let composite_module = modules.get(device, "points/composite.wgsl")?;

@@ -20,8 +20,12 @@ struct SplatParams {
     use_mask: u32,     // 1: per (sub)pixel views from the mask (single pass)
     epsilon: f32,      // ε of the ε-z compositing, eye-depth units
     groups: u32,       // group images to composite (the array may hold a spare layer)
-    _pad0: f32,
-    _pad1: f32,
+    group_stride: u32, // layer of group g: g · group_stride + group_base (layered: N, view)
+    group_base: u32,
+    first_view: u32,   // layered geometry passes: the view of multiview layer 0
+    _pad0: u32,
+    _pad1: u32,
+    _pad2: u32,
 }
 
 // Gaussian kernel w = exp(−KERNEL_SHARPNESS · (ω/r)²), cut off at ω = r (w ≥ e⁻²).

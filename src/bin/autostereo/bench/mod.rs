@@ -1,11 +1,12 @@
-//! `autostereo bench`: single pass (every path and mode), N-pass and single view side by side in
-//! one process on one adapter, for volumes, point splats and meshes; speed/accuracy trade-offs
+//! `autostereo bench`: single pass (every path and mode), N-pass, single view and the per-view
+//! duplication methods (tiled, layered, MRT) side by side in one process on one adapter, for volumes, point splats and meshes; speed/accuracy trade-offs
 //! against the N-pass high-quality render; what a scene that skips a feature saves. `--report
 //! DIR` writes DIR/BENCHMARKS.md (+ PNG plots with `--features plots`).
 
 mod plot;
 mod report;
 mod scenes;
+mod targets;
 mod tradeoffs;
 
 use autostereo::render::Renderer;
@@ -296,7 +297,7 @@ fn measured(
     let extra = size != plan.size;
     match kind {
         Kind::SinglePass => primary || !plan.quick || n == 8,
-        Kind::NPass => {
+        Kind::NPass | Kind::Duplication => {
             extra || (in_sweep(display) && (n <= plan.npass_max_views || primitive == "volume"))
         }
         Kind::SingleView => extra || display == "hubner8",
@@ -352,6 +353,21 @@ fn estimate_seconds(
             }
             if measured(plan, scene.primitive, Kind::NPass, false, &display, n, size) {
                 ms += n as f64 * probe * scale * frames;
+            }
+            let duplications = methods
+                .iter()
+                .filter(|m| m.kind == Kind::Duplication)
+                .count() as f64;
+            if measured(
+                plan,
+                scene.primitive,
+                Kind::Duplication,
+                false,
+                &display,
+                n,
+                size,
+            ) {
+                ms += duplications * n as f64 * probe * scale * frames;
             }
             if measured(
                 plan,

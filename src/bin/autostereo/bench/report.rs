@@ -9,10 +9,15 @@ use super::plot::{draw, Axes, Series};
 use super::scenes::Kind;
 use super::{Results, Row};
 
-const PAPER_DISPLAY: &str = "hubner8";
+pub(super) const PAPER_DISPLAY: &str = "hubner8";
 
 /// Rows of one scene, display and size.
-fn rows_of<'a>(r: &'a Results, scene: &str, display: &str, size: [u32; 2]) -> Vec<&'a Row> {
+pub(super) fn rows_of<'a>(
+    r: &'a Results,
+    scene: &str,
+    display: &str,
+    size: [u32; 2],
+) -> Vec<&'a Row> {
     r.rows
         .iter()
         .filter(|x| x.scene == scene && x.display == display && x.size == size)
@@ -20,7 +25,7 @@ fn rows_of<'a>(r: &'a Results, scene: &str, display: &str, size: [u32; 2]) -> Ve
 }
 
 /// The best *exact* single-pass row (not the paper's approximations), if any.
-fn best_single_pass<'a>(rows: &[&'a Row]) -> Option<&'a Row> {
+pub(super) fn best_single_pass<'a>(rows: &[&'a Row]) -> Option<&'a Row> {
     rows.iter()
         .copied()
         .filter(|x| {
@@ -29,11 +34,11 @@ fn best_single_pass<'a>(rows: &[&'a Row]) -> Option<&'a Row> {
         .min_by(|a, b| a.ms.total_cmp(&b.ms))
 }
 
-fn find<'a>(rows: &[&'a Row], kind: Kind) -> Option<&'a Row> {
+pub(super) fn find<'a>(rows: &[&'a Row], kind: Kind) -> Option<&'a Row> {
     rows.iter().copied().find(|x| x.kind == kind)
 }
 
-fn base_size(r: &Results) -> [u32; 2] {
+pub(super) fn base_size(r: &Results) -> [u32; 2] {
     r.size
 }
 
@@ -208,7 +213,8 @@ pub fn write(dir: &Path, r: &Results) -> Result<()> {
         writeln!(md)?;
     }
 
-    targets(&mut md, r)?;
+    super::targets::targets(&mut md, r)?;
+    super::targets::duplication(&mut md, r)?;
     tradeoffs(&mut md, r, &images)?;
     economy(&mut md, r)?;
     writeln!(
@@ -238,108 +244,6 @@ fn views_header(r: &Results) -> String {
         .map(|n| format!("N = {n}"))
         .collect::<Vec<_>>()
         .join(" | ")
-}
-
-/// The targets of the renderer issues, met or missed, with the measured ratios.
-fn targets(md: &mut String, r: &Results) -> Result<()> {
-    writeln!(md, "## Targets of the renderer issues\n")?;
-    writeln!(
-        md,
-        "Best exact single pass (SP) against N-pass and single view (SV) on the N-sweep display \
-         (K = 3). \"not measured\" = the run did not measure that N-pass (the quick run measures \
-         N-pass up to N = 8, and at N = 64 for volumes only).\n"
-    )?;
-    writeln!(
-        md,
-        "| primitive | scene | target | measured | status |\n|---|---|---|---:|---|"
-    )?;
-    let size = base_size(r);
-    let at = |scene: &str, n: u32| rows_of(r, scene, &super::sweep_display(n), size);
-    for (primitive, name, _) in &r.scenes {
-        let sp = |n| best_single_pass(&at(name, n)).map(|x| x.ms);
-        let npass = |n| find(&at(name, n), Kind::NPass).map(|x| x.ms);
-        let sv = find(&rows_of(r, name, PAPER_DISPLAY, size), Kind::SingleView).map(|x| x.ms);
-        let ratio = |a: Option<f64>, b: Option<f64>| a.zip(b).map(|(a, b)| a / b);
-        let mut line = |target: &str,
-                        value: Option<f64>,
-                        ok: &dyn Fn(f64) -> bool,
-                        unit: &str|
-         -> Result<()> {
-            let (measured, status) = match value {
-                Some(v) => (
-                    format!("{v:.2}{unit}"),
-                    if ok(v) { "met" } else { "**missed**" },
-                ),
-                None => ("–".into(), "not measured"),
-            };
-            writeln!(
-                md,
-                "| {primitive} | {name} | {target} | {measured} | {status} |"
-            )?;
-            Ok(())
-        };
-        match primitive.as_str() {
-            "volume" => {
-                line(
-                    "N-pass / SP ≥ 5 at N = 8",
-                    ratio(npass(8), sp(8)),
-                    &|v| v >= 5.0,
-                    "×",
-                )?;
-                line(
-                    "N-pass / SP ≥ 30 at N = 64",
-                    ratio(npass(64), sp(64)),
-                    &|v| v >= 30.0,
-                    "×",
-                )?;
-                line(
-                    "t(N = 64) / t(N = 8) ≤ 1.1",
-                    ratio(sp(64), sp(8)),
-                    &|v| v <= 1.1,
-                    "",
-                )?;
-                line(
-                    "SP speed ≥ 0.5 × SV (SV / SP ≥ 0.5)",
-                    ratio(sv, sp(8)),
-                    &|v| v >= 0.5,
-                    "",
-                )?;
-            }
-            "points" => {
-                line(
-                    "N-pass / SP ≥ 3 at N = 8",
-                    ratio(npass(8), sp(8)),
-                    &|v| v >= 3.0,
-                    "×",
-                )?;
-                line(
-                    "cost flat in N: t(64) / t(8) ≤ 1.1",
-                    ratio(sp(64), sp(8)),
-                    &|v| v <= 1.1,
-                    "",
-                )?;
-            }
-            _ => {
-                line(
-                    "N-pass / SP ≥ 2 at N = 8",
-                    ratio(npass(8), sp(8)),
-                    &|v| v >= 2.0,
-                    "×",
-                )?;
-            }
-        }
-    }
-    writeln!(
-        md,
-        "\nWhere a volume target is missed: the exact compute path marches K = 3 rays per pixel, so \
-         SP ≈ 3 × SV and N-pass / SP ≈ N / 3 (the paper expects the same ≈ 1/K of single-view \
-         speed); sharing samples between the K rays was tried and measured 3.5× slower on lavapipe \
-         (a workgroup barrier per sample plane is a coroutine switch on llvmpipe). Profile and \
-         details: [VOLUMES.md](VOLUMES.md). Single measurements on lavapipe vary by 10–15 % \
-         between runs, which decides the flatness targets near 1.1: [POINTS.md](POINTS.md) and \
-         [VOLUMES.md](VOLUMES.md) have repeated, back-to-back measurements.\n"
-    )?;
-    Ok(())
 }
 
 fn tradeoffs(md: &mut String, r: &Results, images: &Path) -> Result<()> {

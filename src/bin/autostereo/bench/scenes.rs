@@ -9,8 +9,9 @@ use autostereo::frame::Frame;
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::points::{GroupCount, PointCloud, SplatScene};
 use autostereo::render::{
-    AlphaMode, MeshNPass, MeshSinglePass, MeshSinglePassOptions, Method, PointSplatter, SplatDepth,
-    SplatOptions, Visibility, VolumeRaycaster, VolumeScene, VolumeSlicer,
+    AlphaMode, MeshLayered, MeshMrt, MeshNPass, MeshSinglePass, MeshSinglePassOptions, MeshTiled,
+    Method, PointSplatter, SplatDepth, SplatOptions, TileClip, Visibility, VolumeRaycaster,
+    VolumeScene, VolumeSlicer,
 };
 pub use autostereo::render::{AnyRenderer, AnyScene};
 use autostereo::volume::{load, phantom, TransferFunction, Volume};
@@ -34,6 +35,8 @@ pub enum Kind {
     SinglePass,
     NPass,
     SingleView,
+    /// Per-view duplication in one draw (tiled, layered, MRT): the competition.
+    Duplication,
 }
 
 pub struct MethodEntry {
@@ -146,7 +149,8 @@ fn mesh_scene(device: &wgpu::Device, name: String, mesh: &Mesh) -> Result<BenchS
     })
 }
 
-/// Every method measured on `scene`: each single-pass path/mode, N-pass, single view.
+/// Every method measured on `scene`: each single-pass path/mode, N-pass, single view, the
+/// duplication methods.
 pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEntry>> {
     let entry = |name: &str, kind, renderer| MethodEntry {
         name: name.to_string(),
@@ -181,6 +185,8 @@ pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEn
                 ),
                 entry("n-pass", Kind::NPass, ray(Method::NPass)?),
                 entry("single-view", Kind::SingleView, ray(Method::SingleView)?),
+                entry("tiled", Kind::Duplication, ray(Method::Tiled)?),
+                entry("layered", Kind::Duplication, ray(Method::Layered)?),
             ]
         }
         AnyScene::Points(s) => {
@@ -214,6 +220,16 @@ pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEn
                     Kind::SingleView,
                     splat(Method::SingleView, SplatDepth::Exact)?,
                 ),
+                entry(
+                    "tiled",
+                    Kind::Duplication,
+                    splat(Method::Tiled, SplatDepth::Exact)?,
+                ),
+                entry(
+                    "layered",
+                    Kind::Duplication,
+                    splat(Method::Layered, SplatDepth::Exact)?,
+                ),
             ]
         }
         AnyScene::Mesh(_) => {
@@ -245,6 +261,30 @@ pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEn
                 "single-view",
                 Kind::SingleView,
                 base(Method::SingleView)?,
+            ));
+            for clip in [TileClip::ClipDistances, TileClip::Discard] {
+                if clip.resolve(device).is_ok() {
+                    v.push(entry(
+                        &format!("tiled ({})", clip.name()),
+                        Kind::Duplication,
+                        AnyRenderer::Mesh(Box::new(MeshTiled::new(device, clip)?)),
+                    ));
+                }
+            }
+            let layered = MeshLayered::new(device)?;
+            let name = match layered.views_per_pass() {
+                1 => "layered (pass per layer)".to_string(),
+                n => format!("layered (multiview ≤ {n})"),
+            };
+            v.push(entry(
+                &name,
+                Kind::Duplication,
+                AnyRenderer::Mesh(Box::new(layered)),
+            ));
+            v.push(entry(
+                "mrt (shared depth, approximate)",
+                Kind::Duplication,
+                AnyRenderer::Mesh(Box::new(MeshMrt::new(device)?)),
             ));
             v
         }

@@ -5,8 +5,6 @@
 //! that allows ([`MeshLayered::views_per_pass`]). Without multiview (GL) nothing can route one
 //! draw to several layers, so the method is one pass per layer: the N-pass renderer itself.
 
-use std::num::NonZeroU32;
-
 use super::{batches, draw_mesh, mesh_pipeline, views_buffer, views_entry, ViewBatch};
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
@@ -14,9 +12,11 @@ use crate::mesh::passes::npass::{MeshNPass, PreparedFor};
 use crate::mesh::MeshBuffers;
 use crate::render::npass::NPassHarness;
 use crate::render::pass_params::PassParams;
-use crate::render::pipeline::{begin_pass_to, bind_group_layout, cleared, PassTargets};
+use crate::render::pipeline::{
+    begin_pass_to, bind_group_layout, cleared, multiview_mask, PassTargets,
+};
 use crate::render::pipeline_cache::PipelineCache;
-use crate::render::view_layers::DEPTH_FORMAT;
+use crate::render::view_layers::{depth_array, layer_range};
 use crate::render::{begin_prepare, check_prepared, check_target, Method, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 
@@ -114,26 +114,7 @@ impl Multiview {
         self.npass.prepare(device, frame)?;
         let passes = batches(frame.camera.views, self.max_per_pass);
         let deepest = passes.iter().map(|r| r.len() as u32).max().unwrap_or(1);
-        let fits = |d: &wgpu::Texture| {
-            [d.width(), d.height()] == frame.size && d.depth_or_array_layers() == deepest
-        };
-        if !self.depth.as_ref().is_some_and(fits) {
-            self.depth = None;
-            self.depth = Some(device.create_texture(&wgpu::TextureDescriptor {
-                label: Some("layered depth"),
-                size: wgpu::Extent3d {
-                    width: frame.size[0],
-                    height: frame.size[1],
-                    depth_or_array_layers: deepest,
-                },
-                mip_level_count: 1,
-                sample_count: 1,
-                dimension: wgpu::TextureDimension::D2,
-                format: DEPTH_FORMAT,
-                usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
-                view_formats: &[],
-            }));
-        }
+        depth_array(&mut self.depth, device, frame.size, deepest);
         for layers in passes.iter().map(|r| r.len() as u32) {
             let layout = &self.layout;
             self.pipelines.prepare(device, layers, |modules| {
@@ -178,19 +159,10 @@ impl Multiview {
         });
         let layers = &self.npass.layers().texture;
         let depth = self.depth.as_ref().expect("allocated by prepare");
-        let array = |texture: &wgpu::Texture, first: u32, count: u32| {
-            texture.create_view(&wgpu::TextureViewDescriptor {
-                label: Some("layered pass layers"),
-                dimension: Some(wgpu::TextureViewDimension::D2Array),
-                base_array_layer: first,
-                array_layer_count: Some(count),
-                ..Default::default()
-            })
-        };
         for (i, range) in passes.iter().enumerate() {
             let count = range.len() as u32;
-            let color = array(layers, range.start, count);
-            let depth = array(depth, 0, count);
+            let color = layer_range(layers, range.start, count);
+            let depth = layer_range(depth, 0, count);
             let mut pass = begin_pass_to(
                 encoder,
                 "mesh layered",
@@ -209,11 +181,6 @@ impl Multiview {
         self.npass.composite(device, encoder, &self.frame, target);
         Ok(())
     }
-}
-
-/// The multiview mask of `layers` layers: the lowest `layers` bits.
-fn multiview_mask(layers: u32) -> Option<NonZeroU32> {
-    NonZeroU32::new(u32::MAX >> (32 - layers.clamp(1, 32)))
 }
 
 impl Renderer<MeshBuffers> for MeshLayered {
@@ -242,15 +209,5 @@ impl Renderer<MeshBuffers> for MeshLayered {
             Path::Multiview(m) => m.encode(device, encoder, mesh, frame, target),
             Path::PerLayer(n) => n.encode(device, encoder, mesh, frame, target),
         }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    #[test]
-    fn masks_have_the_lowest_bits() {
-        assert_eq!(super::multiview_mask(1).unwrap().get(), 1);
-        assert_eq!(super::multiview_mask(6).unwrap().get(), 0b11_1111);
-        assert_eq!(super::multiview_mask(32).unwrap().get(), u32::MAX);
     }
 }
