@@ -1,5 +1,8 @@
-//! The memory budget: what a loader or renderer may allocate on the CPU, checked from a file's
-//! header and the flags before anything is allocated.
+//! The memory budget: what a loader or renderer may allocate, checked from a file's header and
+//! the flags before anything is allocated. It covers the CPU side of loading and, per
+//! resource, the renderers' GPU images that grow with views and size (view layers, quilt
+//! atlases, splat group images): a 64-view duplication at 1080p is refused with its figure
+//! instead of exhausting the adapter (software adapters allocate from the same RAM).
 //!
 //! One process-wide figure, 8 GiB by default, raised or lowered with [`set_max_memory`] (the
 //! CLI's `--max-memory`). Inputs whose cost is over it are refused with

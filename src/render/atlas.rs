@@ -38,6 +38,8 @@ impl Atlas {
                 limit: limit.into(),
             });
         }
+        let bytes = size[0] as u64 * size[1] as u64 * if with_depth { 8 } else { 4 };
+        crate::budget::check(|| format!("a {}x{} quilt atlas", size[0], size[1]), bytes)?;
         let usage = wgpu::TextureUsages::RENDER_ATTACHMENT
             | wgpu::TextureUsages::TEXTURE_BINDING
             | wgpu::TextureUsages::STORAGE_BINDING

@@ -65,6 +65,17 @@ impl ViewLayers {
                 limit: limit.into(),
             });
         }
+        let texel = format.block_copy_size(None).unwrap_or(16) as u64;
+        let bytes = size[0] as u64 * size[1] as u64 * (texel * allocated as u64 + 4);
+        crate::budget::check(
+            || {
+                format!(
+                    "{layers} {what} of {}x{} ({format:?}) and their depth",
+                    size[0], size[1]
+                )
+            },
+            bytes,
+        )?;
         let extent = |layers| wgpu::Extent3d {
             width: size[0],
             height: size[1],

@@ -9,7 +9,7 @@
 use std::ops::Range;
 
 use super::pipelines::{Geometry, SplatParams, SplatPipelineKey, COVER_WORKGROUP};
-use super::PointSplatter;
+use super::{FrameGroups, PointSplatter};
 use crate::error::Result;
 use crate::frame::Frame;
 use crate::points::SplatScene;
@@ -67,6 +67,12 @@ impl PointSplatter {
         let pipeline = |geometry| SplatPipelineKey { spec, geometry };
         let scratch = self.scratch.as_ref().expect("ensured");
         let images = &self.images.as_ref().expect("ensured").layers;
+        let FrameGroups {
+            cover: cover_group,
+            quad: quad_group,
+            images: images_group,
+            params: params_group,
+        } = self.frame_groups(device, scene);
         let group = |label, layout, entries: &[wgpu::BindGroupEntry]| {
             device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: Some(label),
@@ -75,36 +81,6 @@ impl PointSplatter {
             })
         };
         let entry = |binding, resource| wgpu::BindGroupEntry { binding, resource };
-        let cover_group = group(
-            "splat cover",
-            &self.layouts.cover,
-            &[
-                entry(0, scene.buffer.as_entire_binding()),
-                entry(1, scratch.eye_splats.binding()),
-                entry(2, scratch.rects.binding()),
-            ],
-        );
-        let quad_group = group(
-            "splat quads",
-            &self.layouts.quad,
-            &[
-                entry(0, scratch.eye_splats.binding()),
-                entry(1, scratch.rects.binding()),
-            ],
-        );
-        let images_group = group(
-            "splat group images",
-            &self.layouts.groups,
-            &[entry(
-                0,
-                wgpu::BindingResource::TextureView(&images.array_view),
-            )],
-        );
-        let params_group = group(
-            "splat pass constants",
-            &self.layouts.params,
-            &[entry(0, self.params.binding())],
-        );
         // The cover pass only transforms the splats here: each copy's quad is the vertex
         // stage's.
         let any = self.geometries(frame)[0];

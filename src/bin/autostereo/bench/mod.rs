@@ -35,6 +35,11 @@ pub struct BenchArgs {
     /// Write the report from a saved `--json` output instead of measuring (re-plotting).
     #[arg(long, requires = "report")]
     from_json: Option<PathBuf>,
+    /// Only the comparison with per-view duplication: every method on the paper's display
+    /// (N = 8) at 512² and 1920×1080, the dragon res2 mesh and the full dragon points, no
+    /// trade-off studies (issue 13's targets in minutes rather than hours).
+    #[arg(long, conflicts_with = "quick")]
+    duplication: bool,
     /// Timed frames per measurement (after 2 warm-up frames).
     #[arg(long, default_value_t = 20, value_parser = crate::args::frames_parser())]
     frames: u32,
@@ -43,6 +48,8 @@ pub struct BenchArgs {
 /// What a run measures.
 pub struct Plan {
     pub quick: bool,
+    /// `--duplication`: N = 8 only, no studies.
+    pub duplication: bool,
     pub size: [u32; 2],
     pub views: Vec<u32>,
     /// N-pass is measured up to this N (it grows linearly).
@@ -54,9 +61,20 @@ pub struct Plan {
 
 impl Plan {
     fn new(args: &BenchArgs) -> Self {
-        if args.quick {
+        if args.duplication {
+            Self {
+                quick: false,
+                duplication: true,
+                size: [512, 512],
+                views: vec![8],
+                npass_max_views: 8,
+                extra_sizes: vec![[1920, 1080]],
+                frames: args.frames,
+            }
+        } else if args.quick {
             Self {
                 quick: true,
+                duplication: false,
                 size: [256, 256],
                 views: vec![2, 8, 64],
                 npass_max_views: 8,
@@ -66,12 +84,22 @@ impl Plan {
         } else {
             Self {
                 quick: false,
+                duplication: false,
                 size: [512, 512],
                 views: vec![1, 2, 4, 8, 16, 32, 64],
                 npass_max_views: 64,
                 extra_sizes: vec![[1920, 1080]],
                 frames: args.frames,
             }
+        }
+    }
+
+    /// `quick`, `duplication` or `full`.
+    pub fn name(&self) -> &'static str {
+        match (self.quick, self.duplication) {
+            (true, _) => "quick",
+            (_, true) => "duplication",
+            _ => "full",
         }
     }
 
@@ -91,7 +119,9 @@ impl Plan {
             .iter()
             .map(|&n| (sweep_display(n), self.size))
             .collect();
-        c.push(("lenticular:8".into(), self.size));
+        if !self.duplication {
+            c.push(("lenticular:8".into(), self.size));
+        }
         for size in &self.extra_sizes {
             c.push(("hubner8".into(), *size));
         }
@@ -135,6 +165,9 @@ pub struct Results {
     pub cpu: String,
     pub command: String,
     pub quick: bool,
+    /// A `--duplication` run.
+    #[serde(default)]
+    pub duplication: bool,
     pub frames: u32,
     /// Frames per trade-off and economy measurement.
     pub study_frames: u32,
@@ -147,6 +180,20 @@ pub struct Results {
     pub rows: Vec<Row>,
     pub tradeoffs: Vec<tradeoffs::Tradeoff>,
     pub economy: Vec<tradeoffs::Economy>,
+    /// Measurements that could not run (e.g. over the memory budget): what, and why.
+    #[serde(default)]
+    pub failures: Vec<(String, String)>,
+}
+
+impl Results {
+    /// `quick`, `duplication` or `full`.
+    pub fn run_name(&self) -> &'static str {
+        match (self.quick, self.duplication) {
+            (true, _) => "quick",
+            (_, true) => "duplication",
+            _ => "full",
+        }
+    }
 }
 
 fn cpu_name() -> String {
@@ -185,7 +232,7 @@ pub fn run(args: BenchArgs) -> Result<()> {
     let ctx = gpu()?;
     let timer = FrameTimer::new(&ctx.device, &ctx.queue);
     eprintln!("loading scenes…");
-    let mut scenes = scenes::scenes(&ctx, plan.quick)?;
+    let mut scenes = scenes::scenes(&ctx, &plan)?;
     let mut all_methods = scenes
         .iter()
         .map(|scene| scenes::methods(&ctx.device, scene))
@@ -202,12 +249,13 @@ pub fn run(args: BenchArgs) -> Result<()> {
     let estimate = estimate_seconds(&plan, &scenes, &all_methods, &probe_ms);
     eprintln!(
         "{} run: {} scenes, about {:.0} min on this adapter ({})",
-        if plan.quick { "quick" } else { "full" },
+        plan.name(),
         scenes.len(),
         estimate / 60.0,
         ctx.adapter_label()
     );
     let mut rows = Vec::new();
+    let mut failures = Vec::new();
     let total = count_measurements(&plan, &scenes, &all_methods);
     for (scene, methods) in scenes.iter().zip(&mut all_methods) {
         for (display, size) in plan.configs() {
@@ -217,7 +265,18 @@ pub fn run(args: BenchArgs) -> Result<()> {
                 if !measured(&plan, scene.primitive, m.kind, i == 0, &display, n, size) {
                     continue;
                 }
-                let ms = time(&ctx, &timer, scene, m, &display, size, plan.frames)?;
+                let ms = match time(&ctx, &timer, scene, m, &display, size, plan.frames) {
+                    Ok(ms) => ms,
+                    Err(e) => {
+                        let what = format!(
+                            "{} {} {display} {}x{}: {}",
+                            scene.primitive, scene.name, size[0], size[1], m.name
+                        );
+                        eprintln!("{what}: not measured: {e:#}");
+                        failures.push((what, format!("{e:#}")));
+                        continue;
+                    }
+                };
                 rows.push(Row {
                     primitive: scene.primitive.into(),
                     scene: scene.name.clone(),
@@ -243,14 +302,21 @@ pub fn run(args: BenchArgs) -> Result<()> {
             }
         }
     }
-    eprintln!("speed/accuracy trade-offs…");
-    let tradeoffs = tradeoffs::measure(&ctx, &timer, &mut scenes, &plan)?;
-    let economy = tradeoffs::economy(&ctx, &timer, &mut scenes, &plan)?;
+    let (tradeoffs, economy) = if plan.duplication {
+        (Vec::new(), Vec::new())
+    } else {
+        eprintln!("speed/accuracy trade-offs…");
+        (
+            tradeoffs::measure(&ctx, &timer, &mut scenes, &plan)?,
+            tradeoffs::economy(&ctx, &timer, &mut scenes, &plan)?,
+        )
+    };
     let results = Results {
         adapter: ctx.adapter_label(),
         cpu: cpu_name(),
         command: std::env::args().collect::<Vec<_>>().join(" "),
         quick: plan.quick,
+        duplication: plan.duplication,
         frames: plan.frames,
         study_frames: plan.study_frames(),
         size: plan.size,
@@ -264,12 +330,10 @@ pub fn run(args: BenchArgs) -> Result<()> {
         rows,
         tradeoffs,
         economy,
+        failures,
     };
     if let Some(dir) = &args.report {
-        let json = dir.join(format!(
-            "bench_{}.json",
-            if plan.quick { "quick" } else { "full" }
-        ));
+        let json = dir.join(format!("bench_{}.json", plan.name()));
         std::fs::write(&json, serde_json::to_string_pretty(&results)?)?;
         report::write(dir, &results)?;
         eprintln!("wrote {}", dir.join("BENCHMARKS.md").display());

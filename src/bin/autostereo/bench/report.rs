@@ -59,7 +59,7 @@ pub fn write(dir: &Path, r: &Results) -> Result<()> {
             .collect::<Vec<_>>()
             .join(" "),
         r.seconds / 60.0,
-        if r.quick { "quick" } else { "full" },
+        r.run_name(),
     )?;
     writeln!(md, "- adapter: {}", r.adapter)?;
     writeln!(md, "- CPU: {}", r.cpu)?;
@@ -67,7 +67,7 @@ pub fn write(dir: &Path, r: &Results) -> Result<()> {
         md,
         "- {} run, median of {} frames after 2 warm-up frames per measurement ({} for the \
          trade-off and economy studies), GPU time from {}",
-        if r.quick { "quick" } else { "full" },
+        r.run_name(),
         r.frames,
         r.study_frames,
         r.timing
@@ -215,8 +215,18 @@ pub fn write(dir: &Path, r: &Results) -> Result<()> {
 
     super::targets::targets(&mut md, r)?;
     super::targets::duplication(&mut md, r)?;
-    tradeoffs(&mut md, r, &images)?;
-    economy(&mut md, r)?;
+    if !r.tradeoffs.is_empty() {
+        tradeoffs(&mut md, r, &images)?;
+        economy(&mut md, r)?;
+    }
+    if !r.failures.is_empty() {
+        writeln!(md, "## Not measured\n")?;
+        writeln!(md, "| measurement | why |\n|---|---|")?;
+        for (what, why) in &r.failures {
+            writeln!(md, "| {what} | {} |", why.replace('|', "\\|"))?;
+        }
+        writeln!(md)?;
+    }
     writeln!(
         md,
         "## Numerical stability\n\nThe stability suite (`tests/stability.rs`, run by CI) and its table: \

@@ -52,7 +52,8 @@ fn fetched(name: &str) -> PathBuf {
 }
 
 /// The scenes of a run: real data where `data/fetch` got it, generated stand-ins otherwise.
-pub fn scenes(ctx: &autostereo::gpu::GpuContext, quick: bool) -> Result<Vec<BenchScene>> {
+pub fn scenes(ctx: &autostereo::gpu::GpuContext, plan: &super::Plan) -> Result<Vec<BenchScene>> {
+    let quick = plan.quick;
     let (device, queue) = (&ctx.device, &ctx.queue);
     let mut out = Vec::new();
     let rotation = Mat4::from_rotation_x(-90f32.to_radians());
@@ -62,7 +63,7 @@ pub fn scenes(ctx: &autostereo::gpu::GpuContext, quick: bool) -> Result<Vec<Benc
         "ct-skin",
     )];
     let brain = fetched("brainsmall.den");
-    if !quick && brain.is_file() {
+    if !quick && !plan.duplication && brain.is_file() {
         let v = load::load_den(&brain)?;
         volumes.push((
             "brainsmall.den".into(),
@@ -115,7 +116,7 @@ pub fn scenes(ctx: &autostereo::gpu::GpuContext, quick: bool) -> Result<Vec<Benc
         data: AnyScene::Points(scene),
         splats: Some(splats),
     });
-    let meshes: &[&str] = if quick {
+    let meshes: &[&str] = if quick || plan.duplication {
         &["dragon_vrip_res2.obj"]
     } else {
         &["dragon_vrip_res2.obj", "dragon_vrip.obj"]

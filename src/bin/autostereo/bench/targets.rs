@@ -168,6 +168,13 @@ pub(super) fn duplication(md: &mut String, r: &Results) -> Result<()> {
             )?;
         }
     }
-    writeln!(md)?;
+    writeln!(
+        md,
+        "\nWhy, per primitive (profiles with the commands that measure them): docs/MESHES.md, \
+         docs/POINTS.md and docs/VOLUMES.md, sections \"Against per-view duplication\". In \
+         short: on a software rasteriser duplication is bound by vertex and triangle setup of \
+         N copies, which instancing does not reduce; the single pass sets each primitive up \
+         once.\n"
+    )?;
     Ok(())
 }

@@ -5,16 +5,13 @@
 //! that allows ([`MeshLayered::views_per_pass`]). Without multiview (GL) nothing can route one
 //! draw to several layers, so the method is one pass per layer: the N-pass renderer itself.
 
-use super::{batches, draw_mesh, mesh_pipeline, views_buffer, views_entry, ViewBatch};
+use super::{batches, draw_mesh, mesh_pipeline, BatchedViews, BoundBatches};
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
 use crate::mesh::passes::npass::{MeshNPass, PreparedFor};
 use crate::mesh::MeshBuffers;
 use crate::render::npass::NPassHarness;
-use crate::render::pass_params::PassParams;
-use crate::render::pipeline::{
-    begin_pass_to, bind_group_layout, cleared, multiview_mask, PassTargets,
-};
+use crate::render::pipeline::{begin_pass_to, cleared, multiview_mask, PassTargets};
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::view_layers::{depth_array, layer_range};
 use crate::render::{begin_prepare, check_prepared, check_target, Method, Renderer};
@@ -46,7 +43,7 @@ impl MeshLayered {
     /// Layers one pass renders: the adapter's multiview limit, or 1 without multiview.
     pub fn views_per_pass(&self) -> u32 {
         match &self.path {
-            Path::Multiview(m) => m.max_per_pass,
+            Path::Multiview(m) => m.views.max_per_pass,
             Path::PerLayer(_) => 1,
         }
     }
@@ -56,7 +53,7 @@ impl MeshLayered {
         match &self.path {
             Path::Multiview(m) => format!(
                 "multiview, at most {} layers per pass (the adapter's limit)",
-                m.max_per_pass
+                m.views.max_per_pass
             ),
             Path::PerLayer(_) => {
                 "one pass per layer: the adapter has no multiview (MULTIVIEW)".to_string()
@@ -67,11 +64,9 @@ impl MeshLayered {
 
 /// The multiview path's pipelines and scratch.
 struct Multiview {
-    max_per_pass: u32,
-    views_layout: wgpu::BindGroupLayout,
+    views: BatchedViews,
     layout: wgpu::PipelineLayout,
     frame: FrameBinding,
-    batch: PassParams<ViewBatch>,
     /// By layers per pass.
     pipelines: PipelineCache<u32, wgpu::RenderPipeline>,
     npass: NPassHarness,
@@ -83,24 +78,15 @@ struct Multiview {
 impl Multiview {
     fn new(device: &wgpu::Device, max_per_pass: u32) -> Result<Self> {
         let frame_layout = frame_bind_group_layout(device);
-        let views_layout = bind_group_layout(
-            device,
-            "layered views",
-            &[
-                views_entry(0),
-                PassParams::<ViewBatch>::layout_entry(1, wgpu::ShaderStages::VERTEX),
-            ],
-        );
+        let views = BatchedViews::new(device, "layered views", max_per_pass);
         let layout = crate::render::pipeline::pipeline_layout(
             device,
             "mesh layered",
-            &[Some(&frame_layout), Some(&views_layout)],
+            &[Some(&frame_layout), Some(&views.layout)],
         );
         Ok(Self {
-            max_per_pass,
-            views_layout,
+            views,
             layout,
-            batch: PassParams::new(device, "layered view batches"),
             pipelines: PipelineCache::new("mesh layered"),
             npass: NPassHarness::new(device, &frame_layout)?,
             frame: FrameBinding::new(device, &frame_layout),
@@ -112,7 +98,7 @@ impl Multiview {
     fn prepare(&mut self, device: &wgpu::Device, frame: &Frame) -> Result<()> {
         begin_prepare(device, frame, &mut self.prepared)?;
         self.npass.prepare(device, frame)?;
-        let passes = batches(frame.camera.views, self.max_per_pass);
+        let passes = batches(frame.camera.views, self.views.max_per_pass);
         let deepest = passes.iter().map(|r| r.len() as u32).max().unwrap_or(1);
         depth_array(&mut self.depth, device, frame.size, deepest);
         for layers in passes.iter().map(|r| r.len() as u32) {
@@ -139,24 +125,7 @@ impl Multiview {
         check_target(frame, target)?;
         check_prepared("MeshLayered", &self.prepared, &PreparedFor::of(frame))?;
         self.frame.write(device, frame);
-        let passes = batches(frame.camera.views, self.max_per_pass);
-        let params: Vec<ViewBatch> = passes.iter().map(ViewBatch::of).collect();
-        self.batch.write(device, &params);
-        let views = views_buffer(device, &frame.camera);
-        let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("layered views"),
-            layout: &self.views_layout,
-            entries: &[
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: views.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 1,
-                    resource: self.batch.binding(),
-                },
-            ],
-        });
+        let BoundBatches { passes, group } = self.views.bind(device, &frame.camera);
         let layers = &self.npass.layers().texture;
         let depth = self.depth.as_ref().expect("allocated by prepare");
         for (i, range) in passes.iter().enumerate() {
@@ -175,7 +144,7 @@ impl Multiview {
             );
             pass.set_pipeline(self.pipelines.get(&count).expect("built by prepare"));
             pass.set_bind_group(0, &self.frame.bind_group, &[]);
-            pass.set_bind_group(1, &group, &[self.batch.offset(i)]);
+            pass.set_bind_group(1, &group, &[self.views.offset(i)]);
             draw_mesh(&mut pass, mesh, 1);
         }
         self.npass.composite(device, encoder, &self.frame, target);

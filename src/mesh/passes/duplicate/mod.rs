@@ -30,7 +30,7 @@ use crate::camera::{MultiViewCamera, ViewUniform};
 use crate::display::MAX_VIEWS;
 use crate::error::Result;
 use crate::mesh::MeshBuffers;
-use crate::render::pass_params::constants_buffer;
+use crate::render::pass_params::{constants_buffer, PassParams};
 use crate::render::view_layers::nearest_depth_test;
 
 /// The views one pass of the layered and MRT methods draws.
@@ -86,6 +86,70 @@ pub(crate) fn views_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
             min_binding_size: wgpu::BufferSize::new(VIEWS_BYTES),
         },
         count: None,
+    }
+}
+
+/// The layered and MRT methods' group 1: every view's camera and, per pass, its batch of
+/// views (dynamic offset), for passes of at most `max_per_pass` views.
+pub(crate) struct BatchedViews {
+    pub max_per_pass: u32,
+    pub layout: wgpu::BindGroupLayout,
+    batch: PassParams<ViewBatch>,
+    label: &'static str,
+}
+
+/// One frame's batches and the group that binds them.
+pub(crate) struct BoundBatches {
+    pub passes: Vec<Range<u32>>,
+    pub group: wgpu::BindGroup,
+}
+
+impl BatchedViews {
+    pub fn new(device: &wgpu::Device, label: &'static str, max_per_pass: u32) -> Self {
+        let stages = wgpu::ShaderStages::VERTEX_FRAGMENT;
+        let layout = crate::render::pipeline::bind_group_layout(
+            device,
+            label,
+            &[
+                views_entry(0),
+                PassParams::<ViewBatch>::layout_entry(1, stages),
+            ],
+        );
+        Self {
+            max_per_pass,
+            layout,
+            batch: PassParams::new(device, label),
+            label,
+        }
+    }
+
+    /// This frame's passes over `camera`'s views and their group (new buffers of the frame's
+    /// own, no queue writes).
+    pub fn bind(&mut self, device: &wgpu::Device, camera: &MultiViewCamera) -> BoundBatches {
+        let passes = batches(camera.views, self.max_per_pass);
+        let params: Vec<ViewBatch> = passes.iter().map(ViewBatch::of).collect();
+        self.batch.write(device, &params);
+        let views = views_buffer(device, camera);
+        let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some(self.label),
+            layout: &self.layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: views.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: self.batch.binding(),
+                },
+            ],
+        });
+        BoundBatches { passes, group }
+    }
+
+    /// The dynamic offset of pass `i`'s batch.
+    pub fn offset(&self, i: usize) -> u32 {
+        self.batch.offset(i)
     }
 }
 

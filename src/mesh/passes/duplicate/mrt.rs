@@ -5,16 +5,13 @@
 //! error: a nearer fragment of one view hides farther ones of the other views of its pass
 //! (measured against the N-pass in tests/duplication.rs).
 
-use super::{batches, draw_mesh, mesh_pipeline, views_buffer, views_entry, ViewBatch};
+use super::{batches, draw_mesh, mesh_pipeline, BatchedViews, BoundBatches};
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
 use crate::mesh::passes::npass::PreparedFor;
 use crate::mesh::MeshBuffers;
 use crate::render::npass::NPassHarness;
-use crate::render::pass_params::PassParams;
-use crate::render::pipeline::{
-    begin_pass_to, bind_group_layout, cleared, pipeline_layout, PassTargets,
-};
+use crate::render::pipeline::{begin_pass_to, cleared, pipeline_layout, PassTargets};
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::ViewLayers;
 use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
@@ -25,11 +22,9 @@ pub const MAX_TARGETS: u32 = 8;
 
 /// The MRT mesh renderer.
 pub struct MeshMrt {
-    max_per_pass: u32,
-    views_layout: wgpu::BindGroupLayout,
+    views: BatchedViews,
     layout: wgpu::PipelineLayout,
     frame: FrameBinding,
-    batch: PassParams<ViewBatch>,
     /// By render targets per pass.
     pipelines: PipelineCache<u32, wgpu::RenderPipeline>,
     npass: NPassHarness,
@@ -46,24 +41,15 @@ impl MeshMrt {
             .min(limits.max_color_attachment_bytes_per_sample / bytes_per_target)
             .max(1);
         let frame_layout = frame_bind_group_layout(device);
-        let views_layout = bind_group_layout(
-            device,
-            "mrt views",
-            &[
-                views_entry(0),
-                PassParams::<ViewBatch>::layout_entry(1, wgpu::ShaderStages::VERTEX_FRAGMENT),
-            ],
-        );
+        let views = BatchedViews::new(device, "mrt views", max_per_pass);
         let layout = pipeline_layout(
             device,
             "mesh mrt",
-            &[Some(&frame_layout), Some(&views_layout)],
+            &[Some(&frame_layout), Some(&views.layout)],
         );
         Ok(Self {
-            max_per_pass,
-            views_layout,
+            views,
             layout,
-            batch: PassParams::new(device, "mrt view batches"),
             pipelines: PipelineCache::new("mesh mrt"),
             npass: NPassHarness::new(device, &frame_layout)?,
             frame: FrameBinding::new(device, &frame_layout),
@@ -73,7 +59,7 @@ impl MeshMrt {
 
     /// Views one pass renders (render targets): 8, or fewer where the adapter allows fewer.
     pub fn views_per_pass(&self) -> u32 {
-        self.max_per_pass
+        self.views.max_per_pass
     }
 
     /// Per-view images of the last frame (layer i = view i), if any.
@@ -92,7 +78,7 @@ impl Renderer<MeshBuffers> for MeshMrt {
     ) -> Result<()> {
         begin_prepare(device, frame, &mut self.prepared)?;
         self.npass.prepare(device, frame)?;
-        for range in batches(frame.camera.views, self.max_per_pass) {
+        for range in batches(frame.camera.views, self.views.max_per_pass) {
             let targets = range.len() as u32;
             let layout = &self.layout;
             self.pipelines.prepare(device, targets, |modules| {
@@ -121,24 +107,7 @@ impl Renderer<MeshBuffers> for MeshMrt {
         check_target(frame, target)?;
         check_prepared("MeshMrt", &self.prepared, &PreparedFor::of(frame))?;
         self.frame.write(device, frame);
-        let passes = batches(frame.camera.views, self.max_per_pass);
-        let params: Vec<ViewBatch> = passes.iter().map(ViewBatch::of).collect();
-        self.batch.write(device, &params);
-        let views = views_buffer(device, &frame.camera);
-        let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("mrt views"),
-            layout: &self.views_layout,
-            entries: &[
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: views.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 1,
-                    resource: self.batch.binding(),
-                },
-            ],
-        });
+        let BoundBatches { passes, group } = self.views.bind(device, &frame.camera);
         let layers = self.npass.layers();
         for (i, range) in passes.iter().enumerate() {
             let colors: Vec<_> = layers.layer_views[range.start as usize..range.end as usize]
@@ -158,7 +127,7 @@ impl Renderer<MeshBuffers> for MeshMrt {
             let targets = range.len() as u32;
             pass.set_pipeline(self.pipelines.get(&targets).expect("built by prepare"));
             pass.set_bind_group(0, &self.frame.bind_group, &[]);
-            pass.set_bind_group(1, &group, &[self.batch.offset(i)]);
+            pass.set_bind_group(1, &group, &[self.views.offset(i)]);
             draw_mesh(&mut pass, mesh, targets);
         }
         self.npass.composite(device, encoder, &self.frame, target);
