@@ -129,9 +129,10 @@ impl PointSplatter {
         if method == Method::Mrt {
             return Err(Error::invalid(
                 "method",
-                "mrt renders meshes only: a splat group image texel is 16 bytes and adapters \
-                 allow 32 bytes of render targets per sample, so MRT would hold 2 views per \
-                 pass; tiled and layered duplicate splats",
+                "mrt renders meshes only: splat group images are integer textures (packed \
+                 colour, weight and depth), which cannot blend, so the paper's α = 0 writes to \
+                 the other views' targets would overwrite them; tiled and layered duplicate \
+                 splats",
             ));
         }
         let max_per_pass = device.limits().max_multiview_view_count;
