@@ -40,6 +40,17 @@ fn run(target: &str, data: &[u8]) {
                 }
             }
         }
+        "quilt_name" => {
+            use autostereo::render::quilt::{parse_quilt_name, QuiltLayout};
+            if let Some((cols, rows, aspect)) = parse_quilt_name(&text) {
+                let views = cols.saturating_mul(rows).min(256);
+                let tile = [64, (64.0 / aspect).clamp(1.0, 1e6) as u32];
+                if let Ok(q) = QuiltLayout::with_grid(cols, rows, tile, views) {
+                    let _ = (q.size(), q.tile_origin(views.saturating_sub(1)), q.suffix());
+                    let _ = q.file_name(Path::new(text.as_ref()));
+                }
+            }
+        }
         other => panic!("no fuzz target '{other}'"),
     }
 }
@@ -68,6 +79,7 @@ fn seeds_and_found_crashes_replay_without_panics() {
         "transfer",
         "calibration",
         "display_spec",
+        "quilt_name",
     ];
     let mut replayed = 0;
     for target in targets {

@@ -78,9 +78,14 @@ impl QuiltLayout {
 
     /// Top-left texel of view `view`'s tile (image rows top-down; view 0 is bottom-left).
     pub fn tile_origin(&self, view: u32) -> [u32; 2] {
-        let col = view % self.cols;
-        let row_from_top = self.rows - 1 - view / self.cols;
-        [col * self.tile[0], row_from_top * self.tile[1]]
+        // Saturating: a grid read from a file name may be far beyond any texture (the atlas
+        // refuses it by size before anything is drawn).
+        let col = view % self.cols.max(1);
+        let row_from_top = self.rows.saturating_sub(1 + view / self.cols.max(1));
+        [
+            col.saturating_mul(self.tile[0]),
+            row_from_top.saturating_mul(self.tile[1]),
+        ]
     }
 
     /// Width / height of one view.
