@@ -172,7 +172,11 @@ pub(super) fn build(
         Geometry::Tiled | Geometry::Layered { .. } => cover_constants.clone(),
         _ => spec.constants(&[]),
     };
-    let composite_constants = spec.constants(&[("SUBPIXEL_DEPTH", subpixel as u32 as f64)]);
+    let layered = matches!(geometry, Geometry::Layered { .. });
+    let composite_constants = spec.constants(&[
+        ("SUBPIXEL_DEPTH", subpixel as u32 as f64),
+        ("LAYERED_GROUPS", layered as u32 as f64),
+    ]);
 
     let layout_of =
         |label, groups: &[Option<&wgpu::BindGroupLayout>]| pipeline_layout(device, label, groups);
