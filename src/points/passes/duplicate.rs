@@ -8,8 +8,9 @@
 
 use std::ops::Range;
 
+use super::bind_groups::FrameGroups;
 use super::pipelines::{Geometry, SplatParams, SplatPipelineKey, COVER_WORKGROUP};
-use super::{FrameGroups, PointSplatter};
+use super::PointSplatter;
 use crate::error::Result;
 use crate::frame::Frame;
 use crate::points::SplatScene;

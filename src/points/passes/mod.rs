@@ -7,6 +7,7 @@
 //! the display mask choosing each subpixel's ray; the N-pass baseline does it per view with the
 //! same kernel, ε and groups, then mask-composites; the single view once from the centre.
 
+mod bind_groups;
 mod duplicate;
 mod group_images;
 mod pipelines;
@@ -15,6 +16,7 @@ use crate::render::Method;
 
 pub use pipelines::SplatParams;
 
+use self::bind_groups::FrameGroups;
 use self::group_images::{GroupImages, GroupImagesKey};
 use self::pipelines::{Geometry, Layouts, Pipelines, SplatPipelineKey, COVER_WORKGROUP};
 use crate::error::{Error, Result};
@@ -358,66 +360,6 @@ impl PointSplatter {
             }
             _ if self.subpixel(frame) => vec![Geometry::Subpixel],
             _ => vec![Geometry::Pixel],
-        }
-    }
-}
-
-/// The bind groups of one frame's passes.
-struct FrameGroups {
-    cover: wgpu::BindGroup,
-    quad: wgpu::BindGroup,
-    images: wgpu::BindGroup,
-    params: wgpu::BindGroup,
-}
-
-impl PointSplatter {
-    /// This frame's bind groups (after `prepare` and the frame's `params.write`).
-    fn frame_groups(&self, device: &wgpu::Device, scene: &SplatScene) -> FrameGroups {
-        let scratch = self.scratch.as_ref().expect("ensured");
-        let images = &self.images.as_ref().expect("ensured").layers;
-        let group = |label, layout, entries: &[wgpu::BindGroupEntry]| {
-            device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some(label),
-                layout,
-                entries,
-            })
-        };
-        let entry = |binding, resource| wgpu::BindGroupEntry { binding, resource };
-        let cover_group = group(
-            "splat cover",
-            &self.layouts.cover,
-            &[
-                entry(0, scene.buffer.as_entire_binding()),
-                entry(1, scratch.eye_splats.binding()),
-                entry(2, scratch.rects.binding()),
-            ],
-        );
-        let quad_group = group(
-            "splat quads",
-            &self.layouts.quad,
-            &[
-                entry(0, scratch.eye_splats.binding()),
-                entry(1, scratch.rects.binding()),
-            ],
-        );
-        let images_group = group(
-            "splat group images",
-            &self.layouts.groups,
-            &[entry(
-                0,
-                wgpu::BindingResource::TextureView(&images.array_view),
-            )],
-        );
-        let params_group = group(
-            "splat pass constants",
-            &self.layouts.params,
-            &[entry(0, self.params.binding())],
-        );
-        FrameGroups {
-            cover: cover_group,
-            quad: quad_group,
-            images: images_group,
-            params: params_group,
         }
     }
 }
