@@ -102,6 +102,19 @@ pub(crate) fn cleared(
     }
 }
 
+/// A colour attachment that keeps what the texture holds (a pass that writes part of it).
+pub(crate) fn kept(view: &wgpu::TextureView) -> wgpu::RenderPassColorAttachment<'_> {
+    wgpu::RenderPassColorAttachment {
+        view,
+        depth_slice: None,
+        resolve_target: None,
+        ops: wgpu::Operations {
+            load: wgpu::LoadOp::Load,
+            store: wgpu::StoreOp::Store,
+        },
+    }
+}
+
 /// Begin a render pass writing `color`, with `depth` (if any) cleared to the far plane and
 /// discarded at the end: the one pass shape every render pass of the crate has.
 pub(crate) fn begin_pass<'e>(

@@ -51,7 +51,9 @@ fn blend_subpixel(coord: vec2<u32>, background: f32) -> f32 {
 
 @fragment
 fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
-    let px = vec2<u32>(position.xy);
+    // The group images' texel under this pixel: the tiled method composites one band of tile
+    // rows of the atlas at a time (image_row = the band's first atlas row; 0 elsewhere).
+    let px = vec2<u32>(position.xy) - vec2<u32>(0u, params.image_row);
     let background = frame.background.rgb;
     if (SUBPIXEL_DEPTH) {
         var out = background;

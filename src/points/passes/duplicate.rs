@@ -4,11 +4,13 @@
 //! (layered, `wgsl/points/layered.wgsl`, in as few passes as the adapter's layer limit allows)
 //! — then the same ε-z compositing per view (`wgsl/points/composite.wgsl`) and the mask.
 //! One ray per pixel, exactly as the N-pass; each copy's quad is projected in the vertex
-//! stage, as duplicating engines do.
+//! stage, as duplicating engines do. Where every view's group images would outgrow one
+//! texture, the views go in chunks that reuse them (`chunks.rs`).
 
 use std::ops::Range;
 
 use super::bind_groups::FrameGroups;
+use super::chunks::{layered_chunks, tiled_bands, Band};
 use super::pipelines::{Geometry, SplatParams, SplatPipelineKey, COVER_WORKGROUP};
 use super::PointSplatter;
 use crate::error::Result;
@@ -17,27 +19,67 @@ use crate::points::SplatScene;
 use crate::render::batches::batches;
 use crate::render::dispatch::dispatch_2d;
 use crate::render::pass_params::constants_buffer;
-use crate::render::pipeline::{begin_pass, begin_pass_to, cleared, multiview_mask, PassTargets};
+use crate::render::pipeline::{
+    begin_pass, begin_pass_to, cleared, kept, multiview_mask, PassTargets,
+};
 use crate::render::quilt::QuiltLayout;
 use crate::render::specialize::Specialization;
 use crate::render::view_layers::layer_range;
 use crate::render::Method;
 use crate::target::SpatialTarget;
 
-/// The layered method's per-pass constants: `base` for the cover pass, one per multiview
-/// batch (its first view), one per view's compositing (group layers `g · N + v`).
-pub(super) fn layered_passes(base: SplatParams, views: u32, max_per_pass: u32) -> Vec<SplatParams> {
+/// How a duplicated frame's views are split so that their group images fit one texture.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub(super) enum Chunks {
+    #[default]
+    None,
+    /// Tiled: bands of tile rows of the atlas.
+    Bands(Vec<Band>),
+    /// Layered: runs of consecutive views.
+    Runs(Vec<Range<u32>>),
+}
+
+/// The multiview batches of one run of views (the adapter's layer limit), as view ranges.
+fn run_batches(run: &Range<u32>, max_per_pass: u32) -> Vec<Range<u32>> {
+    batches(run.len() as u32, max_per_pass)
+        .into_iter()
+        .map(|b| b.start + run.start..b.end + run.start)
+        .collect()
+}
+
+/// The layered method's per-pass constants: `base` for the cover pass, then per run of views
+/// one per multiview batch (its first view) and one per view's compositing (group layers
+/// `g · run length + view − run start`).
+pub(super) fn layered_passes(
+    base: SplatParams,
+    runs: &[Range<u32>],
+    max_per_pass: u32,
+) -> Vec<SplatParams> {
     let mut passes = vec![base];
-    passes.extend(batches(views, max_per_pass).iter().map(|r| SplatParams {
-        first_view: r.start,
-        ..base
-    }));
-    passes.extend((0..views).map(|v| SplatParams {
-        group_stride: views,
-        group_base: v,
-        ..base
-    }));
+    for run in runs {
+        passes.extend(run_batches(run, max_per_pass).iter().map(|b| SplatParams {
+            first_view: b.start,
+            ..base
+        }));
+        passes.extend(run.clone().map(|v| SplatParams {
+            group_stride: run.len() as u32,
+            group_base: v - run.start,
+            ..base
+        }));
+    }
     passes
+}
+
+/// The tiled method's per-band constants (geometry and compositing of band i: pass i).
+pub(super) fn tiled_passes(base: SplatParams, bands: &[Band]) -> Vec<SplatParams> {
+    bands
+        .iter()
+        .map(|b| SplatParams {
+            first_view: b.first_view,
+            image_row: b.row,
+            ..base
+        })
+        .collect()
 }
 
 impl PointSplatter {
@@ -46,9 +88,50 @@ impl PointSplatter {
         QuiltLayout::for_views(frame.camera.views, frame.size)
     }
 
-    /// The layered method's multiview batches.
-    pub(super) fn layer_batches(&self, frame: &Frame) -> Vec<Range<u32>> {
-        batches(frame.camera.views, self.max_per_pass)
+    /// How `frame`'s views are chunked (`chunks.rs`) for this method, and the group images
+    /// that hold one chunk: (size, layers).
+    pub(super) fn plan_chunks(
+        &self,
+        device: &wgpu::Device,
+        scene: &SplatScene,
+        frame: &Frame,
+    ) -> Result<(Chunks, [u32; 2], u32)> {
+        let groups = scene.groups();
+        Ok(match self.path {
+            Method::Tiled => {
+                let bands = tiled_bands(&self.quilt_layout(frame), groups, self.max_image_bytes)?;
+                let size = bands[0].layout.size(); // the first bands are the tallest
+                (Chunks::Bands(bands), size, groups)
+            }
+            Method::Layered => {
+                let max_layers = device.limits().max_texture_array_layers;
+                let runs = layered_chunks(
+                    frame.camera.views,
+                    frame.size,
+                    groups,
+                    max_layers,
+                    self.max_image_bytes,
+                )?;
+                let longest = runs[0].len() as u32;
+                (
+                    Chunks::Runs(runs),
+                    frame.size,
+                    groups.saturating_mul(longest),
+                )
+            }
+            _ => (Chunks::None, frame.size, groups),
+        })
+    }
+
+    /// The layered method's multiview batches, over every run of views.
+    pub(super) fn layer_batches(&self) -> Vec<Range<u32>> {
+        match &self.chunks {
+            Chunks::Runs(runs) => runs
+                .iter()
+                .flat_map(|run| run_batches(run, self.max_per_pass))
+                .collect(),
+            _ => Vec::new(),
+        }
     }
 
     /// Record a tiled or layered frame (after `encode`'s checks).
@@ -60,7 +143,6 @@ impl PointSplatter {
         frame: &Frame,
         target: &SpatialTarget,
     ) -> Result<()> {
-        let views = frame.camera.views;
         let passes = self.passes(frame, scene.groups());
         self.frame.write(device, frame);
         self.params.write(device, &passes);
@@ -74,14 +156,6 @@ impl PointSplatter {
             images: images_group,
             params: params_group,
         } = self.frame_groups(device, scene);
-        let group = |label, layout, entries: &[wgpu::BindGroupEntry]| {
-            device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some(label),
-                layout,
-                entries,
-            })
-        };
-        let entry = |binding, resource| wgpu::BindGroupEntry { binding, resource };
         // The cover pass only transforms the splats here: each copy's quad is the vertex
         // stage's.
         let any = self.geometries(frame)[0];
@@ -104,90 +178,107 @@ impl PointSplatter {
             pass.dispatch_workgroups(dispatch[0], dispatch[1], 1);
         }
         let composite = &self.pipelines.get(&pipeline(any)).expect("built").composite;
-        if self.path == Method::Tiled {
+        if let Chunks::Bands(bands) = &self.chunks {
             let atlas = self.atlas.as_ref().expect("allocated by prepare");
-            let quilt = constants_buffer(
-                device,
-                "quilt layout",
-                wgpu::BufferUsages::UNIFORM,
-                bytemuck::bytes_of(&atlas.layout.uniform()),
-            );
-            let quilt_group = group(
-                "splat quilt layout",
-                &self.layouts.quilt,
-                &[entry(0, quilt.as_entire_binding())],
-            );
             let geometry = &self
                 .pipelines
                 .get(&pipeline(Geometry::Tiled))
                 .expect("built");
-            let offset = [self.params.offset(0)];
-            for (range, layer) in scene.group_ranges.iter().zip(&images.layer_views) {
-                let mut pass = begin_pass(
-                    encoder,
-                    "splat group (tiled)",
-                    cleared(layer, [0.0; 4]),
-                    Some(&images.depth_view),
+            for (i, band) in bands.iter().enumerate() {
+                let quilt = constants_buffer(
+                    device,
+                    "quilt band layout",
+                    wgpu::BufferUsages::UNIFORM,
+                    bytemuck::bytes_of(&band.layout.uniform()),
                 );
-                pass.set_pipeline(&geometry.geometry);
+                let quilt_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+                    label: Some("splat quilt layout"),
+                    layout: &self.layouts.quilt,
+                    entries: &[wgpu::BindGroupEntry {
+                        binding: 0,
+                        resource: quilt.as_entire_binding(),
+                    }],
+                });
+                let offset = [self.params.offset(i)];
+                for (range, layer) in scene.group_ranges.iter().zip(&images.layer_views) {
+                    let mut pass = begin_pass(
+                        encoder,
+                        "splat group (tiled)",
+                        cleared(layer, [0.0; 4]),
+                        Some(&images.depth_view),
+                    );
+                    pass.set_pipeline(&geometry.geometry);
+                    pass.set_bind_group(0, &self.frame.bind_group, &[]);
+                    pass.set_bind_group(1, &quad_group, &[]);
+                    pass.set_bind_group(2, &params_group, &offset);
+                    pass.set_bind_group(3, &quilt_group, &[]);
+                    pass.draw(range.start * 6..range.end * 6, band.views());
+                }
+                // ε-z compositing of every tile of the band at once: it only looks at texels.
+                let color = if i == 0 {
+                    cleared(&atlas.color.view, [0.0; 4])
+                } else {
+                    kept(&atlas.color.view)
+                };
+                let mut pass = begin_pass(encoder, "splat composite (tiled)", color, None);
+                let [w, h] = band.layout.size();
+                pass.set_viewport(0.0, band.row as f32, w as f32, h as f32, 0.0, 1.0);
+                pass.set_pipeline(composite);
                 pass.set_bind_group(0, &self.frame.bind_group, &[]);
-                pass.set_bind_group(1, &quad_group, &[]);
+                pass.set_bind_group(1, &images_group, &[]);
                 pass.set_bind_group(2, &params_group, &offset);
-                pass.set_bind_group(3, &quilt_group, &[]);
-                pass.draw(range.start * 6..range.end * 6, 0..views);
+                pass.draw(0..3, 0..1);
             }
-            // ε-z compositing of every tile at once: it only looks at texels.
-            let mut pass = begin_pass(
-                encoder,
-                "splat composite (tiled)",
-                cleared(&atlas.color.view, [0.0; 4]),
-                None,
-            );
-            pass.set_pipeline(composite);
-            pass.set_bind_group(0, &self.frame.bind_group, &[]);
-            pass.set_bind_group(1, &images_group, &[]);
-            pass.set_bind_group(2, &params_group, &offset);
-            pass.draw(0..3, 0..1);
-            drop(pass);
             let compositor = self.atlas_compositor.as_ref().expect("tiled");
             compositor.encode(device, encoder, &self.frame, atlas, target);
             return Ok(());
         }
-        let batches = self.layer_batches(frame);
+        let Chunks::Runs(runs) = &self.chunks else {
+            unreachable!("tiled and layered plan their chunks in prepare")
+        };
         let depth = self.layer_depth.as_ref().expect("allocated by prepare");
-        for (g, range) in scene.group_ranges.iter().enumerate() {
-            for (b, batch) in batches.iter().enumerate() {
-                let layers = batch.len() as u32;
-                let first = g as u32 * views + batch.start;
-                let color = layer_range(&images.texture, first, layers);
-                let depth = layer_range(depth, 0, layers);
-                let mut pass = begin_pass_to(
-                    encoder,
-                    "splat group (layered)",
-                    PassTargets {
-                        colors: &[Some(cleared(&color, [0.0; 4]))],
-                        depth: Some(&depth),
-                        keep_depth: false,
-                        multiview_mask: multiview_mask(layers),
-                    },
-                );
-                let key = pipeline(Geometry::Layered { layers });
-                pass.set_pipeline(&self.pipelines.get(&key).expect("built").geometry);
-                pass.set_bind_group(0, &self.frame.bind_group, &[]);
-                pass.set_bind_group(1, &quad_group, &[]);
-                pass.set_bind_group(2, &params_group, &[self.params.offset(1 + b)]);
-                pass.draw(range.start * 6..range.end * 6, 0..1);
-            }
-        }
         let npass = self.npass.as_ref().expect("layered keeps view layers");
-        for (v, layer) in npass.layers().layer_views.iter().enumerate() {
-            let mut pass = begin_pass(encoder, "splat composite", cleared(layer, [0.0; 4]), None);
-            pass.set_pipeline(composite);
-            pass.set_bind_group(0, &self.frame.bind_group, &[]);
-            pass.set_bind_group(1, &images_group, &[]);
-            let offset = self.params.offset(1 + batches.len() + v);
-            pass.set_bind_group(2, &params_group, &[offset]);
-            pass.draw(0..3, 0..1);
+        let mut next_pass = 1; // pass 0: the cover pass
+        for run in runs {
+            let batches = run_batches(run, self.max_per_pass);
+            let stride = run.len() as u32;
+            for (g, range) in scene.group_ranges.iter().enumerate() {
+                for (b, batch) in batches.iter().enumerate() {
+                    let layers = batch.len() as u32;
+                    let first = g as u32 * stride + batch.start - run.start;
+                    let color = layer_range(&images.texture, first, layers);
+                    let depth = layer_range(depth, 0, layers);
+                    let mut pass = begin_pass_to(
+                        encoder,
+                        "splat group (layered)",
+                        PassTargets {
+                            colors: &[Some(cleared(&color, [0.0; 4]))],
+                            depth: Some(&depth),
+                            keep_depth: false,
+                            multiview_mask: multiview_mask(layers),
+                        },
+                    );
+                    let key = pipeline(Geometry::Layered { layers });
+                    pass.set_pipeline(&self.pipelines.get(&key).expect("built").geometry);
+                    pass.set_bind_group(0, &self.frame.bind_group, &[]);
+                    pass.set_bind_group(1, &quad_group, &[]);
+                    let offset = self.params.offset(next_pass + b);
+                    pass.set_bind_group(2, &params_group, &[offset]);
+                    pass.draw(range.start * 6..range.end * 6, 0..1);
+                }
+            }
+            next_pass += batches.len();
+            for v in run.clone() {
+                let layer = &npass.layers().layer_views[v as usize];
+                let mut pass =
+                    begin_pass(encoder, "splat composite", cleared(layer, [0.0; 4]), None);
+                pass.set_pipeline(composite);
+                pass.set_bind_group(0, &self.frame.bind_group, &[]);
+                pass.set_bind_group(1, &images_group, &[]);
+                pass.set_bind_group(2, &params_group, &[self.params.offset(next_pass)]);
+                pass.draw(0..3, 0..1);
+                next_pass += 1;
+            }
         }
         npass.composite(device, encoder, &self.frame, target);
         Ok(())

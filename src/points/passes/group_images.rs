@@ -23,10 +23,16 @@ pub(super) struct GroupImagesKey {
 impl GroupImages {
     /// Bytes the images of `key` take, with their depth buffer.
     pub fn bytes(key: GroupImagesKey) -> u64 {
+        let area = key.size[0] as u64 * key.size[1] as u64;
+        Self::texture_bytes(key) + area * 4
+    }
+
+    /// Bytes of the group images' one array texture (without the depth buffer).
+    pub fn texture_bytes(key: GroupImagesKey) -> u64 {
         let texel = if key.subpixel { 8 } else { 16 };
         let area = key.size[0] as u64 * key.size[1] as u64;
         let layers = crate::render::view_layers::array_layers_for(key.size, key.groups);
-        area * (texel * layers as u64 + 4)
+        area * texel * layers as u64
     }
 
     pub fn new(device: &wgpu::Device, key: GroupImagesKey) -> Result<Self> {

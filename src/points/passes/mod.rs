@@ -8,6 +8,7 @@
 //! same kernel, ε and groups, then mask-composites; the single view once from the centre.
 
 mod bind_groups;
+mod chunks;
 mod duplicate;
 mod group_images;
 mod pipelines;
@@ -120,6 +121,10 @@ pub struct PointSplatter {
     atlas_compositor: Option<AtlasCompositor>,
     /// Layered only: a depth layer per layer of a multiview pass.
     layer_depth: Option<wgpu::Texture>,
+    /// Tiled and layered: the views in chunks whose group images fit one texture of at most
+    /// `max_image_bytes`.
+    chunks: duplicate::Chunks,
+    max_image_bytes: u64,
     prepared: Option<PreparedFor>,
     fence: StorageFence,
 }
@@ -159,6 +164,8 @@ impl PointSplatter {
             atlas: None,
             atlas_compositor,
             layer_depth: None,
+            chunks: duplicate::Chunks::None,
+            max_image_bytes: chunks::MAX_IMAGE_BYTES,
             options,
             frame: FrameBinding::new(device, &layouts.frame),
             params: PassParams::new(device, "splat pass constants"),
@@ -200,7 +207,7 @@ impl PointSplatter {
     /// How this adapter renders the method, in words (the layered method without multiview
     /// is one pass per layer: the N-pass).
     pub fn describe(&self) -> String {
-        match (self.method, self.path) {
+        let how = match (self.method, self.path) {
             (Method::Layered, Method::Layered) => format!(
                 "multiview, at most {} layers per pass (the adapter's limit)",
                 self.max_per_pass
@@ -209,7 +216,27 @@ impl PointSplatter {
                 "one pass per layer: the adapter has no multiview (MULTIVIEW)".to_string()
             }
             (m, _) => m.name().to_string(),
+        };
+        let chunked = |n: usize, what: &str| {
+            format!(
+                "{how}; views in {n} {what} (group images of at most {} bytes per texture)",
+                self.max_image_bytes
+            )
+        };
+        match &self.chunks {
+            duplicate::Chunks::Bands(b) if b.len() > 1 => chunked(b.len(), "bands of tile rows"),
+            duplicate::Chunks::Runs(r) if r.len() > 1 => chunked(r.len(), "runs"),
+            _ => how,
         }
+    }
+
+    /// The largest group-image texture the tiled and layered methods allocate before they
+    /// split the views into chunks that reuse one set of group images (default 1 GiB, what
+    /// Vulkan guarantees one allocation may take; wgpu reports no such limit). Takes effect at
+    /// the next `prepare`.
+    pub fn set_max_image_bytes(&mut self, bytes: u64) {
+        self.max_image_bytes = bytes;
+        self.prepared = None;
     }
 
     /// Whether `frame` renders with per-subpixel depth images.
@@ -232,7 +259,8 @@ impl PointSplatter {
             group_stride: 1,
             group_base: 0,
             first_view: 0,
-            _pad: [0; 3],
+            image_row: 0,
+            _pad: [0; 2],
         };
         match self.path {
             Method::SinglePass => vec![SplatParams {
@@ -245,10 +273,13 @@ impl PointSplatter {
             Method::NPass => (0..camera.views)
                 .map(|i| fixed(camera.view_offset(i)))
                 .collect(),
-            Method::Tiled => vec![fixed(0.0)],
-            Method::Layered => {
-                duplicate::layered_passes(fixed(0.0), camera.views, self.max_per_pass)
-            }
+            Method::Tiled | Method::Layered => match &self.chunks {
+                duplicate::Chunks::Bands(bands) => duplicate::tiled_passes(fixed(0.0), bands),
+                duplicate::Chunks::Runs(runs) => {
+                    duplicate::layered_passes(fixed(0.0), runs, self.max_per_pass)
+                }
+                duplicate::Chunks::None => unreachable!("planned by prepare"),
+            },
             Method::Mrt => unreachable!("refused by new"),
         }
     }
@@ -289,24 +320,16 @@ impl PointSplatter {
         } else {
             1
         };
-        let (size, groups) = match self.path {
-            Method::Tiled => {
-                let layout = self.quilt_layout(frame);
-                if !self.atlas.as_ref().is_some_and(|a| a.fits(&layout, false)) {
-                    self.atlas = None; // free before allocating the replacement
-                    self.atlas = Some(Atlas::new(device, layout, false)?);
-                }
-                (layout.size(), scene.groups())
+        let (chunks, size, groups) = self.plan_chunks(device, scene, frame)?;
+        self.chunks = chunks;
+        if self.path == Method::Tiled {
+            let layout = self.quilt_layout(frame);
+            if !self.atlas.as_ref().is_some_and(|a| a.fits(&layout, false)) {
+                self.atlas = None; // free before allocating the replacement
+                self.atlas = Some(Atlas::new(device, layout, false)?);
             }
-            Method::Layered => (
-                frame.size,
-                scene.groups().saturating_mul(frame.camera.views),
-            ),
-            _ => (
-                [frame.size[0].saturating_mul(k), frame.size[1]],
-                scene.groups(),
-            ),
-        };
+        }
+        let size = [size[0].saturating_mul(k), size[1]];
         let key = GroupImagesKey {
             size,
             groups,
@@ -320,7 +343,7 @@ impl PointSplatter {
             npass.prepare(device, frame)?;
         }
         if self.path == Method::Layered {
-            let deepest = self.layer_batches(frame).iter().map(|r| r.len()).max();
+            let deepest = self.layer_batches().iter().map(|r| r.len()).max();
             let layers = deepest.unwrap_or(1) as u32;
             crate::render::view_layers::depth_array(
                 &mut self.layer_depth,
@@ -348,7 +371,7 @@ impl PointSplatter {
             Method::Tiled => vec![Geometry::Tiled],
             Method::Layered => {
                 let mut sizes: Vec<u32> = self
-                    .layer_batches(frame)
+                    .layer_batches()
                     .iter()
                     .map(|r| r.len() as u32)
                     .collect();

@@ -42,9 +42,13 @@ pub struct SplatParams {
     pub group_stride: u32,
     /// See `group_stride`.
     pub group_base: u32,
-    /// Layered geometry passes: the view of multiview layer 0.
+    /// Duplication geometry passes: the view of multiview layer 0 (layered) or of the band's
+    /// first tile (tiled).
     pub first_view: u32,
-    pub(super) _pad: [u32; 3],
+    /// Compositing: the atlas texel row of the group images' row 0 (the tiled method's bands
+    /// of tile rows, `duplicate::ViewChunk`; 0 elsewhere).
+    pub image_row: u32,
+    pub(super) _pad: [u32; 2],
 }
 const _: () = assert!(std::mem::size_of::<SplatParams>() == 48);
 crate::shader::gpu_layout!(
@@ -59,7 +63,8 @@ crate::shader::gpu_layout!(
         groups,
         group_stride,
         group_base,
-        first_view
+        first_view,
+        image_row
     ]
 );
 

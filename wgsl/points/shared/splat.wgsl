@@ -22,8 +22,8 @@ struct SplatParams {
     groups: u32,       // group images to composite (the array may hold a spare layer)
     group_stride: u32, // layer of group g: g · group_stride + group_base (layered: N, view)
     group_base: u32,
-    first_view: u32,   // layered geometry passes: the view of multiview layer 0
-    _pad0: u32,
+    first_view: u32,   // duplication geometry passes: the view of the first layer / tile
+    image_row: u32,    // compositing: atlas texel row of the group images' row 0 (tiled bands)
     _pad1: u32,
     _pad2: u32,
 }
