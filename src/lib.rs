@@ -25,6 +25,7 @@ pub mod mesh;
 pub mod points;
 pub mod readback;
 pub mod render;
+pub mod rgbd;
 pub mod shader;
 pub mod target;
 pub mod timing;

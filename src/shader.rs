@@ -54,6 +54,7 @@ pub const STAGES: &[(&str, &str)] = &[
     wgsl!("mesh/mrt.wgsl"),
     wgsl!("render/composite.wgsl"),
     wgsl!("render/composite_atlas.wgsl"),
+    wgsl!("rgbd/warp.wgsl"),
     wgsl!("render/depth_readback.wgsl"),
     wgsl!("render/output.wgsl"),
     wgsl!("render/storage_fence.wgsl"),
@@ -262,6 +263,10 @@ mod tests {
             (
                 "render/composite_atlas.wgsl",
                 crate::render::quilt::QuiltUniform::GPU_LAYOUT,
+            ),
+            (
+                "rgbd/warp.wgsl",
+                crate::rgbd::passes::WarpUniform::GPU_LAYOUT,
             ),
             (
                 "mesh/single_pass_compute.wgsl",

@@ -363,3 +363,108 @@ fn bench_report_targets_follow_the_measured_rows() {
     let mesh = line("| mesh |", "N-pass / SP ≥ 2 at N = 8");
     assert!(mesh.ends_with("| 10.00× | met |"), "{mesh}");
 }
+
+/// `rgbd`: a colour + 16-bit depth pair and the same as one side-by-side file give the same
+/// spatial image; the quilt holds every view under the Looking Glass name; a flat picture at
+/// the focus is the picture; mismatched or malformed inputs are refused by name.
+#[test]
+fn rgbd_pairs_side_by_side_quilts_and_bad_maps() {
+    let (w, h) = (48u32, 32u32);
+    let mut color = image::RgbImage::new(w, h);
+    let mut depth = image::ImageBuffer::<image::Luma<u16>, Vec<u16>>::new(w, h);
+    let mut sbs = image::RgbImage::new(2 * w, h);
+    for y in 0..h {
+        for x in 0..w {
+            let rgb = image::Rgb([(x * 5) as u8, (y * 7) as u8, 90]);
+            let near = if (16..32).contains(&x) {
+                60000u16
+            } else {
+                8000
+            };
+            color.put_pixel(x, y, rgb);
+            depth.put_pixel(x, y, image::Luma([near]));
+            sbs.put_pixel(x, y, rgb);
+            let grey = (near >> 8) as u8;
+            sbs.put_pixel(w + x, y, image::Rgb([grey; 3]));
+        }
+    }
+    let (c, d, s) = (
+        out_path("rgbd_color.png"),
+        out_path("rgbd_depth.png"),
+        out_path("rgbd_sbs.png"),
+    );
+    color.save(&c).unwrap();
+    depth.save(&d).unwrap();
+    sbs.save(&s).unwrap();
+    let (pair_out, sbs_out) = (out_path("rgbd_pair_out.png"), out_path("rgbd_sbs_out.png"));
+    let quilt = out_path("rgbd_quilt.png");
+    let (c_s, d_s, s_s) = (
+        c.to_str().unwrap(),
+        d.to_str().unwrap(),
+        s.to_str().unwrap(),
+    );
+    run(&[
+        "rgbd",
+        c_s,
+        d_s,
+        "--out",
+        pair_out.to_str().unwrap(),
+        "--quilt-out",
+        quilt.to_str().unwrap(),
+    ]);
+    run(&["rgbd", s_s, "--sbs", "--out", sbs_out.to_str().unwrap()]);
+    let a = autostereo::image_io::RgbImage::load_png(&pair_out).unwrap();
+    let b = autostereo::image_io::RgbImage::load_png(&sbs_out).unwrap();
+    // 8-bit (side by side) and 16-bit depth differ by < 1/256 in nearness: a fraction of a
+    // pixel of parallax here.
+    let diff = autostereo::image_io::compare(&a, &b).unwrap();
+    assert!(diff.frac_off_2 < 0.02, "{diff:?}");
+    let named = out_path("rgbd_quilt_qs2x4a1.5.png");
+    let q = autostereo::image_io::RgbImage::load_png(&named).unwrap();
+    assert_eq!([q.width, q.height], [2 * w, 4 * h]);
+    // Flat at the focus: the picture itself.
+    let flat = out_path("rgbd_flat_depth.png");
+    image::GrayImage::from_pixel(w, h, image::Luma([128]))
+        .save(&flat)
+        .unwrap();
+    let flat_out = out_path("rgbd_flat_out.png");
+    run(&[
+        "rgbd",
+        c_s,
+        flat.to_str().unwrap(),
+        "--focus",
+        &(128.0 / 255.0).to_string(),
+        "--display",
+        "slanted:45,7.5,1/6,0.2",
+        "--out",
+        flat_out.to_str().unwrap(),
+    ]);
+    let picture = autostereo::image_io::RgbImage::load_png(&c).unwrap();
+    assert_eq!(
+        autostereo::image_io::RgbImage::load_png(&flat_out).unwrap(),
+        picture
+    );
+    // Refusals, each naming what is wrong.
+    let small = out_path("rgbd_small_depth.png");
+    image::GrayImage::new(w / 2, h).save(&small).unwrap();
+    let small_s = small.to_str().unwrap();
+    let o = pair_out.to_str().unwrap();
+    let (ok, _, err) = run_any(&["rgbd", c_s, small_s, "--out", o]);
+    assert!(
+        !ok && err.contains("24x32") && err.contains("--depth-resample"),
+        "{err}"
+    );
+    run(&["rgbd", c_s, small_s, "--depth-resample", "--out", o]);
+    let (ok, _, err) = run_any(&["rgbd", c_s, "--sbs", d_s, "--out", o]);
+    assert!(!ok, "{err}");
+    let odd = out_path("rgbd_odd.png");
+    image::RgbImage::new(5, 4).save(&odd).unwrap();
+    let (ok, _, err) = run_any(&["rgbd", odd.to_str().unwrap(), "--sbs", "--out", o]);
+    assert!(!ok && err.contains("even width"), "{err}");
+    let (ok, _, err) = run_any(&["rgbd", c_s, d_s]);
+    assert!(!ok && err.contains("nothing to write"), "{err}");
+    let (ok, _, err) = run_any(&["rgbd", c_s, d_s, "--focus", "2", "--out", o]);
+    assert!(!ok && err.contains("focus"), "{err}");
+    let (ok, _, err) = run_any(&["rgbd", "/nonexistent.png", d_s, "--out", o]);
+    assert!(!ok && err.contains("/nonexistent.png"), "{err}");
+}

@@ -5,6 +5,7 @@ mod bench;
 mod mask_cmd;
 mod mesh_cmd;
 mod points_cmd;
+mod rgbd_cmd;
 mod run;
 mod views_cmd;
 mod volume_cmd;
@@ -30,6 +31,8 @@ enum Command {
     Mesh(mesh_cmd::MeshArgs),
     /// Render a point cloud as splats (PLY / OBJ vertices; a generated scene when no file is given).
     Points(points_cmd::PointsArgs),
+    /// An RGB-D image (colour + depth, or side by side) to any display, a quilt or per-view PNGs.
+    Rgbd(rgbd_cmd::RgbdArgs),
     /// Benchmark every renderer side by side, with speed/accuracy trade-offs (`--report DIR`).
     Bench(bench::BenchArgs),
     /// Render a volume (a built-in CT-like head when no file is given).
@@ -52,6 +55,7 @@ fn main() -> std::process::ExitCode {
         Command::Mask(a) => mask_cmd::run(a),
         Command::Mesh(a) => mesh_cmd::run(a),
         Command::Points(a) => points_cmd::run(a),
+        Command::Rgbd(a) => rgbd_cmd::run(a),
         Command::Views(a) => views_cmd::run(a),
         Command::Volume(a) => volume_cmd::run(a),
     };

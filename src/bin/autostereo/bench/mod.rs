@@ -40,6 +40,10 @@ pub struct BenchArgs {
     /// trade-off studies (issue 13's targets in minutes rather than hours).
     #[arg(long, conflicts_with = "quick")]
     duplication: bool,
+    /// Only time against N: every method (duplication and N-pass included) at N = 1, 2, 4, …,
+    /// 64 at 256², the quick run's points and mesh and the full-size head, no studies.
+    #[arg(long, conflicts_with_all = ["quick", "duplication"])]
+    sweep: bool,
     /// Timed frames per measurement (after 2 warm-up frames).
     #[arg(long, default_value_t = 20, value_parser = crate::args::frames_parser())]
     frames: u32,
@@ -50,6 +54,8 @@ pub struct Plan {
     pub quick: bool,
     /// `--duplication`: N = 8 only, no studies.
     pub duplication: bool,
+    /// `--sweep`: N = 1…64 at 256² only, no studies.
+    pub sweep: bool,
     pub size: [u32; 2],
     pub views: Vec<u32>,
     /// N-pass is measured up to this N (it grows linearly).
@@ -65,16 +71,29 @@ impl Plan {
             Self {
                 quick: false,
                 duplication: true,
+                sweep: false,
                 size: [512, 512],
                 views: vec![8],
                 npass_max_views: 8,
                 extra_sizes: vec![[1920, 1080]],
                 frames: args.frames,
             }
+        } else if args.sweep {
+            Self {
+                quick: false,
+                duplication: false,
+                sweep: true,
+                size: [256, 256],
+                views: vec![1, 2, 4, 8, 16, 32, 64],
+                npass_max_views: 64,
+                extra_sizes: vec![],
+                frames: args.frames,
+            }
         } else if args.quick {
             Self {
                 quick: true,
                 duplication: false,
+                sweep: false,
                 size: [256, 256],
                 views: vec![2, 8, 64],
                 npass_max_views: 8,
@@ -85,6 +104,7 @@ impl Plan {
             Self {
                 quick: false,
                 duplication: false,
+                sweep: false,
                 size: [512, 512],
                 views: vec![1, 2, 4, 8, 16, 32, 64],
                 npass_max_views: 64,
@@ -94,13 +114,14 @@ impl Plan {
         }
     }
 
-    /// `quick`, `duplication` or `full`.
+    /// `quick`, `duplication`, `sweep` or `full`.
     pub fn name(&self) -> &'static str {
-        match (self.quick, self.duplication) {
-            (true, _) => "quick",
-            (_, true) => "duplication",
-            _ => "full",
-        }
+        run_name(self.quick, self.duplication, self.sweep)
+    }
+
+    /// Whether the speed/accuracy and economy studies run.
+    pub fn studies(&self) -> bool {
+        !self.duplication && !self.sweep
     }
 
     /// Frames per trade-off and economy measurement (each setting is a separate render).
@@ -119,7 +140,7 @@ impl Plan {
             .iter()
             .map(|&n| (sweep_display(n), self.size))
             .collect();
-        if !self.duplication {
+        if self.studies() {
             c.push(("lenticular:8".into(), self.size));
         }
         for size in &self.extra_sizes {
@@ -168,6 +189,9 @@ pub struct Results {
     /// A `--duplication` run.
     #[serde(default)]
     pub duplication: bool,
+    /// A `--sweep` run.
+    #[serde(default)]
+    pub sweep: bool,
     pub frames: u32,
     /// Frames per trade-off and economy measurement.
     pub study_frames: u32,
@@ -186,13 +210,18 @@ pub struct Results {
 }
 
 impl Results {
-    /// `quick`, `duplication` or `full`.
+    /// `quick`, `duplication`, `sweep` or `full`.
     pub fn run_name(&self) -> &'static str {
-        match (self.quick, self.duplication) {
-            (true, _) => "quick",
-            (_, true) => "duplication",
-            _ => "full",
-        }
+        run_name(self.quick, self.duplication, self.sweep)
+    }
+}
+
+fn run_name(quick: bool, duplication: bool, sweep: bool) -> &'static str {
+    match (quick, duplication, sweep) {
+        (true, _, _) => "quick",
+        (_, true, _) => "duplication",
+        (_, _, true) => "sweep",
+        _ => "full",
     }
 }
 
@@ -302,7 +331,7 @@ pub fn run(args: BenchArgs) -> Result<()> {
             }
         }
     }
-    let (tradeoffs, economy) = if plan.duplication {
+    let (tradeoffs, economy) = if !plan.studies() {
         (Vec::new(), Vec::new())
     } else {
         eprintln!("speed/accuracy trade-offs…");
@@ -317,6 +346,7 @@ pub fn run(args: BenchArgs) -> Result<()> {
         command: std::env::args().collect::<Vec<_>>().join(" "),
         quick: plan.quick,
         duplication: plan.duplication,
+        sweep: plan.sweep,
         frames: plan.frames,
         study_frames: plan.study_frames(),
         size: plan.size,

@@ -63,7 +63,7 @@ pub fn scenes(ctx: &autostereo::gpu::GpuContext, plan: &super::Plan) -> Result<V
         "ct-skin",
     )];
     let brain = fetched("brainsmall.den");
-    if !quick && !plan.duplication && brain.is_file() {
+    if plan.studies() && !quick && brain.is_file() {
         let v = load::load_den(&brain)?;
         volumes.push((
             "brainsmall.den".into(),
@@ -83,7 +83,8 @@ pub fn scenes(ctx: &autostereo::gpu::GpuContext, plan: &super::Plan) -> Result<V
             splats: None,
         });
     }
-    let dragon = if quick {
+    // The sweep's duplication and N-pass grow with N to 64: the smaller dragon keeps it short.
+    let dragon = if quick || plan.sweep {
         "dragon_vrip_res3.ply"
     } else {
         "dragon_vrip.ply"
@@ -116,7 +117,7 @@ pub fn scenes(ctx: &autostereo::gpu::GpuContext, plan: &super::Plan) -> Result<V
         data: AnyScene::Points(scene),
         splats: Some(splats),
     });
-    let meshes: &[&str] = if quick || plan.duplication {
+    let meshes: &[&str] = if quick || !plan.studies() {
         &["dragon_vrip_res2.obj"]
     } else {
         &["dragon_vrip_res2.obj", "dragon_vrip.obj"]

@@ -137,8 +137,15 @@ pub(super) fn duplication(md: &mut String, r: &Results) -> Result<()> {
             sizes.push(x.size);
         }
     }
+    // The targets are stated at 512²; a run without it (the quick run) is judged at its base.
+    let target_size = if sizes.contains(&[512, 512]) {
+        [512, 512]
+    } else {
+        base_size(r)
+    };
     for (primitive, name, _) in &r.scenes {
-        for (i, &size) in sizes.iter().enumerate() {
+        for &size in &sizes {
+            let at_target = size == target_size;
             let rows = rows_of(r, name, PAPER_DISPLAY, size);
             let dup = rows
                 .iter()
@@ -148,14 +155,14 @@ pub(super) fn duplication(md: &mut String, r: &Results) -> Result<()> {
             let (Some(sp), Some(dup)) = (best_single_pass(&rows), dup) else {
                 continue;
             };
-            let want = match (i, primitive.as_str()) {
-                (0, "volume") => 1.5,
-                (0, _) => 2.0,
+            let want = match (at_target, primitive.as_str()) {
+                (true, "volume") => 1.5,
+                (true, _) => 2.0,
                 _ => 1.0,
             };
             let ratio = dup.ms / sp.ms;
             let status = if ratio >= want { "met" } else { "**missed**" };
-            let target = if i == 0 {
+            let target = if at_target {
                 format!("≥ {want}×")
             } else {
                 "> 1×".to_string()

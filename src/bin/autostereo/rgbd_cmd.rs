@@ -1,0 +1,157 @@
+//! `autostereo rgbd`: an RGB-D image (colour + depth map, or one side-by-side file) to any
+//! display's spatial image, a Looking Glass quilt or per-view PNGs, by warping.
+
+use std::path::PathBuf;
+
+use anyhow::{bail, Context, Result};
+use autostereo::image_io::RgbImage;
+use autostereo::render::quilt::QuiltLayout;
+use autostereo::render::Renderer;
+use autostereo::rgbd::{self, DepthMapOptions, RgbdImage, RgbdScene, RgbdWarp, WarpOptions};
+use autostereo::target::SpatialTarget;
+
+use crate::args::{check_output, parse_size, DisplayArgs};
+
+#[derive(clap::Args)]
+pub struct RgbdArgs {
+    /// Colour PNG (with --sbs: the side-by-side RGB-D PNG, colour left, depth right).
+    color: PathBuf,
+    /// Depth PNG, 8 or 16 bit (its luma; white = near unless --depth-invert).
+    #[arg(required_unless_present = "sbs")]
+    depth: Option<PathBuf>,
+    /// COLOR is one side-by-side image: colour in the left half, depth in the right.
+    #[arg(long, conflicts_with = "depth")]
+    sbs: bool,
+    /// The depth map is black = near (distance rather than nearness).
+    #[arg(long)]
+    depth_invert: bool,
+    /// Resample a depth map of another size than the colour image (bilinear) instead of
+    /// refusing it.
+    #[arg(long)]
+    depth_resample: bool,
+    /// Depth value (0…1, after --depth-invert) that lands on the display plane.
+    #[arg(long, default_value_t = 0.5)]
+    focus: f32,
+    /// Parallax scale: 1 shifts the nearest depth (focus 0) by 3 % of the width in the
+    /// outermost views.
+    #[arg(long, default_value_t = 1.0)]
+    depthiness: f32,
+    /// Neighbours warped further apart than this many pixels straddle a disocclusion, filled
+    /// from the background side.
+    #[arg(long, default_value_t = rgbd::passes::DEFAULT_HOLE_GAP)]
+    hole_gap: f32,
+    #[command(flatten)]
+    display: DisplayArgs,
+    /// Output size WxH (default: the colour image's).
+    #[arg(long, value_parser = parse_size)]
+    size: Option<[u32; 2]>,
+    /// Output PNG of the spatial image.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Also write every view as a Looking Glass quilt (PNG; the name gets the
+    /// `_qs{cols}x{rows}a{aspect}` suffix).
+    #[arg(long)]
+    quilt_out: Option<PathBuf>,
+    /// Also write every view as DIR/view_NN.png (DIR must exist).
+    #[arg(long)]
+    views_out: Option<PathBuf>,
+    /// CPU memory budget for loading (bytes, or with K/M/G/T; default 8G).
+    #[arg(long, value_parser = autostereo::budget::parse_bytes)]
+    max_memory: Option<u64>,
+}
+
+pub fn run(args: RgbdArgs) -> Result<()> {
+    for path in [&args.out, &args.quilt_out].into_iter().flatten() {
+        check_output(path)?;
+    }
+    if let Some(dir) = &args.views_out {
+        if !dir.is_dir() {
+            bail!("--views-out {}: no such directory", dir.display());
+        }
+    }
+    if args.out.is_none() && args.quilt_out.is_none() && args.views_out.is_none() {
+        bail!("nothing to write: give --out, --quilt-out or --views-out");
+    }
+    if let Some(bytes) = args.max_memory {
+        autostereo::budget::set_max_memory(bytes);
+    }
+    let depth_options = DepthMapOptions {
+        invert: args.depth_invert,
+        resample: args.depth_resample,
+    };
+    let image = match &args.depth {
+        Some(depth) => RgbdImage::load(&args.color, depth, depth_options)?,
+        None => RgbdImage::load_side_by_side(&args.color, depth_options)?,
+    };
+    let size = args.size.unwrap_or(image.size());
+    let frame = rgbd::frame(args.display.display()?, size)?;
+    let options = WarpOptions {
+        focus: args.focus,
+        depthiness: args.depthiness,
+        hole_gap: args.hole_gap,
+        view: None,
+    };
+    let ctx = crate::args::gpu()?;
+    let (device, queue) = (&ctx.device, &ctx.queue);
+    let scene = RgbdScene::new(device, queue, &image)?;
+    let mut warp = RgbdWarp::new(device, options)?;
+    let target = SpatialTarget::new(device, size)?;
+    if let Some(out) = &args.out {
+        warp.render(device, queue, &scene, &frame, &target)?;
+        target.read(device, queue)?.save_png(out)?;
+        eprintln!(
+            "{}: {}x{} for {} ({} views)",
+            out.display(),
+            size[0],
+            size[1],
+            args.display.display,
+            frame.camera.views
+        );
+    }
+    if args.quilt_out.is_none() && args.views_out.is_none() {
+        return Ok(());
+    }
+    let views = frame.camera.views;
+    let layout = QuiltLayout::for_views(views, size);
+    let quilt_size = layout.size();
+    let mut quilt = args
+        .quilt_out
+        .as_ref()
+        .map(|_| {
+            RgbImage::check_size(quilt_size[0], quilt_size[1])?;
+            Ok::<_, autostereo::error::Error>(RgbImage::new(quilt_size[0], quilt_size[1]))
+        })
+        .transpose()?;
+    for v in 0..views {
+        warp.set_options(WarpOptions {
+            view: Some(v),
+            ..options
+        });
+        warp.render(device, queue, &scene, &frame, &target)?;
+        let view = target.read(device, queue)?;
+        if let Some(dir) = &args.views_out {
+            let path = dir.join(format!("view_{v:02}.png"));
+            view.save_png(&path)
+                .with_context(|| format!("writing view {v}"))?;
+        }
+        if let Some(quilt) = &mut quilt {
+            let [x0, y0] = layout.tile_origin(v);
+            for y in 0..size[1] {
+                for x in 0..size[0] {
+                    for c in 0..3 {
+                        quilt.set(x0 + x, y0 + y, c, view.get(x, y, c));
+                    }
+                }
+            }
+        }
+    }
+    if let (Some(path), Some(quilt)) = (&args.quilt_out, &quilt) {
+        let path = layout.file_name(path);
+        quilt.save_png(&path)?;
+        eprintln!("quilt {}", path.display());
+    }
+    if let Some(dir) = &args.views_out {
+        eprintln!("{views} views in {}", dir.display());
+    }
+    Ok(())
+}

@@ -1,0 +1,111 @@
+// RGB-D image → spatial image by backward warping straight into each subpixel's view: no
+// per-view images (src/rgbd/passes.rs, docs/WARPING.md). The views differ by a horizontal
+// shift only, so each subpixel searches its reference row for the pair of neighbouring samples
+// whose warped positions straddle it; the nearest such pair wins (occlusion), and a pair warped
+// further apart than `hole_gap` straddles a disocclusion, filled from its far (background)
+// sample. Where no pair reaches (the image's edges), the sample landing nearest is used.
+#import shared/frame.wgsl
+
+// Keep in sync with `WarpUniform` in src/rgbd/passes.rs.
+struct Warp {
+    reference: vec2<u32>, // reference image size
+    parallax: f32,        // shift (reference pixels) per unit nearness − focus at t = +1
+    focus: f32,           // nearness on the display plane (no shift)
+    fixed_view: u32,      // NO_VIEW: each subpixel's view from the mask; else this view
+    hole_gap: f32,        // neighbours warped further apart than this straddle a hole
+    _pad0: u32,
+    _pad1: u32,
+}
+
+// Bindings read by shared/frame.wgsl.
+@group(0) @binding(0) var<uniform> frame: Frame;
+
+@group(1) @binding(0) var color: texture_2d<f32>;
+@group(1) @binding(1) var nearness: texture_2d<f32>;
+@group(1) @binding(2) var<uniform> warp: Warp;
+
+const NO_VIEW: u32 = 0xffffffffu;
+
+// Position t ∈ [−1, 1] of view v among the display's N (0 for a single view).
+fn view_position(v: u32) -> f32 {
+    let n = frame.mask.views;
+    if (n <= 1u) {
+        return 0.0;
+    }
+    return 2.0 * f32(v) / f32(n - 1u) - 1.0;
+}
+
+fn near_at(x: i32, row: i32) -> f32 {
+    return textureLoad(nearness, vec2<i32>(x, row), 0).r;
+}
+
+fn color_at(x: i32, row: i32, c: u32) -> f32 {
+    return textureLoad(color, vec2<i32>(x, row), 0)[c];
+}
+
+// Channel c of reference row `row` as seen from view position t at reference column u.
+fn warped(row: i32, u: f32, t: f32, c: u32) -> f32 {
+    let k = warp.parallax * t;
+    let reach = abs(k) * max(warp.focus, 1.0 - warp.focus);
+    let last = i32(warp.reference.x) - 1;
+    let lo = clamp(i32(floor(u - reach)) - 1, 0, last);
+    let hi = clamp(i32(ceil(u + reach)) + 1, 0, last);
+    var d0 = near_at(lo, row);
+    var l0 = f32(lo) + k * (d0 - warp.focus);
+    var best = -1.0; // nearness of the winning pair
+    var value = 0.0;
+    var closest = abs(l0 - u); // the fallback: the sample landing nearest u
+    var fallback = lo;
+    for (var x1 = lo + 1; x1 <= hi; x1++) {
+        let d1 = near_at(x1, row);
+        let l1 = f32(x1) + k * (d1 - warp.focus);
+        let gap = l1 - l0;
+        if (gap > 0.0 && l0 <= u && u <= l1) {
+            let f = (u - l0) / gap;
+            if (gap > warp.hole_gap) {
+                // A disocclusion: the background side fills it.
+                let far = select(x1, x1 - 1, d0 < d1);
+                let d = min(d0, d1);
+                if (d > best) {
+                    best = d;
+                    value = color_at(far, row, c);
+                }
+            } else {
+                let d = mix(d0, d1, f);
+                if (d > best) {
+                    best = d;
+                    value = mix(color_at(x1 - 1, row, c), color_at(x1, row, c), f);
+                }
+            }
+        }
+        if (abs(l1 - u) < closest) {
+            closest = abs(l1 - u);
+            fallback = x1;
+        }
+        d0 = d1;
+        l0 = l1;
+    }
+    if (best < 0.0) {
+        return color_at(fallback, row, c);
+    }
+    return value;
+}
+
+@fragment
+fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
+    let px = vec2<u32>(position.xy);
+    let panel = frame.camera.viewport;
+    let reference = vec2<f32>(warp.reference);
+    // The pixel centre in reference pixels (the reference may be of another size).
+    let u = (f32(px.x) + 0.5) * reference.x / panel.x - 0.5;
+    let row = min(i32((f32(px.y) + 0.5) * reference.y / panel.y), i32(warp.reference.y) - 1);
+    var out = vec3<f32>(0.0);
+    for (var c = 0u; c < 3u; c++) {
+        var v = warp.fixed_view;
+        if (v == NO_VIEW) {
+            v = mask_view(frame.mask, px, c);
+        }
+        out[c] = warped(row, u, view_position(v), c);
+    }
+    return vec4<f32>(out, 1.0);
+}
