@@ -111,6 +111,18 @@ impl Frame {
         Ok(frame)
     }
 
+    /// A frame for putting images made elsewhere on `display` (quilts, RGB-D pictures): only
+    /// the display's mask, its N and the size matter, so the camera is a placeholder framing
+    /// of the unit cube.
+    pub fn for_display(display: Display, size: [u32; 2]) -> Result<Self> {
+        let bounds =
+            crate::camera::Bounds::of_points([Vec3::splat(-1.0), Vec3::ONE]).expect("two points");
+        let aspect = size[0].max(1) as f32 / size[1].max(1) as f32;
+        let camera =
+            MultiViewCamera::framing(bounds, display.views(), None, 30f32.to_radians(), aspect)?;
+        Self::new(camera, display, size)
+    }
+
     /// Check the camera, the size and that camera and display agree on N.
     pub fn validate(&self) -> Result<()> {
         self.camera.validate()?;

@@ -6,10 +6,11 @@
 mod common;
 
 use autostereo::display::Display;
+use autostereo::frame::Frame;
 use autostereo::image_io::RgbImage;
 use autostereo::render::Renderer;
 use autostereo::rgbd::passes::predicted_shift;
-use autostereo::rgbd::{self, RgbdImage, RgbdScene, RgbdWarp, WarpOptions};
+use autostereo::rgbd::{RgbdImage, RgbdScene, RgbdWarp, WarpOptions};
 use autostereo::target::SpatialTarget;
 
 const DISPLAYS: &[&str] = &[
@@ -37,7 +38,7 @@ fn pattern(w: u32, h: u32) -> RgbImage {
 fn warp(image: &RgbdImage, spec: &str, options: WarpOptions) -> RgbImage {
     let ctx = common::gpu();
     let (device, queue) = (&ctx.device, &ctx.queue);
-    let frame = rgbd::frame(Display::parse(spec).unwrap(), image.size()).unwrap();
+    let frame = Frame::for_display(Display::parse(spec).unwrap(), image.size()).unwrap();
     let scene = RgbdScene::new(device, queue, image).unwrap();
     let mut warp = RgbdWarp::new(device, options).unwrap();
     let target = SpatialTarget::new(device, image.size()).unwrap();
@@ -267,7 +268,7 @@ fn the_callers_textures_are_checked() {
         ..WarpOptions::default()
     };
     let image = RgbdImage::flat(RgbImage::new(16, 8), 0.5).unwrap();
-    let frame = rgbd::frame(Display::parse("hubner8").unwrap(), [16, 8]).unwrap();
+    let frame = Frame::for_display(Display::parse("hubner8").unwrap(), [16, 8]).unwrap();
     let scene = RgbdScene::new(device, &ctx.queue, &image).unwrap();
     let mut warp = RgbdWarp::new(device, options).unwrap();
     let err = warp

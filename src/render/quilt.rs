@@ -68,6 +68,57 @@ impl QuiltLayout {
         })
     }
 
+    /// The layout of a quilt image of `size` pixels named `name`: the grid from `grid`, else
+    /// from the name's `_qs{cols}x{rows}a{aspect}`; tiles are the size over the grid (which
+    /// must divide it); the quilt holds `views` views (≤ cols × rows: Looking Glass quilts
+    /// often leave the last tiles empty). A name's aspect that disagrees with the tiles' by
+    /// more than 1 % is refused: the grid would then be a guess.
+    pub fn for_image(
+        name: &str,
+        size: [u32; 2],
+        grid: Option<[u32; 2]>,
+        views: u32,
+    ) -> Result<Self> {
+        let named = parse_quilt_name(name);
+        let [cols, rows] = match (grid, named) {
+            (Some(grid), _) => grid,
+            (None, Some((cols, rows, _))) => [cols, rows],
+            (None, None) => {
+                return Err(Error::invalid(
+                    "quilt",
+                    format!(
+                        "{name}: no grid; name it …_qs{{cols}}x{{rows}}a{{aspect}}.png (Looking \
+                         Glass's convention) or give the grid (--quilt COLSxROWS)"
+                    ),
+                ))
+            }
+        };
+        if cols == 0 || rows == 0 || size[0] % cols != 0 || size[1] % rows != 0 {
+            return Err(Error::invalid(
+                "quilt",
+                format!(
+                    "{name} is {}x{}, which a {cols}x{rows} grid does not divide into whole tiles",
+                    size[0], size[1]
+                ),
+            ));
+        }
+        let tile = [size[0] / cols, size[1] / rows];
+        if let (None, Some((_, _, aspect))) = (grid, named) {
+            let tiles = tile[0] as f32 / tile[1] as f32;
+            if (tiles / aspect - 1.0).abs() > 0.01 {
+                return Err(Error::invalid(
+                    "quilt",
+                    format!(
+                        "{name}: the name says views of aspect {aspect}, its {cols}x{rows} tiles \
+                         of {}x{} have {tiles:.4}",
+                        tile[0], tile[1]
+                    ),
+                ));
+            }
+        }
+        Self::with_grid(cols, rows, tile, views)
+    }
+
     /// Size of the whole atlas in texels.
     pub fn size(&self) -> [u32; 2] {
         [

@@ -16,23 +16,6 @@ use crate::image_io::RgbImage;
 pub use passes::{RgbdWarp, WarpOptions};
 pub use scene::RgbdScene;
 
-/// The frame an RGB-D warp renders for `display` at `size`: the warp needs only the display's
-/// mask and N (its parallax comes from [`WarpOptions`]), so the camera is a placeholder
-/// framing of the unit cube.
-pub fn frame(display: crate::display::Display, size: [u32; 2]) -> Result<crate::frame::Frame> {
-    let bounds = crate::camera::Bounds::of_points([glam::Vec3::splat(-1.0), glam::Vec3::ONE])
-        .expect("two points");
-    let aspect = size[0].max(1) as f32 / size[1].max(1) as f32;
-    let camera = crate::camera::MultiViewCamera::framing(
-        bounds,
-        display.views(),
-        None,
-        30f32.to_radians(),
-        aspect,
-    )?;
-    crate::frame::Frame::new(camera, display, size)
-}
-
 /// A colour image and, per pixel, its nearness: 0 = far … 1 = near (normalised depth map
 /// values, white = near unless the map is inverted on loading).
 #[derive(Clone, Debug, PartialEq)]

@@ -2,6 +2,7 @@
 
 mod args;
 mod bench;
+mod interleave_cmd;
 mod mask_cmd;
 mod mesh_cmd;
 mod points_cmd;
@@ -31,6 +32,8 @@ enum Command {
     Mesh(mesh_cmd::MeshArgs),
     /// Render a point cloud as splats (PLY / OBJ vertices; a generated scene when no file is given).
     Points(points_cmd::PointsArgs),
+    /// A Looking Glass quilt (views rendered anywhere) to any display's spatial image.
+    Interleave(interleave_cmd::InterleaveArgs),
     /// An RGB-D image (colour + depth, or side by side) to any display, a quilt or per-view PNGs.
     Rgbd(rgbd_cmd::RgbdArgs),
     /// Benchmark every renderer side by side, with speed/accuracy trade-offs (`--report DIR`).
@@ -54,6 +57,7 @@ fn main() -> std::process::ExitCode {
         Command::Bench(a) => bench::run(a),
         Command::Mask(a) => mask_cmd::run(a),
         Command::Mesh(a) => mesh_cmd::run(a),
+        Command::Interleave(a) => interleave_cmd::run(a),
         Command::Points(a) => points_cmd::run(a),
         Command::Rgbd(a) => rgbd_cmd::run(a),
         Command::Views(a) => views_cmd::run(a),

@@ -4,6 +4,7 @@
 use std::path::PathBuf;
 
 use anyhow::{bail, Context, Result};
+use autostereo::frame::Frame;
 use autostereo::image_io::RgbImage;
 use autostereo::render::quilt::QuiltLayout;
 use autostereo::render::Renderer;
@@ -84,7 +85,7 @@ pub fn run(args: RgbdArgs) -> Result<()> {
         None => RgbdImage::load_side_by_side(&args.color, depth_options)?,
     };
     let size = args.size.unwrap_or(image.size());
-    let frame = rgbd::frame(args.display.display()?, size)?;
+    let frame = Frame::for_display(args.display.display()?, size)?;
     let options = WarpOptions {
         focus: args.focus,
         depthiness: args.depthiness,
