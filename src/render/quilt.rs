@@ -93,7 +93,8 @@ impl QuiltLayout {
                 ))
             }
         };
-        if cols == 0 || rows == 0 || size[0] % cols != 0 || size[1] % rows != 0 {
+        if cols == 0 || rows == 0 || !size[0].is_multiple_of(cols) || !size[1].is_multiple_of(rows)
+        {
             return Err(Error::invalid(
                 "quilt",
                 format!(
