@@ -3,7 +3,7 @@
 //! compositing from either into the spatial image (`wgsl/render/composite_atlas.wgsl`).
 
 use super::pass_params::constants_buffer;
-use super::pipeline::{bind_group_layout, draw_fullscreen, fullscreen_pipeline};
+use super::pipeline::{bind_group_layout, draw_fullscreen, fullscreen_pipeline, uniform_entry};
 use super::quilt::QuiltLayout;
 use super::texture::{texture_2d, texture_2d_layout_entry, Texture2d};
 use super::view_layers::DEPTH_FORMAT;
@@ -153,16 +153,7 @@ impl AtlasCompositor {
             "composite atlas",
             &[
                 texture_2d_layout_entry(0, wgpu::ShaderStages::FRAGMENT),
-                wgpu::BindGroupLayoutEntry {
-                    binding: 1,
-                    visibility: wgpu::ShaderStages::FRAGMENT,
-                    ty: wgpu::BindingType::Buffer {
-                        ty: wgpu::BufferBindingType::Uniform,
-                        has_dynamic_offset: false,
-                        min_binding_size: None,
-                    },
-                    count: None,
-                },
+                uniform_entry(1, wgpu::ShaderStages::FRAGMENT),
             ],
         );
         let module = crate::shader::module(device, "render/composite_atlas.wgsl")?;

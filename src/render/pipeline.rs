@@ -190,6 +190,23 @@ pub(crate) fn draw_fullscreen(
     pass.draw(0..3, 0..1);
 }
 
+/// A uniform-buffer entry (no dynamic offset) of a bind group layout.
+pub(crate) fn uniform_entry(
+    binding: u32,
+    stages: wgpu::ShaderStages,
+) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: stages,
+        ty: wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Uniform,
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        },
+        count: None,
+    }
+}
+
 /// A storage-buffer entry of a bind group layout.
 pub(crate) fn storage_entry(
     binding: u32,

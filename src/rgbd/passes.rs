@@ -9,7 +9,9 @@ use super::RgbdScene;
 use crate::error::{Error, Result};
 use crate::frame::{Frame, FrameBinding};
 use crate::render::pass_params::constants_buffer;
-use crate::render::pipeline::{bind_group_layout, draw_fullscreen, fullscreen_pipeline};
+use crate::render::pipeline::{
+    bind_group_layout, draw_fullscreen, fullscreen_pipeline, uniform_entry,
+};
 use crate::render::texture::texture_2d_layout_entry;
 use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
@@ -151,16 +153,7 @@ impl RgbdWarp {
             &[
                 texture_2d_layout_entry(0, wgpu::ShaderStages::FRAGMENT),
                 texture_2d_layout_entry(1, wgpu::ShaderStages::FRAGMENT),
-                wgpu::BindGroupLayoutEntry {
-                    binding: 2,
-                    visibility: wgpu::ShaderStages::FRAGMENT,
-                    ty: wgpu::BindingType::Buffer {
-                        ty: wgpu::BufferBindingType::Uniform,
-                        has_dynamic_offset: false,
-                        min_binding_size: None,
-                    },
-                    count: None,
-                },
+                uniform_entry(2, wgpu::ShaderStages::FRAGMENT),
             ],
         );
         let module = crate::shader::module(device, "rgbd/warp.wgsl")?;

@@ -11,7 +11,7 @@ use crate::frame::Frame;
 use crate::render::atlas::{Atlas, AtlasCompositor};
 use crate::render::npass::NPassHarness;
 use crate::render::pass_params::constants_buffer;
-use crate::render::pipeline::{bind_group_layout, compilation};
+use crate::render::pipeline::{bind_group_layout, compilation, uniform_entry};
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::quilt::QuiltLayout;
 use crate::render::specialize::Specialization;
@@ -85,16 +85,7 @@ impl Output {
             },
             count: None,
         };
-        let quilt = wgpu::BindGroupLayoutEntry {
-            binding: 1,
-            visibility: wgpu::ShaderStages::COMPUTE,
-            ty: wgpu::BindingType::Buffer {
-                ty: wgpu::BufferBindingType::Uniform,
-                has_dynamic_offset: false,
-                min_binding_size: None,
-            },
-            count: None,
-        };
+        let quilt = uniform_entry(1, wgpu::ShaderStages::COMPUTE);
         let d2 = wgpu::TextureViewDimension::D2;
         match self {
             Self::Image => bind_group_layout(device, "volume output", &[storage(d2)]),

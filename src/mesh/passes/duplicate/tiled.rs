@@ -10,7 +10,7 @@ use crate::mesh::MeshBuffers;
 use crate::render::atlas::{Atlas, AtlasCompositor};
 use crate::render::pass_params::constants_buffer;
 use crate::render::pipeline::{
-    begin_pass_to, bind_group_layout, cleared, pipeline_layout, PassTargets,
+    begin_pass_to, bind_group_layout, cleared, pipeline_layout, uniform_entry, PassTargets,
 };
 use crate::render::quilt::QuiltLayout;
 use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
@@ -76,16 +76,7 @@ impl MeshTiled {
     pub fn new(device: &wgpu::Device, clip: TileClip) -> Result<Self> {
         let clip = clip.resolve(device)?;
         let frame_layout = frame_bind_group_layout(device);
-        let quilt_entry = wgpu::BindGroupLayoutEntry {
-            binding: 1,
-            visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
-            ty: wgpu::BindingType::Buffer {
-                ty: wgpu::BufferBindingType::Uniform,
-                has_dynamic_offset: false,
-                min_binding_size: None,
-            },
-            count: None,
-        };
+        let quilt_entry = uniform_entry(1, wgpu::ShaderStages::VERTEX_FRAGMENT);
         let views_layout = bind_group_layout(device, "tiled views", &[views_entry(0), quilt_entry]);
         let stage = match clip {
             TileClip::ClipDistances => "mesh/tiled.wgsl",
