@@ -51,6 +51,30 @@ fn run(target: &str, data: &[u8]) {
                 }
             }
         }
+        "rgbd" => {
+            use autostereo::rgbd::{DepthMapOptions, RgbdImage};
+            let options = DepthMapOptions {
+                invert: data.len() % 2 == 0,
+                resample: true,
+            };
+            let name = Path::new("fuzz.png");
+            drop(RgbdImage::side_by_side_from_bytes(data, name, options));
+            drop(RgbdImage::from_bytes(data, data, [name, name], options));
+        }
+        "quilt_image" => {
+            if data.len() >= 16 {
+                let word = |i: usize| u32::from_le_bytes(data[i..i + 4].try_into().unwrap());
+                let size = [word(0), word(4)];
+                let grid = (word(8) & 1 == 1).then(|| [word(8) >> 16, word(12) >> 16]);
+                let views = word(12) & 0xffff;
+                let name = String::from_utf8_lossy(&data[16..]);
+                let layout =
+                    autostereo::render::quilt::QuiltLayout::for_image(&name, size, grid, views);
+                if let Ok(q) = layout {
+                    let _ = (q.size(), q.tile_origin(views.saturating_sub(1)), q.suffix());
+                }
+            }
+        }
         other => panic!("no fuzz target '{other}'"),
     }
 }
@@ -80,6 +104,8 @@ fn seeds_and_found_crashes_replay_without_panics() {
         "calibration",
         "display_spec",
         "quilt_name",
+        "rgbd",
+        "quilt_image",
     ];
     let mut replayed = 0;
     for target in targets {

@@ -79,13 +79,41 @@ impl RgbdImage {
 
     /// A colour PNG and a depth PNG (8 or 16 bit, grey or colour: its luma is the depth).
     pub fn load(color: &Path, depth: &Path, options: DepthMapOptions) -> Result<Self> {
-        let rgb = decode(color)?.to_rgb8();
+        Self::pair_of(decode(color)?, color, decode(depth)?, depth, options)
+    }
+
+    /// [`RgbdImage::load`] from the two files' bytes (`names`: colour, depth, for errors).
+    pub fn from_bytes(
+        color: &[u8],
+        depth: &[u8],
+        names: [&Path; 2],
+        options: DepthMapOptions,
+    ) -> Result<Self> {
+        let [color_name, depth_name] = names;
+        Self::pair_of(
+            decode_bytes(color, color_name)?,
+            color_name,
+            decode_bytes(depth, depth_name)?,
+            depth_name,
+            options,
+        )
+    }
+
+    fn pair_of(
+        color_image: image::DynamicImage,
+        color: &Path,
+        depth_image: image::DynamicImage,
+        depth: &Path,
+        options: DepthMapOptions,
+    ) -> Result<Self> {
+        let rgb = color_image.to_rgb8();
         let color_image = RgbImage {
             width: rgb.width(),
             height: rgb.height(),
             data: rgb.into_raw(),
         };
-        let (size, values) = load_depth_values(depth)?;
+        let size = [depth_image.width(), depth_image.height()];
+        let values = luma_of(&depth_image);
         let want = [color_image.width, color_image.height];
         let values = if size == want {
             values
@@ -110,7 +138,23 @@ impl RgbdImage {
 
     /// A side-by-side RGB-D image: colour in the left half, depth in the right half.
     pub fn load_side_by_side(path: &Path, options: DepthMapOptions) -> Result<Self> {
-        let image = decode(path)?;
+        Self::side_by_side_of(decode(path)?, path, options)
+    }
+
+    /// [`RgbdImage::load_side_by_side`] from the file's bytes (`name` for errors).
+    pub fn side_by_side_from_bytes(
+        bytes: &[u8],
+        name: &Path,
+        options: DepthMapOptions,
+    ) -> Result<Self> {
+        Self::side_by_side_of(decode_bytes(bytes, name)?, name, options)
+    }
+
+    fn side_by_side_of(
+        image: image::DynamicImage,
+        path: &Path,
+        options: DepthMapOptions,
+    ) -> Result<Self> {
         let size = [image.width(), image.height()];
         if size[0] < 2 || size[0] % 2 != 0 {
             return Err(Error::Image {
@@ -138,21 +182,42 @@ impl RgbdImage {
     }
 }
 
-/// A PNG decoded after its size (from the header) passed the image and memory checks.
+/// Largest image file read (a PNG of the largest image `RgbImage` allows, 16-bit RGBA,
+/// uncompressed, is 2 GiB: no real picture or depth map comes near).
+pub const MAX_IMAGE_FILE_BYTES: u64 = 1 << 31;
+
+/// A PNG file decoded: its bytes read with a bound, then [`decode_bytes`].
 fn decode(path: &Path) -> Result<image::DynamicImage> {
+    let bytes = crate::file::read_bounded(path, MAX_IMAGE_FILE_BYTES, "the image-file limit")?;
+    decode_bytes(&bytes, path)
+}
+
+/// An image decoded after its size (from the header) passed the image-size and memory
+/// checks; `path` names it in errors.
+fn decode_bytes(bytes: &[u8], path: &Path) -> Result<image::DynamicImage> {
     let fail = |reason: String| Error::Image {
         path: path.to_path_buf(),
         reason,
     };
-    crate::file::check_regular(path)?;
-    let (w, h) = image::image_dimensions(path).map_err(|e| fail(e.to_string()))?;
+    let reader = || {
+        image::ImageReader::new(std::io::Cursor::new(bytes))
+            .with_guessed_format()
+            .map_err(|e| fail(e.to_string()))
+    };
+    let (w, h) = reader()?
+        .into_dimensions()
+        .map_err(|e| fail(e.to_string()))?;
     RgbImage::check_size(w, h).map_err(|e| fail(e.to_string()))?;
     // Decoded (up to 8 bytes per pixel), its luma (2) and the f32 values (4).
-    crate::budget::check(
-        || format!("image {}", path.display()),
-        u64::from(w) * u64::from(h) * 14,
-    )?;
-    image::open(path).map_err(|e| fail(e.to_string()))
+    let bytes_needed = u64::from(w) * u64::from(h) * 14;
+    crate::budget::check(|| format!("image {}", path.display()), bytes_needed)?;
+    let mut reader = reader()?;
+    let mut limits = image::Limits::default();
+    limits.max_image_width = Some(w);
+    limits.max_image_height = Some(h);
+    limits.max_alloc = Some(bytes_needed);
+    reader.limits(limits);
+    reader.decode().map_err(|e| fail(e.to_string()))
 }
 
 /// Normalised luma (8-bit maps scale to 0…1 as 16-bit ones do).
@@ -162,12 +227,6 @@ fn luma_of(image: &image::DynamicImage) -> Vec<f32> {
         .into_iter()
         .map(|v| v as f32 / 65535.0)
         .collect()
-}
-
-/// The size and normalised luma of a depth PNG.
-fn load_depth_values(path: &Path) -> Result<([u32; 2], Vec<f32>)> {
-    let image = decode(path)?;
-    Ok(([image.width(), image.height()], luma_of(&image)))
 }
 
 fn nearness_of(values: Vec<f32>, invert: bool) -> Vec<f32> {
