@@ -461,6 +461,9 @@ fn rgbd_pairs_side_by_side_quilts_and_bad_maps() {
     image::RgbImage::new(5, 4).save(&odd).unwrap();
     let (ok, _, err) = run_any(&["rgbd", odd.to_str().unwrap(), "--sbs", "--out", o]);
     assert!(!ok && err.contains("even width"), "{err}");
+    let holes = out_path("rgbd_holes.png");
+    let (ok, _, err) = run_any(&["rgbd", c_s, d_s, "--hole-mask", holes.to_str().unwrap()]);
+    assert!(ok && err.contains("% of subpixels filled"), "{err}");
     let (ok, _, err) = run_any(&["rgbd", c_s, d_s]);
     assert!(!ok && err.contains("nothing to write"), "{err}");
     let (ok, _, err) = run_any(&["rgbd", c_s, d_s, "--focus", "2", "--out", o]);

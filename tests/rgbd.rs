@@ -181,6 +181,23 @@ fn disocclusions_fill_from_the_background() {
             );
         }
     }
+    // The hole mask marks exactly what the square uncovered: right of its new place up to
+    // its old right edge.
+    let mask = warp(
+        &image,
+        "hubner8",
+        WarpOptions {
+            hole_mask: true,
+            ..options
+        },
+    );
+    for y in 0..h {
+        for x in 0..w {
+            let uncovered = (8..24).contains(&y) && x as f32 > hi && x < x1;
+            let want = if uncovered { 255 } else { 0 };
+            assert_eq!(pixel(&mask, x, y), [want; 3], "hole mask at ({x},{y})");
+        }
+    }
 }
 
 #[test]

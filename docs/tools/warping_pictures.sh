@@ -12,9 +12,9 @@ img=docs/images/rgbd
 mkdir -p "$img" "$img/views" "$img/strong"
 target/release/examples/rgbd_scene "$img"
 $bin rgbd "$img/scene.png" "$img/scene_depth.png" --display hubner8 --out "$img/spatial_hubner8.png" \
-  --views-out "$img/views"
+  --views-out "$img/views" --hole-mask "$img/holes.png"
 $bin rgbd "$img/scene.png" "$img/scene_depth.png" --display hubner8 --depthiness 3 \
-  --views-out "$img/strong"
+  --views-out "$img/strong" --hole-mask "$img/holes_strong.png"
 # Keep the outermost views only.
 for dir in views strong; do
   mv "$img/$dir/view_00.png" "$img/${dir}_left.png"

@@ -37,6 +37,9 @@ pub struct WarpOptions {
     pub hole_gap: f32,
     /// Render this one view everywhere instead of the mask's (per-view images, quilts).
     pub view: Option<u32>,
+    /// Write the hole mask instead of colour: 255 on every subpixel that was filled (a
+    /// disocclusion, or the image's edge where a view has no source), 0 on those seen.
+    pub hole_mask: bool,
 }
 
 impl Default for WarpOptions {
@@ -46,6 +49,7 @@ impl Default for WarpOptions {
             depthiness: 1.0,
             hole_gap: DEFAULT_HOLE_GAP,
             view: None,
+            hole_mask: false,
         }
     }
 }
@@ -94,13 +98,15 @@ pub struct WarpUniform {
     pub fixed_view: u32,
     /// See [`DEFAULT_HOLE_GAP`].
     pub hole_gap: f32,
+    /// 1: the hole mask instead of colour ([`WarpOptions::hole_mask`]).
+    pub hole_mask: u32,
     #[doc(hidden)]
-    pub _pad: [u32; 2],
+    pub _pad: u32,
 }
 crate::shader::gpu_layout!(
     WarpUniform,
     "Warp",
-    [reference, parallax, focus, fixed_view, hole_gap]
+    [reference, parallax, focus, fixed_view, hole_gap, hole_mask]
 );
 
 impl WarpUniform {
@@ -113,7 +119,8 @@ impl WarpUniform {
             focus: options.focus,
             fixed_view: options.view.unwrap_or(u32::MAX),
             hole_gap: options.hole_gap,
-            _pad: [0; 2],
+            hole_mask: u32::from(options.hole_mask),
+            _pad: 0,
         }
     }
 }

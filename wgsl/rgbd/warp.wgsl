@@ -13,7 +13,7 @@ struct Warp {
     focus: f32,           // nearness on the display plane (no shift)
     fixed_view: u32,      // NO_VIEW: each subpixel's view from the mask; else this view
     hole_gap: f32,        // neighbours warped further apart than this straddle a hole
-    _pad0: u32,
+    hole_mask: u32,       // 1: write 1 where a subpixel was filled (hole or edge), 0 elsewhere
     _pad1: u32,
 }
 
@@ -43,8 +43,9 @@ fn color_at(x: i32, row: i32, c: u32) -> f32 {
     return textureLoad(color, vec2<i32>(x, row), 0)[c];
 }
 
-// Channel c of reference row `row` as seen from view position t at reference column u.
-fn warped(row: i32, u: f32, t: f32, c: u32) -> f32 {
+// Channel c of reference row `row` as seen from view position t at reference column u, and
+// whether it was filled (1: a disocclusion or the image's edge) rather than seen (0).
+fn warped(row: i32, u: f32, t: f32, c: u32) -> vec2<f32> {
     let k = warp.parallax * t;
     let reach = abs(k) * max(warp.focus, 1.0 - warp.focus);
     let last = i32(warp.reference.x) - 1;
@@ -54,6 +55,7 @@ fn warped(row: i32, u: f32, t: f32, c: u32) -> f32 {
     var l0 = f32(lo) + k * (d0 - warp.focus);
     var best = -1.0; // nearness of the winning pair
     var value = 0.0;
+    var filled = 0.0;
     var closest = abs(l0 - u); // the fallback: the sample landing nearest u
     var fallback = lo;
     for (var x1 = lo + 1; x1 <= hi; x1++) {
@@ -69,12 +71,16 @@ fn warped(row: i32, u: f32, t: f32, c: u32) -> f32 {
                 if (d > best) {
                     best = d;
                     value = color_at(far, row, c);
+                    filled = 1.0;
                 }
             } else {
                 let d = mix(d0, d1, f);
-                if (d > best) {
+                // At equal depth a seen pair beats a filled one (a hole's far sample is seen
+                // itself at the hole's edge).
+                if (d > best || (d == best && filled == 1.0)) {
                     best = d;
                     value = mix(color_at(x1 - 1, row, c), color_at(x1, row, c), f);
+                    filled = 0.0;
                 }
             }
         }
@@ -86,9 +92,9 @@ fn warped(row: i32, u: f32, t: f32, c: u32) -> f32 {
         l0 = l1;
     }
     if (best < 0.0) {
-        return color_at(fallback, row, c);
+        return vec2<f32>(color_at(fallback, row, c), 1.0);
     }
-    return value;
+    return vec2<f32>(value, filled);
 }
 
 @fragment
@@ -105,7 +111,8 @@ fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
         if (v == NO_VIEW) {
             v = mask_view(frame.mask, px, c);
         }
-        out[c] = warped(row, u, view_position(v), c);
+        let w = warped(row, u, view_position(v), c);
+        out[c] = select(w.x, w.y, warp.hole_mask == 1u);
     }
     return vec4<f32>(out, 1.0);
 }

@@ -49,6 +49,10 @@ pub struct RgbdArgs {
     /// Output PNG of the spatial image.
     #[arg(long)]
     out: Option<PathBuf>,
+    /// Also write the spatial image's hole mask (white = subpixel filled from the background
+    /// side or the edge, not seen) and print the filled share.
+    #[arg(long)]
+    hole_mask: Option<PathBuf>,
     /// Also write every view as a Looking Glass quilt (PNG; the name gets the
     /// `_qs{cols}x{rows}a{aspect}` suffix).
     #[arg(long)]
@@ -62,7 +66,10 @@ pub struct RgbdArgs {
 }
 
 pub fn run(args: RgbdArgs) -> Result<()> {
-    for path in [&args.out, &args.quilt_out].into_iter().flatten() {
+    for path in [&args.out, &args.quilt_out, &args.hole_mask]
+        .into_iter()
+        .flatten()
+    {
         check_output(path)?;
     }
     if let Some(dir) = &args.views_out {
@@ -70,8 +77,9 @@ pub fn run(args: RgbdArgs) -> Result<()> {
             bail!("--views-out {}: no such directory", dir.display());
         }
     }
-    if args.out.is_none() && args.quilt_out.is_none() && args.views_out.is_none() {
-        bail!("nothing to write: give --out, --quilt-out or --views-out");
+    let outputs = [&args.out, &args.quilt_out, &args.views_out, &args.hole_mask];
+    if outputs.iter().all(|o| o.is_none()) {
+        bail!("nothing to write: give --out, --quilt-out, --views-out or --hole-mask");
     }
     if let Some(bytes) = args.max_memory {
         autostereo::budget::set_max_memory(bytes);
@@ -91,6 +99,7 @@ pub fn run(args: RgbdArgs) -> Result<()> {
         depthiness: args.depthiness,
         hole_gap: args.hole_gap,
         view: None,
+        hole_mask: false,
     };
     let ctx = crate::args::gpu()?;
     let (device, queue) = (&ctx.device, &ctx.queue);
@@ -108,6 +117,22 @@ pub fn run(args: RgbdArgs) -> Result<()> {
             args.display.display,
             frame.camera.views
         );
+    }
+    if let Some(path) = &args.hole_mask {
+        warp.set_options(WarpOptions {
+            hole_mask: true,
+            ..options
+        });
+        warp.render(device, queue, &scene, &frame, &target)?;
+        let mask = target.read(device, queue)?;
+        let filled = mask.data.iter().filter(|&&v| v > 127).count();
+        mask.save_png(path)?;
+        eprintln!(
+            "{}: {:.3} % of subpixels filled (disocclusions and edges)",
+            path.display(),
+            100.0 * filled as f64 / mask.data.len() as f64
+        );
+        warp.set_options(options);
     }
     if args.quilt_out.is_none() && args.views_out.is_none() {
         return Ok(());
