@@ -156,7 +156,7 @@ impl RgbdImage {
         options: DepthMapOptions,
     ) -> Result<Self> {
         let size = [image.width(), image.height()];
-        if size[0] < 2 || size[0] % 2 != 0 {
+        if size[0] < 2 || !size[0].is_multiple_of(2) {
             return Err(Error::Image {
                 path: path.to_path_buf(),
                 reason: format!(
