@@ -54,7 +54,7 @@ fn run(target: &str, data: &[u8]) {
         "rgbd" => {
             use autostereo::rgbd::{DepthMapOptions, RgbdImage};
             let options = DepthMapOptions {
-                invert: data.len() % 2 == 0,
+                invert: data.len().is_multiple_of(2),
                 resample: true,
             };
             let name = Path::new("fuzz.png");

@@ -6,7 +6,7 @@ use std::path::Path;
 
 libfuzzer_sys::fuzz_target!(|data: &[u8]| {
     let options = DepthMapOptions {
-        invert: data.len() % 2 == 0,
+        invert: data.len().is_multiple_of(2),
         resample: true,
     };
     let name = Path::new("fuzz.png");
