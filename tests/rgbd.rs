@@ -10,7 +10,7 @@ use autostereo::frame::Frame;
 use autostereo::image_io::RgbImage;
 use autostereo::render::Renderer;
 use autostereo::rgbd::passes::predicted_shift;
-use autostereo::rgbd::{RgbdImage, RgbdScene, RgbdWarp, WarpOptions};
+use autostereo::rgbd::{RgbdImage, RgbdScene, RgbdWarp, WarpOptions, WarpPath};
 use autostereo::target::SpatialTarget;
 
 const DISPLAYS: &[&str] = &[
@@ -59,6 +59,34 @@ fn a_picture_at_the_focus_depth_is_the_picture_on_every_display() {
             };
             assert_eq!(warp(&image, spec, options), color, "{spec}, focus {focus}");
         }
+    }
+}
+
+/// Warping every view into its own image first (Beck's way), then compositing, gives the
+/// direct warp's image exactly: the same sample per subpixel.
+#[test]
+fn the_per_view_path_equals_the_direct_path() {
+    let (w, h) = (64, 48);
+    let color = pattern(w, h);
+    let nearness = (0..w * h)
+        .map(|i| ((i % w) as f32 / w as f32 * 3.0).fract())
+        .collect();
+    let image = RgbdImage::new(color, nearness).unwrap();
+    for spec in DISPLAYS {
+        let options = WarpOptions {
+            depthiness: 2.0,
+            ..WarpOptions::default()
+        };
+        let direct = warp(&image, spec, options);
+        let per_view = warp(
+            &image,
+            spec,
+            WarpOptions {
+                path: WarpPath::PerView,
+                ..options
+            },
+        );
+        assert_eq!(direct, per_view, "{spec}");
     }
 }
 

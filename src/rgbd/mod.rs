@@ -13,7 +13,7 @@ use std::path::Path;
 use crate::error::{Error, Result};
 use crate::image_io::RgbImage;
 
-pub use passes::{RgbdWarp, WarpOptions};
+pub use passes::{RgbdWarp, WarpOptions, WarpPath};
 pub use scene::RgbdScene;
 
 /// A colour image and, per pixel, its nearness: 0 = far … 1 = near (normalised depth map

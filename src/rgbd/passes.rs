@@ -8,6 +8,7 @@ use bytemuck::{Pod, Zeroable};
 use super::RgbdScene;
 use crate::error::{Error, Result};
 use crate::frame::{Frame, FrameBinding};
+use crate::render::npass::NPassHarness;
 use crate::render::pass_params::constants_buffer;
 use crate::render::pipeline::{
     bind_group_layout, draw_fullscreen, fullscreen_pipeline, uniform_entry,
@@ -25,6 +26,18 @@ pub const PARALLAX_PER_DEPTHINESS: f32 = 0.03;
 /// surface less are interpolated.
 pub const DEFAULT_HOLE_GAP: f32 = 2.0;
 
+/// Where the warp writes.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum WarpPath {
+    /// Straight into the spatial image: each subpixel warps its own view (no per-view
+    /// images).
+    #[default]
+    Direct,
+    /// Beck's way: every view warped into its own image, then the mask compositing (the
+    /// N-pass harness). The same values; N full images of work and memory.
+    PerView,
+}
+
 /// How the RGB-D image becomes views.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct WarpOptions {
@@ -40,6 +53,8 @@ pub struct WarpOptions {
     /// Write the hole mask instead of colour: 255 on every subpixel that was filled (a
     /// disocclusion, or the image's edge where a view has no source), 0 on those seen.
     pub hole_mask: bool,
+    /// See [`WarpPath`].
+    pub path: WarpPath,
 }
 
 impl Default for WarpOptions {
@@ -50,6 +65,7 @@ impl Default for WarpOptions {
             hole_gap: DEFAULT_HOLE_GAP,
             view: None,
             hole_mask: false,
+            path: WarpPath::Direct,
         }
     }
 }
@@ -72,6 +88,12 @@ impl WarpOptions {
             return Err(Error::invalid(
                 "hole gap",
                 format!("{}: at least 1 pixel", self.hole_gap),
+            ));
+        }
+        if self.view.is_some() && self.path == WarpPath::PerView {
+            return Err(Error::invalid(
+                "view",
+                "the per-view path warps every view; one view is the direct path's".to_string(),
             ));
         }
         if let Some(v) = self.view.filter(|&v| v >= views) {
@@ -147,6 +169,8 @@ pub struct RgbdWarp {
     layout: wgpu::BindGroupLayout,
     pipeline: wgpu::RenderPipeline,
     frame: FrameBinding,
+    /// The per-view path's images and compositing.
+    npass: NPassHarness,
     prepared: Option<[u32; 2]>,
 }
 
@@ -176,6 +200,7 @@ impl RgbdWarp {
             layout,
             pipeline,
             frame: FrameBinding::new(device, &frame_layout),
+            npass: NPassHarness::new(device, &frame_layout)?,
             prepared: None,
         })
     }
@@ -203,6 +228,9 @@ impl Renderer<RgbdScene> for RgbdWarp {
     ) -> Result<()> {
         begin_prepare(device, frame, &mut self.prepared)?;
         self.options.validate(frame.camera.views)?;
+        if self.options.path == WarpPath::PerView {
+            self.npass.prepare(device, frame)?;
+        }
         self.prepared = Some(scene.size);
         Ok(())
     }
@@ -218,14 +246,52 @@ impl Renderer<RgbdScene> for RgbdWarp {
         check_target(frame, target)?;
         check_prepared("RgbdWarp", &self.prepared, &scene.size)?;
         self.frame.write(device, frame);
-        let uniform = WarpUniform::new(&self.options, scene.size);
+        if self.options.path == WarpPath::Direct {
+            let group = self.bind_group(device, scene, &self.options);
+            draw_fullscreen(
+                encoder,
+                "rgbd warp",
+                &self.pipeline,
+                &[&self.frame.bind_group, &group],
+                &target.view,
+            );
+            return Ok(());
+        }
+        for (v, layer) in self.npass.layers().layer_views.iter().enumerate() {
+            let options = WarpOptions {
+                view: Some(v as u32),
+                ..self.options
+            };
+            let group = self.bind_group(device, scene, &options);
+            draw_fullscreen(
+                encoder,
+                "rgbd warp (one view)",
+                &self.pipeline,
+                &[&self.frame.bind_group, &group],
+                layer,
+            );
+        }
+        self.npass.composite(device, encoder, &self.frame, target);
+        Ok(())
+    }
+}
+
+impl RgbdWarp {
+    /// The textures of `scene` and the constants of `options` (a buffer of the frame's own).
+    fn bind_group(
+        &self,
+        device: &wgpu::Device,
+        scene: &RgbdScene,
+        options: &WarpOptions,
+    ) -> wgpu::BindGroup {
+        let uniform = WarpUniform::new(options, scene.size);
         let constants = constants_buffer(
             device,
             "rgbd warp constants",
             wgpu::BufferUsages::UNIFORM,
             bytemuck::bytes_of(&uniform),
         );
-        let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("rgbd warp"),
             layout: &self.layout,
             entries: &[
@@ -242,14 +308,6 @@ impl Renderer<RgbdScene> for RgbdWarp {
                     resource: constants.as_entire_binding(),
                 },
             ],
-        });
-        draw_fullscreen(
-            encoder,
-            "rgbd warp",
-            &self.pipeline,
-            &[&self.frame.bind_group, &group],
-            &target.view,
-        );
-        Ok(())
+        })
     }
 }

@@ -8,8 +8,11 @@ use autostereo::frame::Frame;
 use autostereo::image_io::RgbImage;
 use autostereo::render::quilt::QuiltLayout;
 use autostereo::render::Renderer;
-use autostereo::rgbd::{self, DepthMapOptions, RgbdImage, RgbdScene, RgbdWarp, WarpOptions};
+use autostereo::rgbd::{
+    self, DepthMapOptions, RgbdImage, RgbdScene, RgbdWarp, WarpOptions, WarpPath,
+};
 use autostereo::target::SpatialTarget;
+use autostereo::timing::{median, FrameTimer};
 
 use crate::args::{check_output, parse_size, DisplayArgs};
 
@@ -60,9 +63,22 @@ pub struct RgbdArgs {
     /// Also write every view as DIR/view_NN.png (DIR must exist).
     #[arg(long)]
     views_out: Option<PathBuf>,
+    /// Where the warp writes: direct (each subpixel warps its own view into the spatial
+    /// image) or per-view (every view into its own image, then the mask compositing).
+    #[arg(long, value_enum, default_value = "direct")]
+    path: PathArg,
+    /// Timed frames of the spatial image (after two warm-up frames); the median is reported.
+    #[arg(long, default_value_t = 1, value_parser = crate::args::frames_parser())]
+    frames: u32,
     /// CPU memory budget for loading (bytes, or with K/M/G/T; default 8G).
     #[arg(long, value_parser = autostereo::budget::parse_bytes)]
     max_memory: Option<u64>,
+}
+
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum PathArg {
+    Direct,
+    PerView,
 }
 
 pub fn run(args: RgbdArgs) -> Result<()> {
@@ -100,6 +116,10 @@ pub fn run(args: RgbdArgs) -> Result<()> {
         hole_gap: args.hole_gap,
         view: None,
         hole_mask: false,
+        path: match args.path {
+            PathArg::Direct => WarpPath::Direct,
+            PathArg::PerView => WarpPath::PerView,
+        },
     };
     let ctx = crate::args::gpu()?;
     let (device, queue) = (&ctx.device, &ctx.queue);
@@ -107,15 +127,29 @@ pub fn run(args: RgbdArgs) -> Result<()> {
     let mut warp = RgbdWarp::new(device, options)?;
     let target = SpatialTarget::new(device, size)?;
     if let Some(out) = &args.out {
-        warp.render(device, queue, &scene, &frame, &target)?;
+        warp.prepare(device, queue, &scene, &frame)?;
+        let timer = FrameTimer::new(device, queue);
+        let mut samples = Vec::new();
+        for i in 0..args.frames + 2 {
+            let ms = timer.time_frame(device, queue, |encoder| {
+                Ok(warp.encode(device, encoder, &scene, &frame, &target)?)
+            })?;
+            if i >= 2 {
+                samples.push(ms);
+            }
+        }
         target.read(device, queue)?.save_png(out)?;
         eprintln!(
-            "{}: {}x{} for {} ({} views)",
+            "{}: {}x{} for {} ({} views), {:?} warp, {:.2} ms/frame (median of {}, {:?})",
             out.display(),
             size[0],
             size[1],
             args.display.display,
-            frame.camera.views
+            frame.camera.views,
+            options.path,
+            median(&samples),
+            args.frames,
+            timer.source()
         );
     }
     if let Some(path) = &args.hole_mask {
@@ -151,6 +185,7 @@ pub fn run(args: RgbdArgs) -> Result<()> {
     for v in 0..views {
         warp.set_options(WarpOptions {
             view: Some(v),
+            path: WarpPath::Direct,
             ..options
         });
         warp.render(device, queue, &scene, &frame, &target)?;
