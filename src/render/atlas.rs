@@ -2,7 +2,6 @@
 //! method's render target (with its one depth buffer), a quilt read from a file, and the
 //! compositing from either into the spatial image (`wgsl/render/composite_atlas.wgsl`).
 
-use super::pass_params::constants_buffer;
 use super::pipeline::{bind_group_layout, draw_fullscreen, fullscreen_pipeline, uniform_entry};
 use super::quilt::QuiltLayout;
 use super::texture::{texture_2d, texture_2d_layout_entry, Texture2d};
@@ -176,12 +175,7 @@ impl AtlasCompositor {
         atlas: &Atlas,
         target: &SpatialTarget,
     ) {
-        let quilt = constants_buffer(
-            device,
-            "quilt layout",
-            wgpu::BufferUsages::UNIFORM,
-            bytemuck::bytes_of(&atlas.layout.uniform()),
-        );
+        let quilt = atlas.layout.uniform_buffer(device);
         let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("composite atlas"),
             layout: &self.layout,

@@ -153,6 +153,16 @@ impl QuiltLayout {
         }
     }
 
+    /// [`QuiltLayout::uniform`] in a uniform buffer of its own (for one frame's bind group).
+    pub(crate) fn uniform_buffer(&self, device: &wgpu::Device) -> wgpu::Buffer {
+        crate::render::pass_params::constants_buffer(
+            device,
+            "quilt layout",
+            wgpu::BufferUsages::UNIFORM,
+            bytemuck::bytes_of(&self.uniform()),
+        )
+    }
+
     /// The Looking Glass name suffix, `_qs{cols}x{rows}a{aspect}`.
     pub fn suffix(&self) -> String {
         let aspect = format!("{:.4}", self.aspect());

@@ -18,7 +18,6 @@ use crate::frame::Frame;
 use crate::points::SplatScene;
 use crate::render::batches::batches;
 use crate::render::dispatch::dispatch_2d;
-use crate::render::pass_params::constants_buffer;
 use crate::render::pipeline::{
     begin_pass, begin_pass_to, cleared, kept, multiview_mask, PassTargets,
 };
@@ -185,12 +184,7 @@ impl PointSplatter {
                 .get(&pipeline(Geometry::Tiled))
                 .expect("built");
             for (i, band) in bands.iter().enumerate() {
-                let quilt = constants_buffer(
-                    device,
-                    "quilt band layout",
-                    wgpu::BufferUsages::UNIFORM,
-                    bytemuck::bytes_of(&band.layout.uniform()),
-                );
+                let quilt = band.layout.uniform_buffer(device);
                 let quilt_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
                     label: Some("splat quilt layout"),
                     layout: &self.layouts.quilt,

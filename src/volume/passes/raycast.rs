@@ -10,7 +10,6 @@ use crate::error::{Error, Result};
 use crate::frame::Frame;
 use crate::render::atlas::{Atlas, AtlasCompositor};
 use crate::render::npass::NPassHarness;
-use crate::render::pass_params::constants_buffer;
 use crate::render::pipeline::{bind_group_layout, compilation, uniform_entry};
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::quilt::QuiltLayout;
@@ -300,12 +299,7 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         let outputs: Vec<(wgpu::BindGroup, u32)> = match (&self.npass, &self.tiled) {
             (_, Some(tiled)) => {
                 let atlas = tiled.atlas.as_ref().expect("allocated by prepare");
-                let quilt = constants_buffer(
-                    device,
-                    "quilt layout",
-                    wgpu::BufferUsages::UNIFORM,
-                    bytemuck::bytes_of(&atlas.layout.uniform()),
-                );
+                let quilt = atlas.layout.uniform_buffer(device);
                 let group = output(&[view(&atlas.color.view), quilt.as_entire_binding()]);
                 vec![(group, camera.views)]
             }

@@ -8,7 +8,6 @@ use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
 use crate::mesh::passes::npass::PreparedFor;
 use crate::mesh::MeshBuffers;
 use crate::render::atlas::{Atlas, AtlasCompositor};
-use crate::render::pass_params::constants_buffer;
 use crate::render::pipeline::{
     begin_pass_to, bind_group_layout, cleared, pipeline_layout, uniform_entry, PassTargets,
 };
@@ -138,12 +137,7 @@ impl Renderer<MeshBuffers> for MeshTiled {
         self.frame.write(device, frame);
         let atlas = self.atlas.as_ref().expect("allocated by prepare");
         let views = views_buffer(device, &frame.camera);
-        let quilt = constants_buffer(
-            device,
-            "quilt layout",
-            wgpu::BufferUsages::UNIFORM,
-            bytemuck::bytes_of(&atlas.layout.uniform()),
-        );
+        let quilt = atlas.layout.uniform_buffer(device);
         let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("tiled views"),
             layout: &self.views_layout,
