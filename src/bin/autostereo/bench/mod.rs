@@ -67,50 +67,26 @@ pub struct Plan {
 
 impl Plan {
     fn new(args: &BenchArgs) -> Self {
-        if args.duplication {
-            Self {
-                quick: false,
-                duplication: true,
-                sweep: false,
-                size: [512, 512],
-                views: vec![8],
-                npass_max_views: 8,
-                extra_sizes: vec![[1920, 1080]],
-                frames: args.frames,
-            }
+        const ALL_N: [u32; 7] = [1, 2, 4, 8, 16, 32, 64];
+        // (size, views, N-pass up to, sizes on the paper's display only)
+        let (size, views, npass_max_views, extra_sizes) = if args.duplication {
+            ([512, 512], vec![8], 8, vec![[1920, 1080]])
         } else if args.sweep {
-            Self {
-                quick: false,
-                duplication: false,
-                sweep: true,
-                size: [256, 256],
-                views: vec![1, 2, 4, 8, 16, 32, 64],
-                npass_max_views: 64,
-                extra_sizes: vec![],
-                frames: args.frames,
-            }
+            ([256, 256], ALL_N.to_vec(), 64, vec![])
         } else if args.quick {
-            Self {
-                quick: true,
-                duplication: false,
-                sweep: false,
-                size: [256, 256],
-                views: vec![2, 8, 64],
-                npass_max_views: 8,
-                extra_sizes: vec![],
-                frames: args.frames,
-            }
+            ([256, 256], vec![2, 8, 64], 8, vec![])
         } else {
-            Self {
-                quick: false,
-                duplication: false,
-                sweep: false,
-                size: [512, 512],
-                views: vec![1, 2, 4, 8, 16, 32, 64],
-                npass_max_views: 64,
-                extra_sizes: vec![[1920, 1080]],
-                frames: args.frames,
-            }
+            ([512, 512], ALL_N.to_vec(), 64, vec![[1920, 1080]])
+        };
+        Self {
+            quick: args.quick,
+            duplication: args.duplication,
+            sweep: args.sweep,
+            size,
+            views,
+            npass_max_views,
+            extra_sizes,
+            frames: args.frames,
         }
     }
 
