@@ -11,6 +11,7 @@ use std::ops::Range;
 
 use super::bind_groups::FrameGroups;
 use super::chunks::{layered_chunks, tiled_bands, Band};
+use super::group_images::draw_groups;
 use super::pipelines::{Geometry, SplatParams, SplatPipelineKey, COVER_WORKGROUP};
 use super::PointSplatter;
 use crate::error::Result;
@@ -194,20 +195,20 @@ impl PointSplatter {
                     }],
                 });
                 let offset = [self.params.offset(i)];
-                for (range, layer) in scene.group_ranges.iter().zip(&images.layer_views) {
-                    let mut pass = begin_pass(
-                        encoder,
-                        "splat group (tiled)",
-                        cleared(layer, [0.0; 4]),
-                        Some(&images.depth_view),
-                    );
-                    pass.set_pipeline(&geometry.geometry);
-                    pass.set_bind_group(0, &self.frame.bind_group, &[]);
-                    pass.set_bind_group(1, &quad_group, &[]);
-                    pass.set_bind_group(2, &params_group, &offset);
-                    pass.set_bind_group(3, &quilt_group, &[]);
-                    pass.draw(range.start * 6..range.end * 6, band.views());
-                }
+                draw_groups(
+                    encoder,
+                    "splat group (tiled)",
+                    images,
+                    &scene.group_ranges,
+                    &geometry.geometry,
+                    &[
+                        (&self.frame.bind_group, &[]),
+                        (&quad_group, &[]),
+                        (&params_group, &offset),
+                        (&quilt_group, &[]),
+                    ],
+                    band.views(),
+                );
                 // ε-z compositing of every tile of the band at once: it only looks at texels.
                 let color = if i == 0 {
                     cleared(&atlas.color.view, [0.0; 4])

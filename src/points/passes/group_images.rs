@@ -1,8 +1,11 @@
 //! The K group images of the splat geometry pass (one array layer per group, never per view)
 //! and the depth buffer their z-tests share.
 
+use std::ops::Range;
+
 use super::pipelines::{PIXEL_FORMAT, SUBPIXEL_FORMAT};
 use crate::error::Result;
+use crate::render::pipeline::{begin_pass, cleared};
 use crate::render::ViewLayers;
 
 pub(super) struct GroupImages {
@@ -55,5 +58,32 @@ impl GroupImages {
             wgpu::TextureUsages::empty(),
         )?;
         Ok(Self { layers, key })
+    }
+}
+
+/// One geometry pass per splat group (`group_ranges`), each into its own layer of `images`
+/// with their shared depth buffer, cleared first: `pipeline` with `bind_groups` (group index =
+/// position; each with its dynamic offsets), every group's splats × 6 vertices, `instances`.
+pub(super) fn draw_groups(
+    encoder: &mut wgpu::CommandEncoder,
+    label: &str,
+    images: &ViewLayers,
+    group_ranges: &[Range<u32>],
+    pipeline: &wgpu::RenderPipeline,
+    bind_groups: &[(&wgpu::BindGroup, &[u32])],
+    instances: Range<u32>,
+) {
+    for (range, layer) in group_ranges.iter().zip(&images.layer_views) {
+        let mut pass = begin_pass(
+            encoder,
+            label,
+            cleared(layer, [0.0; 4]),
+            Some(&images.depth_view),
+        );
+        pass.set_pipeline(pipeline);
+        for (i, (group, offsets)) in bind_groups.iter().enumerate() {
+            pass.set_bind_group(i as u32, *group, offsets);
+        }
+        pass.draw(range.start * 6..range.end * 6, instances.clone());
     }
 }

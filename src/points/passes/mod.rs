@@ -18,7 +18,7 @@ use crate::render::Method;
 pub use pipelines::SplatParams;
 
 use self::bind_groups::FrameGroups;
-use self::group_images::{GroupImages, GroupImagesKey};
+use self::group_images::{draw_groups, GroupImages, GroupImagesKey};
 use self::pipelines::{Geometry, Layouts, Pipelines, SplatPipelineKey, COVER_WORKGROUP};
 use crate::error::{Error, Result};
 use crate::frame::{Frame, FrameBinding};
@@ -461,19 +461,19 @@ impl Renderer<SplatScene> for PointSplatter {
                 pass.set_bind_group(2, &params_group, &offset);
                 pass.dispatch_workgroups(dispatch[0], dispatch[1], 1);
             }
-            for (range, layer) in scene.group_ranges.iter().zip(&images.layer_views) {
-                let mut pass = begin_pass(
-                    encoder,
-                    "splat group",
-                    cleared(layer, [0.0; 4]),
-                    Some(&images.depth_view),
-                );
-                pass.set_pipeline(&pipelines.geometry);
-                pass.set_bind_group(0, &self.frame.bind_group, &[]);
-                pass.set_bind_group(1, &quad_group, &[]);
-                pass.set_bind_group(2, &params_group, &offset);
-                pass.draw(range.start * 6..range.end * 6, 0..1);
-            }
+            draw_groups(
+                encoder,
+                "splat group",
+                images,
+                &scene.group_ranges,
+                &pipelines.geometry,
+                &[
+                    (&self.frame.bind_group, &[]),
+                    (&quad_group, &[]),
+                    (&params_group, &offset),
+                ],
+                0..1,
+            );
             let output = match &self.npass {
                 Some(npass) => &npass.layers().layer_views[i],
                 None => &target.view,
