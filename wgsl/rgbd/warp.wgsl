@@ -39,13 +39,13 @@ fn near_at(x: i32, row: i32) -> f32 {
     return textureLoad(nearness, vec2<i32>(x, row), 0).r;
 }
 
-fn color_at(x: i32, row: i32, c: u32) -> f32 {
-    return textureLoad(color, vec2<i32>(x, row), 0)[c];
+fn color_at(x: i32, row: i32) -> vec3<f32> {
+    return textureLoad(color, vec2<i32>(x, row), 0).rgb;
 }
 
-// Channel c of reference row `row` as seen from view position t at reference column u, and
-// whether it was filled (1: a disocclusion or the image's edge) rather than seen (0).
-fn warped(row: i32, u: f32, t: f32, c: u32) -> vec2<f32> {
+// Reference row `row` as seen from view position t at reference column u (rgb), and whether
+// it was filled (w = 1: a disocclusion or the image's edge) rather than seen (0).
+fn warped(row: i32, u: f32, t: f32) -> vec4<f32> {
     let k = warp.parallax * t;
     let reach = abs(k) * max(warp.focus, 1.0 - warp.focus);
     let last = i32(warp.reference.x) - 1;
@@ -54,7 +54,7 @@ fn warped(row: i32, u: f32, t: f32, c: u32) -> vec2<f32> {
     var d0 = near_at(lo, row);
     var l0 = f32(lo) + k * (d0 - warp.focus);
     var best = -1.0; // nearness of the winning pair
-    var value = 0.0;
+    var value = vec3<f32>(0.0);
     var filled = 0.0;
     var closest = abs(l0 - u); // the fallback: the sample landing nearest u
     var fallback = lo;
@@ -70,7 +70,7 @@ fn warped(row: i32, u: f32, t: f32, c: u32) -> vec2<f32> {
                 let d = min(d0, d1);
                 if (d > best) {
                     best = d;
-                    value = color_at(far, row, c);
+                    value = color_at(far, row);
                     filled = 1.0;
                 }
             } else {
@@ -79,7 +79,7 @@ fn warped(row: i32, u: f32, t: f32, c: u32) -> vec2<f32> {
                 // itself at the hole's edge).
                 if (d > best || (d == best && filled == 1.0)) {
                     best = d;
-                    value = mix(color_at(x1 - 1, row, c), color_at(x1, row, c), f);
+                    value = mix(color_at(x1 - 1, row), color_at(x1, row), f);
                     filled = 0.0;
                 }
             }
@@ -92,9 +92,9 @@ fn warped(row: i32, u: f32, t: f32, c: u32) -> vec2<f32> {
         l0 = l1;
     }
     if (best < 0.0) {
-        return vec2<f32>(color_at(fallback, row, c), 1.0);
+        return vec4<f32>(color_at(fallback, row), 1.0);
     }
-    return vec2<f32>(value, filled);
+    return vec4<f32>(value, filled);
 }
 
 @fragment
@@ -105,14 +105,20 @@ fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
     // The pixel centre in reference pixels (the reference may be of another size).
     let u = (f32(px.x) + 0.5) * reference.x / panel.x - 0.5;
     let row = min(i32((f32(px.y) + 0.5) * reference.y / panel.y), i32(warp.reference.y) - 1);
+    // One search per distinct view of the pixel (a per-pixel mask: one for all three).
     var out = vec3<f32>(0.0);
+    var searched = NO_VIEW;
+    var w = vec4<f32>(0.0);
     for (var c = 0u; c < 3u; c++) {
         var v = warp.fixed_view;
         if (v == NO_VIEW) {
             v = mask_view(frame.mask, px, c);
         }
-        let w = warped(row, u, view_position(v), c);
-        out[c] = select(w.x, w.y, warp.hole_mask == 1u);
+        if (v != searched) {
+            w = warped(row, u, view_position(v));
+            searched = v;
+        }
+        out[c] = select(w[c], w.w, warp.hole_mask == 1u);
     }
     return vec4<f32>(out, 1.0);
 }
