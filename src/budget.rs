@@ -1,8 +1,11 @@
 //! The memory budget: what a loader or renderer may allocate, checked from a file's header and
-//! the flags before anything is allocated. It covers the CPU side of loading and, per
-//! resource, the renderers' GPU images that grow with views and size (view layers, quilt
-//! atlases, splat group images): a 64-view duplication at 1080p is refused with its figure
-//! instead of exhausting the adapter (software adapters allocate from the same RAM).
+//! the flags before anything is allocated. It covers the CPU side of loading (per input) and,
+//! as a running total, every GPU texture and buffer the crate allocates that outlives a frame
+//! (scenes, targets, view layers, quilt atlases, scratch): each holds a [`GpuCharge`] for its
+//! bytes, given back when it is dropped, so a 64-view duplication at 1080p, or a second
+//! renderer's scratch on top of the first's, is refused with its figure instead of exhausting
+//! the adapter (software adapters allocate from the same RAM). Per-frame constants and
+//! read-back staging are small and transient, and not counted.
 //!
 //! One process-wide figure, 8 GiB by default, raised or lowered with [`set_max_memory`] (the
 //! CLI's `--max-memory`). Inputs whose cost is over it are refused with
@@ -17,6 +20,9 @@ use crate::error::{Error, Result};
 pub const DEFAULT_MAX_MEMORY: u64 = 8 << 30;
 
 static MAX_MEMORY: AtomicU64 = AtomicU64::new(DEFAULT_MAX_MEMORY);
+
+/// Bytes the live [`GpuCharge`]s hold.
+static GPU_HELD: AtomicU64 = AtomicU64::new(0);
 
 /// The budget now, in bytes.
 pub fn max_memory() -> u64 {
@@ -39,6 +45,61 @@ pub fn check(what: impl FnOnce() -> String, bytes: u64) -> Result<()> {
         });
     }
     Ok(())
+}
+
+/// A GPU resource's share of the budget, given back when it is dropped (with the resource).
+#[derive(Debug)]
+pub struct GpuCharge(u64);
+
+impl GpuCharge {
+    /// The bytes charged.
+    pub fn bytes(&self) -> u64 {
+        self.0
+    }
+}
+
+impl Drop for GpuCharge {
+    fn drop(&mut self) {
+        GPU_HELD.fetch_sub(self.0, Ordering::Relaxed);
+    }
+}
+
+/// Bytes of GPU memory this process's textures and buffers hold now.
+pub fn gpu_held() -> u64 {
+    GPU_HELD.load(Ordering::Relaxed)
+}
+
+/// Charge `bytes` of GPU memory for `what` against the budget, on top of what is held:
+/// `Err(MemoryBudget)` (naming what is already held) when the total would exceed it.
+pub fn charge_gpu(what: impl FnOnce() -> String, bytes: u64) -> Result<GpuCharge> {
+    let budget = max_memory();
+    let mut held = GPU_HELD.load(Ordering::Relaxed);
+    loop {
+        let total = held.saturating_add(bytes);
+        if total > budget {
+            return Err(Error::MemoryBudget {
+                what: format!(
+                    "{} ({bytes} bytes) with the {held} bytes of GPU memory already held",
+                    what()
+                ),
+                bytes: total,
+                budget,
+            });
+        }
+        match GPU_HELD.compare_exchange_weak(held, total, Ordering::Relaxed, Ordering::Relaxed) {
+            Ok(_) => return Ok(GpuCharge(bytes)),
+            Err(now) => held = now,
+        }
+    }
+}
+
+/// Bytes per texel of `format` (depth formats by their depth aspect).
+pub(crate) fn texel_bytes(format: wgpu::TextureFormat) -> u64 {
+    format
+        .block_copy_size(None)
+        .or_else(|| format.block_copy_size(Some(wgpu::TextureAspect::DepthOnly)))
+        .unwrap_or(4)
+        .into()
 }
 
 /// `2G`, `512M`, `64K` or plain bytes (binary units), as `--max-memory` takes them.

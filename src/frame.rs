@@ -95,6 +95,11 @@ pub struct Frame {
     pub size: [u32; 2],
     /// Background colour (linear RGBA).
     pub background: [f32; 4],
+    /// Per-view resolution (Yalçın & Çapın's view LOD): the methods that render view images
+    /// (N-pass, tiled, layered, MRT) render them at this share of `size` in each direction and
+    /// up-sample them bilinearly when compositing; 1 = full size (exact). In (0, 1]. The
+    /// single pass and the single view have no view images and refuse anything but 1.
+    pub view_scale: f32,
 }
 
 impl Frame {
@@ -106,6 +111,7 @@ impl Frame {
             light: Light::default(),
             size,
             background: [0.0, 0.0, 0.0, 1.0],
+            view_scale: 1.0,
         };
         frame.validate()?;
         Ok(frame)
@@ -135,6 +141,12 @@ impl Frame {
                 ),
             ));
         }
+        if !(self.view_scale > 0.0 && self.view_scale <= 1.0) {
+            return Err(Error::invalid(
+                "view scale",
+                format!("{}: must be in (0, 1]", self.view_scale),
+            ));
+        }
         if self.camera.views != self.display.views() {
             return Err(Error::invalid(
                 "views",
@@ -146,6 +158,37 @@ impl Frame {
             ));
         }
         Ok(())
+    }
+
+    /// Size of the view images at [`Frame::view_scale`]: each side rounded up, at least 1.
+    pub fn view_size(&self) -> [u32; 2] {
+        self.size
+            .map(|side| ((side as f32 * self.view_scale).ceil() as u32).clamp(1, side))
+    }
+
+    /// The frame the view images are rendered with: this one at [`Frame::view_size`] (the
+    /// camera's aspect is unchanged, so each view sees what it sees at full size).
+    pub fn for_view_images(&self) -> Frame {
+        Frame {
+            size: self.view_size(),
+            view_scale: 1.0,
+            ..self.clone()
+        }
+    }
+
+    /// Fail unless [`Frame::view_scale`] is 1: for `method`, which renders no view images.
+    pub fn check_full_views(&self, method: &str) -> Result<()> {
+        if self.view_scale == 1.0 {
+            return Ok(());
+        }
+        Err(Error::invalid(
+            "view scale",
+            format!(
+                "{}: the {method} method renders no view images to scale (only n-pass, tiled, \
+                 layered and mrt do)",
+                self.view_scale
+            ),
+        ))
     }
 
     /// The uniform bound at group 0.

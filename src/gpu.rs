@@ -39,6 +39,14 @@ pub struct GpuContext {
     info: wgpu::AdapterInfo,
 }
 
+impl GpuOptions {
+    /// The backends to search: the option, else `WGPU_BACKEND`, else all.
+    pub fn backends(&self) -> wgpu::Backends {
+        self.backends
+            .unwrap_or_else(|| wgpu::Backends::all().with_env())
+    }
+}
+
 impl GpuContext {
     /// Pick an adapter per `options` (and the environment) and create a device with all of its
     /// limits and the optional features it offers.
@@ -47,18 +55,37 @@ impl GpuContext {
     }
 
     async fn new_async(options: &GpuOptions) -> Result<Self> {
-        let backends = options
-            .backends
-            .unwrap_or_else(|| wgpu::Backends::all().with_env());
+        let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
+        desc.backends = options.backends();
+        let instance = wgpu::Instance::new(desc);
+        Self::from_instance(&instance, None, options).await
+    }
+
+    /// Like [`GpuContext::new`], on `instance` and among the adapters that can present to
+    /// `surface` (a window's, made by `instance`): what a viewer needs. The instance should
+    /// carry the window system's display handle (`InstanceDescriptor::display`: GL needs it to
+    /// present).
+    pub fn for_surface(
+        instance: &wgpu::Instance,
+        surface: &wgpu::Surface<'_>,
+        options: &GpuOptions,
+    ) -> Result<Self> {
+        pollster::block_on(Self::from_instance(instance, Some(surface), options))
+    }
+
+    async fn from_instance(
+        instance: &wgpu::Instance,
+        surface: Option<&wgpu::Surface<'_>>,
+        options: &GpuOptions,
+    ) -> Result<Self> {
+        let backends = options.backends();
         let name = options
             .adapter_name
             .clone()
             .or_else(|| std::env::var("WGPU_ADAPTER_NAME").ok())
             .filter(|n| !n.is_empty());
-        let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
-        desc.backends = backends;
-        let instance = wgpu::Instance::new(desc);
         let mut adapters = instance.enumerate_adapters(backends).await;
+        adapters.retain(|a| surface.is_none_or(|s| a.is_surface_supported(s)));
         // Prefer real GPUs, then integrated, then CPU (lavapipe/llvmpipe): stable across runs.
         adapters.sort_by_key(|a| device_rank(a.get_info().device_type));
         let adapter = adapters
@@ -72,7 +99,12 @@ impl GpuContext {
                 name: name
                     .as_ref()
                     .map(|n| format!(", name contains '{n}'"))
-                    .unwrap_or_default(),
+                    .unwrap_or_default()
+                    + if surface.is_some() {
+                        ", that can present to the window"
+                    } else {
+                        ""
+                    },
             })?;
         let info = adapter.get_info();
         log::info!(

@@ -31,5 +31,6 @@ pub mod target;
 pub mod timing;
 pub mod views;
 pub mod volume;
+pub mod warp;
 
 pub use error::{Error, Result};

@@ -25,6 +25,7 @@ const SHARED: &[(&str, &str)] = &[
     wgsl!("shared/multiview.wgsl"),
     wgsl!("shared/ray.wgsl"),
     wgsl!("shared/quilt.wgsl"),
+    wgsl!("shared/row_warp.wgsl"),
     wgsl!("mesh/shared/mesh_data.wgsl"),
     wgsl!("mesh/shared/eye_triangle.wgsl"),
     wgsl!("mesh/shared/cover_bounds.wgsl"),
@@ -40,6 +41,7 @@ const SHARED: &[(&str, &str)] = &[
     wgsl!("points/shared/cover_rect.wgsl"),
     wgsl!("points/shared/ray_sample.wgsl"),
     wgsl!("points/shared/view_quad.wgsl"),
+    wgsl!("shared/upsample.wgsl"),
 ];
 
 /// One WGSL file per pipeline stage, by path under `wgsl/`: `render/` for the frame-level
@@ -54,9 +56,13 @@ pub const STAGES: &[(&str, &str)] = &[
     wgsl!("mesh/mrt.wgsl"),
     wgsl!("render/composite.wgsl"),
     wgsl!("render/composite_atlas.wgsl"),
+    wgsl!("render/camera_crop.wgsl"),
     wgsl!("rgbd/warp.wgsl"),
+    wgsl!("warp/warp.wgsl"),
+    wgsl!("warp/row_bounds.wgsl"),
     wgsl!("render/depth_readback.wgsl"),
     wgsl!("render/output.wgsl"),
+    wgsl!("render/stereo.wgsl"),
     wgsl!("render/storage_fence.wgsl"),
     wgsl!("mesh/single_pass_cover.wgsl"),
     wgsl!("mesh/single_pass_fast.wgsl"),
@@ -68,6 +74,7 @@ pub const STAGES: &[(&str, &str)] = &[
     wgsl!("volume/raycast.wgsl"),
     wgsl!("volume/raycast_layered.wgsl"),
     wgsl!("volume/raycast_tiled.wgsl"),
+    wgsl!("volume/raycast_reference.wgsl"),
     wgsl!("volume/slices.wgsl"),
     wgsl!("volume/slices_resolve.wgsl"),
     wgsl!("points/cover.wgsl"),
@@ -261,12 +268,24 @@ mod tests {
                 crate::mesh::passes::duplicate::ViewBatch::GPU_LAYOUT,
             ),
             (
+                "render/composite.wgsl",
+                crate::render::composite::CompositeUniform::GPU_LAYOUT,
+            ),
+            (
                 "render/composite_atlas.wgsl",
                 crate::render::quilt::QuiltUniform::GPU_LAYOUT,
             ),
             (
                 "rgbd/warp.wgsl",
                 crate::rgbd::passes::WarpUniform::GPU_LAYOUT,
+            ),
+            (
+                "render/stereo.wgsl",
+                crate::render::stereo::StereoUniform::GPU_LAYOUT,
+            ),
+            (
+                "warp/warp.wgsl",
+                crate::warp::passes::ReferenceWarpUniform::GPU_LAYOUT,
             ),
             (
                 "mesh/single_pass_compute.wgsl",

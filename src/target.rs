@@ -17,13 +17,19 @@ pub struct SpatialTarget {
     pub view: wgpu::TextureView,
     /// Made by the library (true) or wrapped around a caller's texture.
     owned: bool,
+    /// The library's own target's share of the memory budget (a caller's texture is theirs).
+    _charge: Option<crate::budget::GpuCharge>,
 }
 
 impl SpatialTarget {
     /// Allocate a `size` target after checking the device limits.
     pub fn new(device: &wgpu::Device, size: [u32; 2]) -> Result<Self> {
         check_size_2d(device, size[0], size[1])?;
-        let Texture2d { texture, view } = texture_2d(
+        let Texture2d {
+            texture,
+            view,
+            charge,
+        } = texture_2d(
             device,
             "spatial image",
             size,
@@ -32,11 +38,12 @@ impl SpatialTarget {
                 | wgpu::TextureUsages::STORAGE_BINDING
                 | wgpu::TextureUsages::TEXTURE_BINDING
                 | wgpu::TextureUsages::COPY_SRC,
-        );
+        )?;
         Ok(Self {
             texture,
             view,
             owned: true,
+            _charge: Some(charge),
         })
     }
 
@@ -79,6 +86,7 @@ impl SpatialTarget {
             texture,
             view,
             owned: false,
+            _charge: None,
         })
     }
 

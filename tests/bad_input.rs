@@ -249,6 +249,43 @@ fn calibration_with_missing_or_bad_fields_is_an_error() {
     assert!(Calibration::from_json(&zero.to_string(), "v.json".as_ref()).is_err());
 }
 
+/// What the 1.x interleaving does not model is refused by name, never ignored: the newer
+/// calibration format's per-cell subpixel layouts, and the vertical / subpixel-order flips.
+#[test]
+fn looking_glass_calibrations_the_model_does_not_cover_are_refused_clearly() {
+    let (_, json) = sample_calibration();
+    let refused = |edit: &dyn Fn(&mut serde_json::Value), expect: &str| {
+        let mut v = json.clone();
+        edit(&mut v);
+        let err = Calibration::from_json(&v.to_string(), "visual.json".as_ref()).unwrap_err();
+        let text = err.to_string();
+        assert!(
+            text.contains("visual.json") && text.contains(expect),
+            "{text}"
+        );
+    };
+    refused(
+        &|v| {
+            v["configVersion"] = "3.0".into();
+            v["subpixelCells"] = serde_json::json!([{ "ROffsetX": 0.0 }]);
+        },
+        "configVersion \"3.0\": 'subpixelCells'",
+    );
+    refused(&|v| v["CellPatternMode"] = 2.0.into(), "'CellPatternMode'");
+    refused(
+        &|v| v["flipImageY"]["value"] = 1.0.into(),
+        "'flipImageY' = 1",
+    );
+    refused(&|v| v["flipSubp"]["value"] = 1.0.into(), "'flipSubp' = 1");
+    // 0 or absent is the model's own orientation.
+    for name in ["flipImageY", "flipSubp"] {
+        let mut v = json.clone();
+        v.as_object_mut().unwrap().remove(name);
+        assert!(Calibration::from_json(&v.to_string(), "v.json".as_ref()).is_ok());
+    }
+    assert!(Calibration::from_json(&json.to_string(), "v.json".as_ref()).is_ok());
+}
+
 use common::cli;
 
 #[test]

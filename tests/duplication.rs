@@ -4,7 +4,6 @@
 
 mod common;
 
-use autostereo::camera::Bounds;
 use autostereo::frame::Frame;
 use autostereo::image_io::{compare, ImageDiff, RgbImage};
 use autostereo::mesh::{Mesh, MeshBuffers};
@@ -15,11 +14,9 @@ use autostereo::render::batches::batches;
 use autostereo::render::quilt::{parse_quilt_name, QuiltLayout};
 use autostereo::render::{
     AnyRenderer, AnyScene, MeshMrt, MeshNPass, MeshTiled, Method, PointSplatter, Renderer,
-    SplatOptions, TileClip, VolumeRaycaster, VolumeScene,
+    SplatOptions, TileClip, VolumeRaycaster,
 };
 use autostereo::target::SpatialTarget;
-use autostereo::volume::{phantom, TransferFunction};
-use glam::Mat4;
 
 /// (display spec, image size): N = 1, 2, 8 (two masks, one of them per subpixel), 45.
 const DISPLAYS: &[(&str, [u32; 2])] = &[
@@ -32,16 +29,6 @@ const DISPLAYS: &[(&str, [u32; 2])] = &[
 
 fn mesh_frame(mesh: &Mesh, spec: &str, size: [u32; 2]) -> Frame {
     common::frame(mesh.bounds().unwrap(), spec, 0.15, 1.0, size)
-}
-
-/// One frame of `renderer` as an image.
-fn render<S>(renderer: &mut dyn Renderer<S>, scene: &S, frame: &Frame) -> RgbImage {
-    let ctx = common::gpu();
-    let target = SpatialTarget::new(&ctx.device, frame.size).unwrap();
-    renderer
-        .render(&ctx.device, &ctx.queue, scene, frame, &target)
-        .unwrap();
-    target.read(&ctx.device, &ctx.queue).unwrap()
 }
 
 /// `image` matches `reference` on ≥ 99.9 % of subpixels within 2/255 (diff images saved on
@@ -77,18 +64,18 @@ fn mesh_tiled_and_layered_match_the_npass() {
     for &(spec, size) in DISPLAYS {
         let frame = mesh_frame(&mesh, spec, size);
         let device = &common::gpu().device.clone();
-        let oracle = render(
+        let oracle = common::render(
             &mut MeshNPass::new(device, Method::NPass).unwrap(),
             &buffers,
             &frame,
         );
         for &clip in &clips {
             let mut tiled = MeshTiled::new(device, clip).unwrap();
-            let image = render(&mut tiled, &buffers, &frame);
+            let image = common::render(&mut tiled, &buffers, &frame);
             assert_matches(&format!("tiled-{}-{spec}", clip.name()), &image, &oracle);
         }
         let mut layered = autostereo::render::MeshLayered::new(device).unwrap();
-        let image = render(&mut layered, &buffers, &frame);
+        let image = common::render(&mut layered, &buffers, &frame);
         let name = format!("layered-{spec}");
         let diff = assert_matches(&name, &image, &oracle);
         eprintln!("{name} ({}): {diff:?}", layered.describe());
@@ -114,13 +101,13 @@ fn tiles_clip_geometry_that_leaves_the_view() {
     let frame = common::frame(bounds, "lenticular:8", 0.15, 1.0, [96, 64]);
     let device = common::gpu().device.clone();
     let buffers = MeshBuffers::new(&device, &mesh).unwrap();
-    let oracle = render(
+    let oracle = common::render(
         &mut MeshNPass::new(&device, Method::NPass).unwrap(),
         &buffers,
         &frame,
     );
     let mut tiled = MeshTiled::new(&device, TileClip::Discard).unwrap();
-    let image = render(&mut tiled, &buffers, &frame);
+    let image = common::render(&mut tiled, &buffers, &frame);
     assert_matches("tiled-wide-floor", &image, &oracle);
 }
 
@@ -156,15 +143,15 @@ fn mrt_error_is_what_the_shared_depth_buffer_explains() {
     let buffers = MeshBuffers::new(&device, &mesh).unwrap();
     for &(spec, size) in DISPLAYS {
         let frame = mesh_frame(&mesh, spec, size);
-        let oracle = render(
+        let oracle = common::render(
             &mut MeshNPass::new(&device, Method::NPass).unwrap(),
             &buffers,
             &frame,
         );
         let mut mrt = MeshMrt::new(&device).unwrap();
-        let image = render(&mut mrt, &buffers, &frame);
+        let image = common::render(&mut mrt, &buffers, &frame);
         let mut tiled = MeshTiled::new(&device, TileClip::Auto).unwrap();
-        render(&mut tiled, &buffers, &frame);
+        common::render(&mut tiled, &buffers, &frame);
         let depths = view_depths(&tiled, &frame);
         let passes = batches(frame.camera.views, mrt.views_per_pass());
         let pass_of = |v: u32| passes.iter().find(|r| r.contains(&v)).unwrap().clone();
@@ -222,10 +209,10 @@ fn points_tiled_and_layered_match_the_npass() {
     for &(spec, size) in DISPLAYS {
         let frame = common::frame(splats.bounds().unwrap(), spec, 0.15, 1.0, size);
         let mut npass = PointSplatter::new(&device, Method::NPass, options).unwrap();
-        let oracle = render(&mut npass, &scene, &frame);
+        let oracle = common::render(&mut npass, &scene, &frame);
         for method in [Method::Tiled, Method::Layered] {
             let mut renderer = PointSplatter::new(&device, method, options).unwrap();
-            let image = render(&mut renderer, &scene, &frame);
+            let image = common::render(&mut renderer, &scene, &frame);
             let name = format!("points-{method}-{spec}");
             let diff = assert_matches(&name, &image, &oracle);
             eprintln!("{name} ({}): {diff:?}", renderer.describe());
@@ -249,7 +236,7 @@ fn points_chunked_by_texture_size_match_the_npass() {
         let frame = common::frame(splats.bounds().unwrap(), spec, 0.15, 1.0, size);
         let views = frame.camera.views;
         let mut npass = PointSplatter::new(&device, Method::NPass, options).unwrap();
-        let oracle = render(&mut npass, &scene, &frame);
+        let oracle = common::render(&mut npass, &scene, &frame);
         // 16 bytes per group texel; one spare layer of slack (`ViewLayers` may add one).
         let texel = |area: u64| area * 16;
         let atlas = QuiltLayout::for_views(views, size).size();
@@ -266,7 +253,7 @@ fn points_chunked_by_texture_size_match_the_npass() {
         for (method, cap, chunks) in caps {
             let mut renderer = PointSplatter::new(&device, method, options).unwrap();
             renderer.set_max_image_bytes(cap);
-            let image = render(&mut renderer, &scene, &frame);
+            let image = common::render(&mut renderer, &scene, &frame);
             let how = renderer.describe();
             // Without multiview (GL) layered is the N-pass itself: one view's images at a time.
             let single_views = method == Method::Layered && how.contains("no multiview");
@@ -289,25 +276,17 @@ fn points_chunked_by_texture_size_match_the_npass() {
     }
 }
 
-fn head_scene() -> (VolumeScene, Bounds) {
-    let ctx = common::gpu();
-    let head = phantom::ct_head(24).unwrap();
-    let tf = TransferFunction::preset("ct-skin").unwrap();
-    let scene = VolumeScene::new(&ctx.device, &ctx.queue, &head, tf, None, Mat4::IDENTITY).unwrap();
-    (scene, head.bounds())
-}
-
 #[test]
 fn volume_tiled_and_layered_match_the_npass_exactly() {
-    let (scene, bounds) = head_scene();
+    let (scene, bounds) = common::head_scene();
     let device = common::gpu().device.clone();
     for &(spec, size) in DISPLAYS {
         let frame = common::frame(bounds, spec, 0.15, 1.0, size);
         let mut npass = VolumeRaycaster::new(&device, Method::NPass).unwrap();
-        let oracle = render(&mut npass, &scene, &frame);
+        let oracle = common::render(&mut npass, &scene, &frame);
         for method in [Method::Tiled, Method::Layered] {
             let mut renderer = VolumeRaycaster::new(&device, method).unwrap();
-            let image = render(&mut renderer, &scene, &frame);
+            let image = common::render(&mut renderer, &scene, &frame);
             // The same rays and samples: identical, not just close.
             let diff = assert_matches(&format!("volume-{method}-{spec}"), &image, &oracle);
             assert_eq!(diff.max_abs_err, 0, "volume {method} {spec}: {diff:?}");
@@ -324,7 +303,7 @@ fn quilt_out_interleaved_again_is_the_tiled_image() {
     let mesh = Mesh::torus_scene();
     let device = common::gpu().device.clone();
     let buffers = MeshBuffers::new(&device, &mesh).unwrap();
-    let (scene, bounds) = head_scene();
+    let (scene, bounds) = common::head_scene();
     let volume = AnyScene::Volume(Box::new(scene));
     let meshes = AnyScene::Mesh(buffers);
     let (splats, _) = PointCloud::torus_scene().complete(1.0).unwrap();
@@ -338,7 +317,7 @@ fn quilt_out_interleaved_again_is_the_tiled_image() {
         for &(spec, size) in &DISPLAYS[2..] {
             let frame = common::frame(bounds, spec, 0.15, 1.0, size);
             let mut tiled = AnyRenderer::new(&device, scene, Method::Tiled).unwrap();
-            let spatial = render(&mut tiled, scene, &frame);
+            let spatial = common::render(&mut tiled, scene, &frame);
             let ctx = common::gpu();
             let atlas = tiled.atlas().unwrap();
             let path = atlas

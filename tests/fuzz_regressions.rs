@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use autostereo::display::{Calibration, Display, DisplayKind};
 use autostereo::mesh::Mesh;
-use autostereo::volume::load::{parse_den, parse_nrrd};
+use autostereo::volume::load::{parse_den, parse_nrrd, parse_raw, RawSpec, SampleType};
 use autostereo::volume::TransferFunction;
 
 /// What each fuzz target does with one input (the same calls as `fuzz/fuzz_targets/*.rs`).
@@ -21,6 +21,11 @@ fn run(target: &str, data: &[u8]) {
             let dir = std::env::temp_dir().join("autostereo-fuzz-empty");
             std::fs::create_dir_all(&dir).unwrap();
             drop(parse_nrrd(data, &dir.join("fuzz.nrrd")));
+        }
+        "raw" => {
+            if let Some((spec, file)) = raw_spec(data) {
+                drop(parse_raw(file, "fuzz.raw".as_ref(), &spec));
+            }
         }
         "den" => drop(parse_den(data, "fuzz.den".as_ref())),
         "transfer" => drop(TransferFunction::parse(&text)),
@@ -79,6 +84,32 @@ fn run(target: &str, data: &[u8]) {
     }
 }
 
+/// The raw target's description from the first 12 bytes, and the file bytes after them.
+fn raw_spec(data: &[u8]) -> Option<(RawSpec, &[u8])> {
+    const KINDS: [SampleType; 8] = [
+        SampleType::U8,
+        SampleType::I8,
+        SampleType::U16,
+        SampleType::I16,
+        SampleType::U32,
+        SampleType::I32,
+        SampleType::F32,
+        SampleType::F64,
+    ];
+    if data.len() < 12 {
+        return None;
+    }
+    let half = |i: usize| u16::from_le_bytes([data[i], data[i + 1]]);
+    let spec = RawSpec {
+        dims: [half(0), half(2), half(4)].map(u32::from),
+        kind: KINDS[data[6] as usize % KINDS.len()],
+        big_endian: data[7] & 1 == 1,
+        spacing: [1.0, 1.0, 1.0 + f32::from(data[8])],
+        header_bytes: u64::from(half(10)),
+    };
+    Some((spec, &data[12..]))
+}
+
 fn inputs(kind: &str, target: &str) -> Vec<PathBuf> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("fuzz")
@@ -99,6 +130,7 @@ fn seeds_and_found_crashes_replay_without_panics() {
         "mtl",
         "ply",
         "nrrd",
+        "raw",
         "den",
         "transfer",
         "calibration",
@@ -130,6 +162,11 @@ fn seeds_are_valid_inputs() {
     }
     for file in inputs("seeds", "nrrd") {
         parse_nrrd(&std::fs::read(&file).unwrap(), &file).unwrap();
+    }
+    for file in inputs("seeds", "raw") {
+        let data = std::fs::read(&file).unwrap();
+        let (spec, bytes) = raw_spec(&data).unwrap();
+        parse_raw(bytes, &file, &spec).unwrap();
     }
     for file in inputs("seeds", "den") {
         parse_den(&std::fs::read(&file).unwrap(), &file).unwrap();

@@ -242,3 +242,30 @@ fn meshes_and_point_clouds_are_under_the_budget() {
         assert!(ok, "{command} within the default budget: {stderr}");
     }
 }
+
+/// The GPU side of the budget is a running total: every texture and buffer a render holds at
+/// once counts. The 8-view N-pass at 256² holds 2.36 MB of view layers and depth on top of
+/// 0.43 MB of target, scratch and mesh: a 2.5 MB budget passes each allocation on its own
+/// (what the per-resource check allowed) but not their sum, and 3 MB passes.
+#[test]
+fn the_gpu_budget_counts_everything_held_at_once() {
+    let run = |budget: &str| {
+        cli(&[
+            "mesh",
+            "--method",
+            "n-pass",
+            "--size",
+            "256x256",
+            "--max-memory",
+            budget,
+        ])
+    };
+    let (ok, stderr) = run("2500K");
+    assert!(!ok, "over the budget in total: {stderr}");
+    assert!(
+        stderr.contains("view layers") && stderr.contains("already held"),
+        "names what and what is held: {stderr}"
+    );
+    let (ok, stderr) = run("3M");
+    assert!(ok, "within the budget: {stderr}");
+}

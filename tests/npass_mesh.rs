@@ -27,6 +27,7 @@ fn camera(views: u32, separation: f32) -> MultiViewCamera {
         aspect: 1.0,
         near: 1.0,
         far: 40.0,
+        model: Default::default(),
     }
 }
 

@@ -197,6 +197,7 @@ fn camera_inside_the_mesh_crossing_the_near_plane() {
         aspect: SIZE[0] as f32 / SIZE[1] as f32,
         near: 0.5,
         far: 40.0,
+        model: Default::default(),
     };
     let frame = Frame::new(camera, display("hubner8"), SIZE).unwrap();
     // Some floor triangles really cross the near plane (z = −0.5).

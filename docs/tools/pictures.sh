@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Regenerate the pictures in docs/images that are renders (not benchmark plots): spatial images
-# for the paper's 8-view display (hubner8) and red/cyan anaglyphs of two of their views.
+# for the paper's 8-view display (hubner8), red/cyan anaglyphs of two of their views, and the
+# viewer's window.
 # Needs the fetched data (data/fetch). Usage: docs/tools/pictures.sh   (from the repository root)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -24,4 +25,11 @@ $bin volume --size 384x384 --out $img/volume_head_hubner8.png \
   --anaglyph $img/volume_head_anaglyph.png
 $bin volume data/fetched/brainsmall.den --rotate=-90,0,0 --size 384x384 \
   --out $img/volume_brainsmall_hubner8.png
+# The viewer's window (README "The viewer"): the built-in head, presented frames read back, in
+# a virtual X server (apt-get install -y xvfb xauth).
+shot() { xvfb-run -a "$bin" view --quit-after-frames 5 --screenshot "$img/$1.png" "${@:2}"; }
+shot viewer --size 320x320
+shot viewer_side_by_side --size 320x160 --preview side-by-side
+shot viewer_anaglyph --size 240x240 --preview anaglyph
+shot viewer_quilt --size 400x300 --preview quilt
 echo "pictures written to $img"

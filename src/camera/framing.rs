@@ -2,7 +2,7 @@
 
 use glam::{Mat4, Vec3};
 
-use super::MultiViewCamera;
+use super::{CameraModel, MultiViewCamera};
 use crate::error::{Error, Result};
 
 /// Axis-aligned bounding box in world space.
@@ -73,6 +73,7 @@ impl MultiViewCamera {
             aspect,
             near: (distance - 2.0 * radius).max(distance * 0.01),
             far: distance + 2.0 * radius,
+            model: CameraModel::Skewed,
         };
         // Only the data decides this camera: say so, rather than blame a flag never given.
         camera.validate().map_err(|e| {

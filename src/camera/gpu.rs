@@ -28,8 +28,10 @@ pub struct CameraUniform {
     pub near: f32,
     /// Far distance.
     pub far: f32,
+    /// The camera model (`CAMERA_*` in `wgsl/shared/camera.wgsl`).
+    pub model: u32,
     /// Padding.
-    pub _pad: [f32; 3],
+    pub _pad: [f32; 2],
 }
 const _: () = assert!(std::mem::size_of::<CameraUniform>() == 176);
 crate::shader::gpu_layout!(
@@ -44,7 +46,8 @@ crate::shader::gpu_layout!(
         viewport,
         views,
         near,
-        far
+        far,
+        model
     ]
 );
 
@@ -61,7 +64,8 @@ impl CameraUniform {
             views: c.views,
             near: c.near,
             far: c.far,
-            _pad: [0.0; 3],
+            model: c.model.gpu(),
+            _pad: [0.0; 2],
         }
     }
 }

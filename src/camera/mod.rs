@@ -1,5 +1,7 @@
-//! Multi-view camera (docs/DESIGN.md §2): N parallel cameras offset along eye-space +x whose sheared
-//! frusta share one window on the focal plane.
+//! Multi-view camera (docs/DESIGN.md §2): N cameras offset along eye-space +x, set up by one of
+//! three models (Yalçın & Çapın): sheared frusta sharing one window on the focal plane (the
+//! default), parallel frusta with their images shifted to converge there, or cameras turned
+//! towards the focal point.
 
 mod framing;
 mod gpu;
@@ -11,6 +13,63 @@ use glam::{Mat4, Vec2, Vec3, Vec4};
 
 use crate::display::check_views;
 use crate::error::{Error, Result};
+
+/// How the N cameras at offsets `vd_i` look at the scene.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum CameraModel {
+    /// Off-axis (sheared) frusta through one shared window on the focal plane: the image a
+    /// multi-view display expects, and what every method renders by default.
+    #[default]
+    Skewed,
+    /// Unsheared parallel frusta, each image shifted horizontally by its focal-plane
+    /// disparity so the views converge on the focal plane: inside the shifted image the same
+    /// rays as `Skewed`, and the strip the shift uncovers (|vd_i| wide on the focal plane, at
+    /// the image's edge) is empty: background.
+    Parallel,
+    /// Cameras turned about their vertical axis towards the focal point (0, 0, −fd), each with
+    /// the centre's symmetric frustum: the images converge at the focal point only and show
+    /// keystone and vertical parallax (docs/DESIGN.md §2).
+    ToeIn,
+}
+
+impl CameraModel {
+    /// Every model, in the order of the CLI's `--camera`.
+    pub const ALL: [CameraModel; 3] = [Self::Skewed, Self::Parallel, Self::ToeIn];
+
+    /// The CLI name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Skewed => "skewed",
+            Self::Parallel => "parallel",
+            Self::ToeIn => "toe-in",
+        }
+    }
+
+    /// The WGSL constant (`CAMERA_*` in `wgsl/shared/camera.wgsl`).
+    pub(crate) fn gpu(self) -> u32 {
+        match self {
+            Self::Skewed => 0,
+            Self::Parallel => 1,
+            Self::ToeIn => 2,
+        }
+    }
+}
+
+impl std::str::FromStr for CameraModel {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self> {
+        Self::ALL
+            .into_iter()
+            .find(|m| m.name() == s)
+            .ok_or_else(|| Error::invalid("camera", format!("'{s}': skewed, parallel or toe-in")))
+    }
+}
+
+impl std::fmt::Display for CameraModel {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
 
 /// The centre camera plus the multi-view configuration.
 #[derive(Clone, Debug, PartialEq)]
@@ -32,6 +91,8 @@ pub struct MultiViewCamera {
     pub near: f32,
     /// Far clipping distance.
     pub far: f32,
+    /// How the views' cameras are set up.
+    pub model: CameraModel,
 }
 
 impl MultiViewCamera {
@@ -91,14 +152,35 @@ impl MultiViewCamera {
         Vec2::new(h * self.aspect, h)
     }
 
-    /// Off-axis projection (wgpu clip space, depth 0..1) of a camera at eye-space offset `vd`:
-    /// `Frustum(l, r, b, t, near, far) · Translate(−vd, 0, 0)`, `l, r = (∓W/2 − vd)·near/fd`.
+    /// Projection (wgpu clip space, depth 0..1 of the camera's own depth) of the camera at
+    /// eye-space offset `vd`. Skewed and parallel (the parallel model's shifted image is the
+    /// skewed one, cropped): `Frustum(l, r, b, t, near, far) · Translate(−vd, 0, 0)` with
+    /// `l, r = (∓W/2 − vd)·near/fd`. Toe-in: the centre's symmetric frustum
+    /// `· RotateY(−φ) · Translate(−vd, 0, 0)`, `φ = atan(vd / fd)`.
     pub fn projection_for_offset(&self, vd: f32) -> Mat4 {
         let window = self.focal_window();
         let s = self.near / self.focal_distance;
-        let (l, r) = ((-window.x * 0.5 - vd) * s, (window.x * 0.5 - vd) * s);
         let (b, t) = (-window.y * 0.5 * s, window.y * 0.5 * s);
-        frustum(l, r, b, t, self.near, self.far) * Mat4::from_translation(Vec3::new(-vd, 0.0, 0.0))
+        let to_camera = Mat4::from_translation(Vec3::new(-vd, 0.0, 0.0));
+        if self.model == CameraModel::ToeIn {
+            let (l, r) = (-window.x * 0.5 * s, window.x * 0.5 * s);
+            let turn = Mat4::from_rotation_y(-self.toe_in_angle(vd));
+            return frustum(l, r, b, t, self.near, self.far) * turn * to_camera;
+        }
+        let (l, r) = ((-window.x * 0.5 - vd) * s, (window.x * 0.5 - vd) * s);
+        frustum(l, r, b, t, self.near, self.far) * to_camera
+    }
+
+    /// The toe-in camera at offset `vd`'s turn about +y towards the focal point, radians:
+    /// `atan(vd / fd)` (a camera right of the centre turns left).
+    pub fn toe_in_angle(&self, vd: f32) -> f32 {
+        vd.atan2(self.focal_distance)
+    }
+
+    /// Whether the camera at `vd` sees the focal-plane abscissa `x_f` (the parallel model's
+    /// shifted image covers `|x_f − vd| ≤ W/2`; the other models see their whole image).
+    pub fn sees(&self, vd: f32, x_f: f32) -> bool {
+        self.model != CameraModel::Parallel || (x_f - vd).abs() <= 0.5 * self.focal_window().x
     }
 
     /// Projection of view `i` (eye space → clip space).
@@ -106,9 +188,17 @@ impl MultiViewCamera {
         self.projection_for_offset(self.view_offset(i))
     }
 
-    /// Closed form of the projection of eye-space point `p` by a camera at offset `vd`, in
-    /// focal-plane coordinates: `x_f = p.x·fd/d + vd·(1 − fd/d)`, `y_f = p.y·fd/d`, `d = −p.z`.
+    /// Closed form of the projection of eye-space point `p` by the camera at offset `vd`, in
+    /// the focal-plane coordinates of its image. Skewed and parallel: `x_f = p.x·fd/d +
+    /// vd·(1 − fd/d)`, `y_f = p.y·fd/d`, `d = −p.z`. Toe-in: `q = RotateY(−φ)·(p − (vd, 0, 0))`,
+    /// `(x_f, y_f) = q.xy·fd/(−q.z)`, so `y_f = p.y·fd / (d·cos φ − (p.x − vd)·sin φ)`: the
+    /// vertical parallax of a point off the vertical centre line.
     pub fn project_offset(&self, vd: f32, p: Vec3) -> Vec2 {
+        if self.model == CameraModel::ToeIn {
+            let q = Mat4::from_rotation_y(-self.toe_in_angle(vd))
+                .transform_point3(p - Vec3::new(vd, 0.0, 0.0));
+            return q.truncate() * (self.focal_distance / -q.z);
+        }
         let d = -p.z;
         let k = self.focal_distance / d;
         Vec2::new(p.x * k + vd * (1.0 - k), p.y * k)

@@ -72,6 +72,33 @@ impl Calibration {
                 .filter(|x| x.is_finite())
                 .ok_or_else(|| err(format!("field '{name}' is not a finite number: {v}")))
         };
+        // The newer format (configVersion "3.0", Looking Glass Go / 16" / 32" Spatial
+        // Displays) describes each lens cell's subpixel layout instead of one RGB stripe; the
+        // interleaving here is the 1.x model (one pitch, slope and centre for every subpixel).
+        for name in ["subpixelCells", "CellPatternMode"] {
+            if json.get(name).is_some() {
+                let version = json
+                    .get("configVersion")
+                    .map_or("?".into(), |v| v.to_string());
+                return Err(err(format!(
+                    "configVersion {version}: '{name}' (per-cell subpixel layouts of the newer \
+                     calibration format) is not supported; only the 1.x model of one pitch, \
+                     slope and center is"
+                )));
+            }
+        }
+        // Orientation flags the 1.x model does not cover: refused rather than ignored, so a
+        // panel mounted upside down or with BGR subpixels never gets a wrong mask silently.
+        for (name, meaning) in [
+            ("flipImageY", "a vertically flipped panel"),
+            ("flipSubp", "reversed subpixel order"),
+        ] {
+            if json.get(name).is_some() && field(name)? != 0.0 {
+                return Err(err(format!(
+                    "field '{name}' = 1 ({meaning}) is not supported; only 0"
+                )));
+            }
+        }
         let calibration = Self {
             pitch: field("pitch")?,
             slope: field("slope")?,

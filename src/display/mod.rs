@@ -37,6 +37,14 @@ pub enum DisplayKind {
         /// Phase φ in subpixels.
         phase: f64,
     },
+    /// Every pixel shows view `view` of N: a 2D monitor showing one view. Any method then
+    /// renders that one view at full resolution (per-view images, stereo outputs, pictures).
+    OneView {
+        /// Number of views N of the camera.
+        views: u32,
+        /// The view shown, 0 … N − 1.
+        view: u32,
+    },
     /// A Looking Glass calibration (`visual.json`), mapped onto the slanted model.
     LookingGlass {
         /// Number of views N (the quilt's view count; not in the calibration).
@@ -75,7 +83,7 @@ impl Display {
         Ok(display)
     }
 
-    /// Parse a SPEC string: `hubner8` | `lenticular:N` | `slanted:N,PITCH,SLANT,PHASE` | `lkg:PATH.json`.
+    /// Parse a SPEC string: `hubner8` | `lenticular:N` | `slanted:N,PITCH,SLANT,PHASE` | `lkg:PATH.json` | `view:N,V`.
     /// Numbers in `slanted` may be fractions (`2/3`).
     pub fn parse(spec: &str) -> Result<Self> {
         Self::new(spec::parse_kind(spec)?)
@@ -85,6 +93,7 @@ impl Display {
     pub fn views(&self) -> u32 {
         match &self.kind {
             DisplayKind::Lenticular { views }
+            | DisplayKind::OneView { views, .. }
             | DisplayKind::Slanted { views, .. }
             | DisplayKind::LookingGlass { views, .. } => *views,
             DisplayKind::Hubner8 => 8,
@@ -101,7 +110,10 @@ impl Display {
     }
 
     fn subpixel(&self) -> bool {
-        !matches!(self.kind, DisplayKind::Lenticular { .. })
+        !matches!(
+            self.kind,
+            DisplayKind::Lenticular { .. } | DisplayKind::OneView { .. }
+        )
     }
 
     /// Set the view count where the display leaves it open (Looking Glass); elsewhere `n` must
@@ -143,7 +155,13 @@ impl Display {
                 check_slanted(s.pitch, s.slant, s.phase)
                     .map_err(|e| Error::invalid("Looking Glass calibration", e.to_string()))
             }
-            DisplayKind::Lenticular { .. } | DisplayKind::Hubner8 => Ok(()),
+            DisplayKind::OneView { views, view } if view >= views => Err(Error::invalid(
+                "view",
+                format!("{view}: the display has views 0…{}", views - 1),
+            )),
+            DisplayKind::Lenticular { .. } | DisplayKind::Hubner8 | DisplayKind::OneView { .. } => {
+                Ok(())
+            }
         }
     }
 
@@ -151,6 +169,16 @@ impl Display {
     pub fn mask(&self) -> Mask {
         let (pitch, slant, phase, subpixel, extra_bgr, extra_flip) = match &self.kind {
             DisplayKind::Lenticular { views } => (*views as f64, 0.0, 0.0, false, false, false),
+            // Pitch 1: the phase advances by whole periods from pixel to pixel, so every pixel
+            // has phase (V + ½)/N, i.e. view V.
+            DisplayKind::OneView { views, view } => (
+                1.0,
+                0.0,
+                (*view as f64 + 0.5) / *views as f64,
+                false,
+                false,
+                false,
+            ),
             // docs/DESIGN.md §1: Eq. 4–6 are exactly slanted(N=8, P=8, s=2/3, φ=7/6); a test proves it.
             DisplayKind::Hubner8 => (8.0, 2.0 / 3.0, 7.0 / 6.0, true, false, false),
             DisplayKind::Slanted {

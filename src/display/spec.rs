@@ -74,6 +74,22 @@ pub(super) fn parse_kind(spec: &str) -> Result<DisplayKind> {
                 phase: parse_number(spec, "phase", parts[3])?,
             })
         }
+        "view" => {
+            let parts: Vec<&str> = args.split(',').collect();
+            if parts.len() != 2 {
+                return Err(spec_error(
+                    spec,
+                    "view needs the view count and the view shown: view:N,V",
+                ));
+            }
+            let view = parts[1].trim().parse().map_err(|_| {
+                spec_error(spec, format!("view '{}' is not a whole number", parts[1]))
+            })?;
+            Ok(DisplayKind::OneView {
+                views: parse_views(spec, parts[0])?,
+                view,
+            })
+        }
         "lkg" => {
             if args.is_empty() {
                 return Err(spec_error(
@@ -116,6 +132,28 @@ mod tests {
     }
 
     #[test]
+    fn one_view_shows_its_view_everywhere() {
+        assert_eq!(
+            parse_kind("view:8,3").unwrap(),
+            DisplayKind::OneView { views: 8, view: 3 }
+        );
+        for (views, view) in [(8, 0), (8, 3), (8, 7), (45, 44), (1, 0)] {
+            let display = super::super::Display::parse(&format!("view:{views},{view}")).unwrap();
+            assert_eq!(display.views_per_pixel(), 1);
+            let mask = display.with_origin([12345, 678]).mask();
+            for (x, y, c) in [(0, 0, 0), (1, 0, 2), (4095, 17, 1), (u32::MAX / 4, 99, 0)] {
+                assert_eq!(
+                    mask.view(x, y, c),
+                    view,
+                    "view:{views},{view} at ({x}, {y}, {c})"
+                );
+            }
+        }
+        let error = super::super::Display::parse("view:8,8").unwrap_err();
+        assert!(error.to_string().contains("0…7"), "{error}");
+    }
+
+    #[test]
     fn rejects_bad_specs() {
         for spec in [
             "",
@@ -128,6 +166,8 @@ mod tests {
             "slanted:8,8,1/0,0",
             "slanted:8,abc,1,0",
             "slanted:8,8,inf,0",
+            "view:8",
+            "view:8,x",
             "lkg",
         ] {
             let err = parse_kind(spec).unwrap_err();

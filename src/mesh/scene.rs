@@ -32,6 +32,8 @@ pub struct MeshBuffers {
     pub index_count: u32,
     /// Number of vertices.
     pub vertex_count: u32,
+    /// The buffers' share of the memory budget.
+    _charge: crate::budget::GpuCharge,
 }
 
 impl MeshBuffers {
@@ -51,6 +53,10 @@ impl MeshBuffers {
             })
             .collect();
         let storage = wgpu::BufferUsages::STORAGE;
+        let charge = crate::budget::charge_gpu(
+            || format!("the mesh buffers ({} triangles)", mesh.indices.len() / 3),
+            vertex_bytes + index_bytes,
+        )?;
         Ok(Self {
             vertices: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some("mesh vertices"),
@@ -64,6 +70,7 @@ impl MeshBuffers {
             }),
             index_count: mesh.indices.len() as u32,
             vertex_count: mesh.positions.len() as u32,
+            _charge: charge,
         })
     }
 

@@ -50,6 +50,8 @@ pub struct SplatScene {
     pub bounds: Bounds,
     /// Median splat radius (scale for ε).
     pub median_radius: f32,
+    /// The buffer's share of the memory budget.
+    _charge: crate::budget::GpuCharge,
 }
 
 impl SplatScene {
@@ -78,10 +80,20 @@ impl SplatScene {
             format!("splat buffer bytes ({} splats × 32)", splats.len()),
             bytes,
         )?;
+        let charge = crate::budget::charge_gpu(
+            || format!("the splat buffer ({} splats × 32 bytes)", splats.len()),
+            bytes,
+        )?;
         let start = Instant::now();
         let grouping = groups::assign(splats, count);
         let grouping_ms = start.elapsed().as_secs_f64() * 1e3;
-        Ok(Self::with_grouping(device, splats, &grouping, grouping_ms))
+        Ok(Self::with_grouping(
+            device,
+            splats,
+            &grouping,
+            grouping_ms,
+            charge,
+        ))
     }
 
     /// Upload with `grouping` (made by [`groups::assign`] for these `splats`).
@@ -90,6 +102,7 @@ impl SplatScene {
         splats: &Splats,
         grouping: &Grouping,
         grouping_ms: f64,
+        charge: crate::budget::GpuCharge,
     ) -> Self {
         let sizes = grouping.sizes();
         let mut starts: Vec<u32> = sizes
@@ -125,6 +138,7 @@ impl SplatScene {
             grouping_ms,
             bounds: splats.bounds().expect("not empty"),
             median_radius: splats.median_radius(),
+            _charge: charge,
         }
     }
 

@@ -14,6 +14,7 @@ use crate::render::{Method, Renderer};
 use crate::target::SpatialTarget;
 use crate::volume::passes::VolumeRaycaster;
 use crate::volume::VolumeScene;
+use crate::warp::{ReferenceRenderer, SceneWarp, SceneWarpOptions};
 
 /// A scene of any primitive, on the GPU.
 pub enum AnyScene {
@@ -34,6 +35,19 @@ impl AnyScene {
             AnyScene::Volume(_) => "volume",
         }
     }
+}
+
+/// [`Method::Warp`] with the default options, from `references`.
+fn warp<S: ?Sized + 'static>(
+    device: &wgpu::Device,
+    references: impl ReferenceRenderer<S> + 'static,
+) -> Result<Box<dyn Renderer<S>>> {
+    let options = SceneWarpOptions::default();
+    Ok(Box::new(SceneWarp::new(
+        device,
+        Box::new(references),
+        options,
+    )?))
 }
 
 /// A renderer of one primitive, behind one type. Renders only scenes of its primitive.
@@ -63,14 +77,22 @@ impl AnyRenderer {
                 Method::Layered => Box::new(MeshLayered::new(device)?),
                 Method::Mrt => Box::new(MeshMrt::new(device)?),
                 Method::NPass | Method::SingleView => Box::new(MeshNPass::new(device, method)?),
+                Method::Warp => warp(device, MeshNPass::new(device, method)?)?,
             }),
-            AnyScene::Points(splats) => AnyRenderer::Points(Box::new(PointSplatter::new(
-                device,
-                method,
-                SplatOptions::for_scene(splats, DEFAULT_EPSILON_FRACTION),
-            )?)),
+            AnyScene::Points(splats) => {
+                let options = SplatOptions::for_scene(splats, DEFAULT_EPSILON_FRACTION);
+                let splatter = PointSplatter::new(device, method, options)?;
+                AnyRenderer::Points(match method {
+                    Method::Warp => warp(device, splatter)?,
+                    _ => Box::new(splatter),
+                })
+            }
             AnyScene::Volume(_) => {
-                AnyRenderer::Volume(Box::new(VolumeRaycaster::new(device, method)?))
+                let raycaster = VolumeRaycaster::new(device, method)?;
+                AnyRenderer::Volume(match method {
+                    Method::Warp => warp(device, raycaster)?,
+                    _ => Box::new(raycaster),
+                })
             }
         })
     }

@@ -37,20 +37,20 @@ impl Atlas {
                 limit: limit.into(),
             });
         }
-        let bytes = size[0] as u64 * size[1] as u64 * if with_depth { 8 } else { 4 };
-        crate::budget::check(|| format!("a {}x{} quilt atlas", size[0], size[1]), bytes)?;
         let usage = wgpu::TextureUsages::RENDER_ATTACHMENT
             | wgpu::TextureUsages::TEXTURE_BINDING
             | wgpu::TextureUsages::STORAGE_BINDING
             | wgpu::TextureUsages::COPY_SRC
             | wgpu::TextureUsages::COPY_DST;
         let scope = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
-        let color = texture_2d(device, "quilt atlas", size, SPATIAL_FORMAT, usage);
-        let depth = with_depth.then(|| {
-            let usage =
-                wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
-            texture_2d(device, "quilt atlas depth", size, DEPTH_FORMAT, usage)
-        });
+        let color = texture_2d(device, "quilt atlas", size, SPATIAL_FORMAT, usage)?;
+        let depth = with_depth
+            .then(|| {
+                let usage =
+                    wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
+                texture_2d(device, "quilt atlas depth", size, DEPTH_FORMAT, usage)
+            })
+            .transpose()?;
         if let Some(e) = pollster::block_on(scope.pop()) {
             return Err(Error::Gpu {
                 operation: format!("allocating a {}x{} quilt atlas", size[0], size[1]),
@@ -138,6 +138,15 @@ impl Atlas {
     }
 }
 
+/// How tiles of another size than the spatial image are sampled when compositing.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TileSampling {
+    /// The texel whose centre is nearest (quilts from files: what Looking Glass software does).
+    Nearest,
+    /// Bilinear within the tile (the view images of `Frame::view_scale`).
+    Bilinear,
+}
+
 /// Compositing from an atlas into the spatial image.
 pub struct AtlasCompositor {
     pipeline: wgpu::RenderPipeline,
@@ -166,7 +175,8 @@ impl AtlasCompositor {
         Ok(Self { pipeline, layout })
     }
 
-    /// Record the compositing of `atlas` into `target` with `frame`'s mask.
+    /// Record the compositing of `atlas` into `target` with `frame`'s mask, tiles of another
+    /// size than the target sampled as `sampling` says.
     pub fn encode(
         &self,
         device: &wgpu::Device,
@@ -174,8 +184,12 @@ impl AtlasCompositor {
         frame: &FrameBinding,
         atlas: &Atlas,
         target: &SpatialTarget,
+        sampling: TileSampling,
     ) {
-        let quilt = atlas.layout.uniform_buffer(device);
+        let uniform = atlas
+            .layout
+            .uniform_for_panel(target.size(), sampling == TileSampling::Bilinear);
+        let quilt = atlas.layout.uniform_buffer(device, uniform);
         let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("composite atlas"),
             layout: &self.layout,
@@ -238,8 +252,14 @@ impl QuiltInterleaver {
             ));
         }
         self.frame.write(device, frame);
-        self.compositor
-            .encode(device, encoder, &self.frame, atlas, target);
+        self.compositor.encode(
+            device,
+            encoder,
+            &self.frame,
+            atlas,
+            target,
+            TileSampling::Nearest,
+        );
         Ok(())
     }
 

@@ -31,7 +31,7 @@ pub fn read_depth(
     let pipeline = fullscreen_pipeline(device, "depth readback", &module, &[Some(&layout)], format);
     let size = [texture.width(), texture.height()];
     let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC;
-    let image = texture_2d(device, "depth readback", size, format, usage);
+    let image = texture_2d(device, "depth readback", size, format, usage)?;
     let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
         label: Some("depth readback"),
         layout: &layout,

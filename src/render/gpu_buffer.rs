@@ -42,6 +42,8 @@ pub(crate) struct GpuBuffer {
     usage: wgpu::BufferUsages,
     buffer: Option<wgpu::Buffer>,
     used: u64,
+    /// The buffer's share of the memory budget.
+    charge: Option<crate::budget::GpuCharge>,
 }
 
 impl GpuBuffer {
@@ -51,6 +53,7 @@ impl GpuBuffer {
             usage,
             buffer: None,
             used: 0,
+            charge: None,
         }
     }
 
@@ -62,13 +65,16 @@ impl GpuBuffer {
         what: impl FnOnce() -> String,
         bytes: u64,
     ) -> Result<()> {
+        let what = what();
         if self.usage.contains(wgpu::BufferUsages::STORAGE) {
-            check_storage_bytes(device, what(), bytes)?;
+            check_storage_bytes(device, what.clone(), bytes)?;
         }
         let bytes = bytes.max(MIN_BYTES);
         let capacity = self.buffer.as_ref().map_or(0, |b| b.size());
         if bytes > capacity || bytes < capacity / 4 {
-            self.buffer = None; // free before allocating the replacement
+            // Free before allocating (and charging) the replacement.
+            (self.buffer, self.charge) = (None, None);
+            self.charge = Some(crate::budget::charge_gpu(|| what, bytes)?);
             self.buffer = Some(device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some(self.label),
                 size: bytes,

@@ -47,13 +47,13 @@ impl MaskImageRenderer {
         let mut uniform: FrameUniform = bytemuck::Zeroable::zeroed();
         uniform.set_mask(display.mask().uniform());
         self.frame.write_uniform(device, &uniform);
-        let Texture2d { texture, view } = texture_2d(
+        let Texture2d { texture, view, .. } = texture_2d(
             device,
             "mask image",
             size,
             FORMAT,
             wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
-        );
+        )?;
         let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
             label: Some("mask image"),
         });

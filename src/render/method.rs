@@ -27,17 +27,23 @@ pub enum Method {
     /// one depth buffer. Views of one draw occlude each other through that buffer: an
     /// approximation, measured against the N-pass.
     Mrt,
+    /// Beck et al.: R reference views rendered with their depth (N-pass of R views), every
+    /// view synthesised by warping them, holes filled from the background side
+    /// ([`crate::warp::SceneWarp`]; R = [`crate::warp::DEFAULT_REFERENCES`] unless its options
+    /// say otherwise). An approximation, measured against the N-pass.
+    Warp,
 }
 
 impl Method {
     /// Every method, in the order the tools list them.
-    pub const ALL: [Method; 6] = [
+    pub const ALL: [Method; 7] = [
         Method::SinglePass,
         Method::NPass,
         Method::SingleView,
         Method::Tiled,
         Method::Layered,
         Method::Mrt,
+        Method::Warp,
     ];
 
     /// The per-view duplication methods (one draw renders every view's copy).
@@ -52,6 +58,7 @@ impl Method {
             Method::Tiled => "tiled",
             Method::Layered => "layered",
             Method::Mrt => "mrt",
+            Method::Warp => "warp",
         }
     }
 }

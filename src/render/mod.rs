@@ -5,6 +5,7 @@
 //! - [`mask_image`]: the display mask as a view-index image (GPU side of the mask oracle).
 //! - [`composite`]: N per-view layers → spatial image (every N-pass method).
 //! - [`output`]: the spatial image into a caller's texture or surface (BGRA8, sRGB…).
+//! - [`stereo`]: two eyes' views into anaglyph, side-by-side, top-bottom or interlaced images.
 //! - [`quilt`], [`atlas`]: the Looking Glass quilt layout, the atlas the tiled methods render
 //!   into (and quilt files are read into), and its compositing.
 //! - [`ViewLayers`]: the per-view (or per-group) layers those passes render into.
@@ -19,6 +20,7 @@
 mod any;
 pub mod atlas;
 pub mod batches;
+pub(crate) mod camera_crop;
 pub mod composite;
 pub(crate) mod depth_readback;
 pub(crate) mod dispatch;
@@ -33,6 +35,7 @@ pub(crate) mod pipeline_cache;
 pub mod quilt;
 mod renderer;
 pub(crate) mod specialize;
+pub mod stereo;
 pub(crate) mod storage_fence;
 pub(crate) mod texture;
 pub(crate) mod view_layers;
@@ -44,6 +47,7 @@ pub use method::Method;
 pub use output::{OutputBlit, OUTPUT_FORMATS};
 pub use renderer::Renderer;
 pub(crate) use renderer::{begin_prepare, check_prepared, check_target};
+pub use stereo::{StereoCompositor, StereoFormat};
 pub use view_layers::ViewLayers;
 
 pub use crate::mesh::passes::{

@@ -22,12 +22,14 @@ impl NPassHarness {
         })
     }
 
-    /// Layers for `frame`'s size and views (reallocated only when those change).
+    /// Layers for `frame`'s view images (its [`Frame::view_size`]) and views (reallocated
+    /// only when those change). The views are drawn with [`Frame::for_view_images`].
     pub fn prepare(&mut self, device: &wgpu::Device, frame: &Frame) -> Result<()> {
-        let fits = |l: &ViewLayers| l.size() == frame.size && l.layers() == frame.camera.views;
+        let size = frame.view_size();
+        let fits = |l: &ViewLayers| l.size() == size && l.layers() == frame.camera.views;
         if !self.layers.as_ref().is_some_and(fits) {
             self.layers = None; // free before allocating the replacement
-            self.layers = Some(ViewLayers::new(device, frame.size, frame.camera.views)?);
+            self.layers = Some(ViewLayers::new(device, size, frame.camera.views)?);
         }
         Ok(())
     }
@@ -50,7 +52,14 @@ impl NPassHarness {
         frame: &FrameBinding,
         target: &SpatialTarget,
     ) {
-        self.compositor
-            .encode(device, encoder, frame, &self.layers().array_view, target);
+        let layers = self.layers();
+        self.compositor.encode(
+            device,
+            encoder,
+            frame,
+            &layers.array_view,
+            layers.size(),
+            target,
+        );
     }
 }

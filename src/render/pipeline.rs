@@ -20,6 +20,26 @@ pub(crate) fn fullscreen_pipeline_with(
     format: wgpu::TextureFormat,
     constants: &[(&str, f64)],
 ) -> wgpu::RenderPipeline {
+    fullscreen_pipeline_to(
+        device,
+        label,
+        module,
+        layouts,
+        ("fs_main", &[Some(format.into())]),
+        constants,
+    )
+}
+
+/// [`fullscreen_pipeline_with`] of fragment entry point `fragment.0` writing the targets
+/// `fragment.1` (several render targets).
+pub(crate) fn fullscreen_pipeline_to(
+    device: &wgpu::Device,
+    label: &str,
+    module: &wgpu::ShaderModule,
+    layouts: &[Option<&wgpu::BindGroupLayout>],
+    fragment: (&str, &[Option<wgpu::ColorTargetState>]),
+    constants: &[(&str, f64)],
+) -> wgpu::RenderPipeline {
     let options = compilation(constants);
     let layout = pipeline_layout(device, label, layouts);
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
@@ -36,9 +56,9 @@ pub(crate) fn fullscreen_pipeline_with(
         multisample: wgpu::MultisampleState::default(),
         fragment: Some(wgpu::FragmentState {
             module,
-            entry_point: Some("fs_main"),
+            entry_point: Some(fragment.0),
             compilation_options: options,
-            targets: &[Some(format.into())],
+            targets: fragment.1,
         }),
         multiview_mask: None,
         cache: None,

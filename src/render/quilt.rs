@@ -14,10 +14,16 @@ pub struct QuiltUniform {
     pub grid: [u32; 2],
     /// Size of one tile in texels.
     pub tile: [u32; 2],
+    /// The spatial image's size when compositing (the tile's otherwise).
+    pub panel: [u32; 2],
+    /// Compositing: 1 = up-sample tiles bilinearly, 0 = nearest texel.
+    pub bilinear: u32,
+    /// Padding.
+    pub _pad: u32,
 }
 
-crate::shader::gpu_layout!(QuiltUniform, "Quilt", [grid, tile]);
-const _: () = assert!(std::mem::size_of::<QuiltUniform>() == 16);
+crate::shader::gpu_layout!(QuiltUniform, "Quilt", [grid, tile, panel, bilinear]);
+const _: () = assert!(std::mem::size_of::<QuiltUniform>() == 32);
 
 /// A grid of `cols × rows` tiles of `tile` texels holding `views` views.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -145,21 +151,34 @@ impl QuiltLayout {
         self.tile[0] as f32 / self.tile[1] as f32
     }
 
-    /// The GPU form.
+    /// The GPU form (panel = one tile, nearest texel).
     pub fn uniform(&self) -> QuiltUniform {
+        self.uniform_for_panel(self.tile, false)
+    }
+
+    /// The GPU form for compositing onto a `panel`-sized image, tiles up-sampled bilinearly
+    /// or by the nearest texel.
+    pub fn uniform_for_panel(&self, panel: [u32; 2], bilinear: bool) -> QuiltUniform {
         QuiltUniform {
             grid: [self.cols, self.rows],
             tile: self.tile,
+            panel,
+            bilinear: u32::from(bilinear),
+            _pad: 0,
         }
     }
 
-    /// [`QuiltLayout::uniform`] in a uniform buffer of its own (for one frame's bind group).
-    pub(crate) fn uniform_buffer(&self, device: &wgpu::Device) -> wgpu::Buffer {
+    /// `uniform` in a uniform buffer of its own (for one frame's bind group).
+    pub(crate) fn uniform_buffer(
+        &self,
+        device: &wgpu::Device,
+        uniform: QuiltUniform,
+    ) -> wgpu::Buffer {
         crate::render::pass_params::constants_buffer(
             device,
             "quilt layout",
             wgpu::BufferUsages::UNIFORM,
-            bytemuck::bytes_of(&self.uniform()),
+            bytemuck::bytes_of(&uniform),
         )
     }
 

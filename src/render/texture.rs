@@ -1,19 +1,26 @@
 //! 2D textures the passes allocate for themselves (depth buffers, id targets, scratch images).
 
-/// A texture and its default view.
+use crate::budget::{charge_gpu, texel_bytes, GpuCharge};
+use crate::error::Result;
+
+/// A texture, its default view and its share of the memory budget.
 pub(crate) struct Texture2d {
     pub texture: wgpu::Texture,
     pub view: wgpu::TextureView,
+    pub charge: GpuCharge,
 }
 
-/// Create a single-mip, single-sample 2D texture of `size` and its default view.
+/// Create a single-mip, single-sample 2D texture of `size` and its default view, charged to
+/// the memory budget (`label` names it when over).
 pub(crate) fn texture_2d(
     device: &wgpu::Device,
     label: &str,
     size: [u32; 2],
     format: wgpu::TextureFormat,
     usage: wgpu::TextureUsages,
-) -> Texture2d {
+) -> Result<Texture2d> {
+    let bytes = u64::from(size[0]) * u64::from(size[1]) * texel_bytes(format);
+    let charge = charge_gpu(|| format!("{label} of {}x{}", size[0], size[1]), bytes)?;
     let texture = device.create_texture(&wgpu::TextureDescriptor {
         label: Some(label),
         size: wgpu::Extent3d {
@@ -29,7 +36,11 @@ pub(crate) fn texture_2d(
         view_formats: &[],
     });
     let view = texture.create_view(&Default::default());
-    Texture2d { texture, view }
+    Ok(Texture2d {
+        texture,
+        view,
+        charge,
+    })
 }
 
 /// The view of `slot`, (re)allocated when missing or of another size.
@@ -40,15 +51,15 @@ pub(crate) fn cached_texture_2d<'a>(
     size: [u32; 2],
     format: wgpu::TextureFormat,
     usage: wgpu::TextureUsages,
-) -> &'a wgpu::TextureView {
+) -> Result<&'a wgpu::TextureView> {
     if slot
         .as_ref()
         .is_none_or(|t| [t.texture.width(), t.texture.height()] != size)
     {
         *slot = None; // free before allocating the replacement
-        *slot = Some(texture_2d(device, label, size, format, usage));
+        *slot = Some(texture_2d(device, label, size, format, usage)?);
     }
-    &slot.as_ref().expect("allocated above").view
+    Ok(&slot.as_ref().expect("allocated above").view)
 }
 
 /// A bind-group-layout entry for a non-filtered `texture_2d<f32>` read with `textureLoad`.

@@ -14,6 +14,8 @@ pub struct ViewLayers {
     pub layer_views: Vec<wgpu::TextureView>,
     /// Depth buffer reused by every view pass.
     pub depth_view: wgpu::TextureView,
+    /// Their share of the memory budget.
+    _charge: crate::budget::GpuCharge,
 }
 
 /// Depth format of every mesh pass.
@@ -65,9 +67,9 @@ impl ViewLayers {
                 limit: limit.into(),
             });
         }
-        let texel = format.block_copy_size(None).unwrap_or(16) as u64;
+        let texel = crate::budget::texel_bytes(format);
         let bytes = size[0] as u64 * size[1] as u64 * (texel * allocated as u64 + 4);
-        crate::budget::check(
+        let charge = crate::budget::charge_gpu(
             || {
                 format!(
                     "{layers} {what} of {}x{} ({format:?}) and their depth",
@@ -132,6 +134,7 @@ impl ViewLayers {
             array_view,
             layer_views,
             depth_view: depth.create_view(&Default::default()),
+            _charge: charge,
         })
     }
 
@@ -153,19 +156,30 @@ impl ViewLayers {
     }
 }
 
+/// A depth array texture and its share of the memory budget.
+pub(crate) struct DepthArray {
+    pub texture: wgpu::Texture,
+    _charge: crate::budget::GpuCharge,
+}
+
 /// A depth array of `layers` layers of `size` (multiview passes: one depth layer per view
 /// layer), reusing `slot` when it already fits.
 pub(crate) fn depth_array<'a>(
-    slot: &'a mut Option<wgpu::Texture>,
+    slot: &'a mut Option<DepthArray>,
     device: &wgpu::Device,
     size: [u32; 2],
     layers: u32,
-) -> &'a wgpu::Texture {
-    let fits =
-        |d: &wgpu::Texture| [d.width(), d.height()] == size && d.depth_or_array_layers() == layers;
+) -> Result<&'a wgpu::Texture> {
+    let fits = |d: &DepthArray| {
+        let d = &d.texture;
+        [d.width(), d.height()] == size && d.depth_or_array_layers() == layers
+    };
     if !slot.as_ref().is_some_and(fits) {
         *slot = None; // free before allocating the replacement
-        *slot = Some(device.create_texture(&wgpu::TextureDescriptor {
+        let bytes = u64::from(size[0]) * u64::from(size[1]) * u64::from(layers) * 4;
+        let what = || format!("{layers} depth layers of {}x{}", size[0], size[1]);
+        let charge = crate::budget::charge_gpu(what, bytes)?;
+        let texture = device.create_texture(&wgpu::TextureDescriptor {
             label: Some("multiview depth"),
             size: wgpu::Extent3d {
                 width: size[0],
@@ -178,9 +192,13 @@ pub(crate) fn depth_array<'a>(
             format: DEPTH_FORMAT,
             usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
             view_formats: &[],
-        }));
+        });
+        *slot = Some(DepthArray {
+            texture,
+            _charge: charge,
+        });
     }
-    slot.as_ref().expect("allocated above")
+    Ok(&slot.as_ref().expect("allocated above").texture)
 }
 
 /// Layers `first .. first + count` of `texture` as one array view (a multiview attachment).

@@ -16,6 +16,7 @@ use crate::render::pipeline::{
 use crate::render::texture::texture_2d_layout_entry;
 use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
+pub use crate::warp::WarpPath;
 
 /// Parallax of depthiness 1: a point at nearness 1 with the focus at 0 shifts by this share
 /// of the image width in the outermost views (either way: 6 % between them).
@@ -25,18 +26,6 @@ pub const PARALLAX_PER_DEPTHINESS: f32 = 0.03;
 /// disocclusion: the hole between them is filled from the far one. Slopes that stretch the
 /// surface less are interpolated.
 pub const DEFAULT_HOLE_GAP: f32 = 2.0;
-
-/// Where the warp writes.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum WarpPath {
-    /// Straight into the spatial image: each subpixel warps its own view (no per-view
-    /// images).
-    #[default]
-    Direct,
-    /// Beck's way: every view warped into its own image, then the mask compositing (the
-    /// N-pass harness). The same values; N full images of work and memory.
-    PerView,
-}
 
 /// How the RGB-D image becomes views.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -227,6 +216,16 @@ impl Renderer<RgbdScene> for RgbdWarp {
         frame: &Frame,
     ) -> Result<()> {
         begin_prepare(device, frame, &mut self.prepared)?;
+        frame.check_full_views("RGB-D warp")?;
+        if frame.camera.model != crate::camera::CameraModel::Skewed {
+            return Err(crate::error::Error::invalid(
+                "camera",
+                format!(
+                    "{}: an RGB-D image is warped into skewed views only",
+                    frame.camera.model
+                ),
+            ));
+        }
         self.options.validate(frame.camera.views)?;
         if self.options.path == WarpPath::PerView {
             self.npass.prepare(device, frame)?;

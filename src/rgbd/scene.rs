@@ -26,13 +26,9 @@ impl RgbdScene {
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, image: &RgbdImage) -> Result<Self> {
         let size = image.size();
         crate::gpu::check_size_2d(device, size[0], size[1])?;
-        crate::budget::check(
-            || format!("a {}x{} RGB-D image on the GPU", size[0], size[1]),
-            size[0] as u64 * size[1] as u64 * 8,
-        )?;
         let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
-        let color = texture_2d(device, "rgbd colour", size, SPATIAL_FORMAT, usage);
-        let nearness = texture_2d(device, "rgbd nearness", size, NEARNESS_FORMAT, usage);
+        let color = texture_2d(device, "rgbd colour", size, SPATIAL_FORMAT, usage)?;
+        let nearness = texture_2d(device, "rgbd nearness", size, NEARNESS_FORMAT, usage)?;
         let rgba: Vec<u8> = image
             .color
             .data

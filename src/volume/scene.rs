@@ -17,6 +17,8 @@ pub struct VolumeTexture {
     pub texture: wgpu::Texture,
     /// Its 3D view.
     pub view: wgpu::TextureView,
+    /// Its share of the memory budget.
+    _charge: crate::budget::GpuCharge,
 }
 
 fn half4(v: [f32; 4]) -> [f16; 4] {
@@ -49,6 +51,9 @@ impl VolumeTexture {
                 limit: limit.into(),
             });
         }
+        let voxels: u64 = volume.dims.iter().map(|&d| u64::from(d)).product();
+        let what = || format!("the {:?} volume texture (RGBA16F)", volume.dims);
+        let charge = crate::budget::charge_gpu(what, voxels * 8)?;
         let texels: Vec<[f16; 4]> = volume.gradients().into_iter().map(half4).collect();
         let (texture, view) = crate::gpu::checked(device, "uploading the volume", || {
             upload(
@@ -60,7 +65,11 @@ impl VolumeTexture {
                 bytemuck::cast_slice(&texels),
             )
         })?;
-        Ok(Self { texture, view })
+        Ok(Self {
+            texture,
+            view,
+            _charge: charge,
+        })
     }
 }
 

@@ -55,13 +55,15 @@ impl TransferFunction {
     pub fn preset(name: &str) -> Result<Self> {
         let p = |s: f32, c: [f32; 4]| (s, c);
         let points = match name {
-            // Skin translucent, bone and dense structures opaque (the built-in head's values:
-            // skin 0.3, brain 0.45, lesions 0.75, bone 0.95).
+            // The skin as a thin translucent surface (the band the air-to-tissue edge passes
+            // through, so bulk soft tissue stays clear), contrast-filled vessels red, bone
+            // opaque (the built-in head's values: soft tissue 0.27–0.33, brain 0.37–0.46,
+            // arteries 0.75, bone 0.82–0.95, teeth 1).
             "ct-skin" => vec![
                 p(0.0, [0.0; 4]),
-                p(0.2, [0.9, 0.6, 0.5, 0.0]),
-                p(0.3, [0.95, 0.7, 0.6, 0.06]),
-                p(0.38, [0.9, 0.6, 0.5, 0.0]),
+                p(0.1, [0.9, 0.6, 0.5, 0.0]),
+                p(0.18, [0.95, 0.72, 0.62, 0.2]),
+                p(0.26, [0.9, 0.6, 0.5, 0.0]),
                 p(0.6, [0.8, 0.3, 0.3, 0.0]),
                 p(0.75, [0.9, 0.3, 0.2, 0.5]),
                 p(0.85, [1.0, 1.0, 0.95, 0.3]),

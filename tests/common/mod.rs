@@ -117,3 +117,35 @@ pub fn cli(args: &[&str]) -> (bool, String) {
         String::from_utf8_lossy(&out.stderr).into_owned(),
     )
 }
+
+/// The built-in CT head (24³, ct-skin) on the GPU and its bounds: the small volume the method
+/// tests compare on.
+pub fn head_scene() -> (autostereo::render::VolumeScene, autostereo::camera::Bounds) {
+    let ctx = gpu();
+    let head = autostereo::volume::phantom::ct_head(24).unwrap();
+    let tf = autostereo::volume::TransferFunction::preset("ct-skin").unwrap();
+    let scene = autostereo::render::VolumeScene::new(
+        &ctx.device,
+        &ctx.queue,
+        &head,
+        tf,
+        None,
+        glam::Mat4::IDENTITY,
+    )
+    .unwrap();
+    (scene, head.bounds())
+}
+
+/// One frame of `renderer` as an image (prepare, encode, submit, read back).
+pub fn render<S: ?Sized>(
+    renderer: &mut dyn autostereo::render::Renderer<S>,
+    scene: &S,
+    frame: &autostereo::frame::Frame,
+) -> RgbImage {
+    let ctx = gpu();
+    let target = autostereo::target::SpatialTarget::new(&ctx.device, frame.size).unwrap();
+    renderer
+        .render(&ctx.device, &ctx.queue, scene, frame, &target)
+        .unwrap();
+    target.read(&ctx.device, &ctx.queue).unwrap()
+}

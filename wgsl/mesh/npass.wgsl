@@ -25,3 +25,15 @@ fn vs_main(v: VertexIn) -> VertexOut {
 fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
     return view_shade(view, in.eye_normal, in.eye_position, in.color);
 }
+
+// A reference view of a warp (src/warp): the same colour, and the bits of the nearness fd / d.
+struct ReferenceOut {
+    @location(0) color: vec4<f32>,
+    @location(1) nearness: u32,
+}
+
+@fragment
+fn fs_reference(in: VertexOut) -> ReferenceOut {
+    let color = view_shade(view, in.eye_normal, in.eye_position, in.color);
+    return ReferenceOut(color, bitcast<u32>(frame.camera.focal_distance / -in.eye_position.z));
+}

@@ -62,6 +62,18 @@ fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
         }
         return vec4<f32>(out, 1.0);
     }
+    let blended = blend_pixel(px);
+    return vec4<f32>(select(background, blended.color, blended.seen), 1.0);
+}
+
+// Normalised colour and nearest depth of one pixel (one depth per pixel).
+struct PixelBlend {
+    color: vec3<f32>,
+    seen: vec3<bool>,
+    depth: f32,
+}
+
+fn blend_pixel(px: vec2<u32>) -> PixelBlend {
     let layers = params.groups;
     var nearest = FAR;
     for (var g = 0u; g < layers; g++) {
@@ -82,5 +94,21 @@ fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
             weight += vec3<f32>(r.y, gr.y, b.y);
         }
     }
-    return vec4<f32>(select(background, color / weight, weight > vec3<f32>(0.0)), 1.0);
+    let seen = weight > vec3<f32>(0.0);
+    return PixelBlend(color / select(vec3<f32>(1.0), weight, seen), seen, nearest);
+}
+
+// A reference view of a warp (src/warp): the same colour, and the nearness fd / d of the
+// nearest splat (0 where none was hit), as bits.
+struct ReferenceOut {
+    @location(0) color: vec4<f32>,
+    @location(1) nearness: u32,
+}
+
+@fragment
+fn fs_reference(@builtin(position) position: vec4<f32>) -> ReferenceOut {
+    let blended = blend_pixel(vec2<u32>(position.xy));
+    let color = vec4<f32>(select(frame.background.rgb, blended.color, blended.seen), 1.0);
+    let nearness = select(0.0, frame.camera.focal_distance / blended.depth, blended.depth < FAR);
+    return ReferenceOut(color, bitcast<u32>(nearness));
 }

@@ -5,6 +5,7 @@
 // further apart than `hole_gap` straddles a disocclusion, filled from its far (background)
 // sample. Where no pair reaches (the image's edges), the sample landing nearest is used.
 #import shared/frame.wgsl
+#import shared/row_warp.wgsl
 
 // Keep in sync with `WarpUniform` in src/rgbd/passes.rs.
 struct Warp {
@@ -35,66 +36,13 @@ fn view_position(v: u32) -> f32 {
     return 2.0 * f32(v) / f32(n - 1u) - 1.0;
 }
 
-fn near_at(x: i32, row: i32) -> f32 {
+// The reads shared/row_warp.wgsl makes (one image: the layer is always 0).
+fn near_at(layer: u32, x: i32, row: i32) -> f32 {
     return textureLoad(nearness, vec2<i32>(x, row), 0).r;
 }
 
-fn color_at(x: i32, row: i32) -> vec3<f32> {
+fn color_at(layer: u32, x: i32, row: i32) -> vec3<f32> {
     return textureLoad(color, vec2<i32>(x, row), 0).rgb;
-}
-
-// Reference row `row` as seen from view position t at reference column u (rgb), and whether
-// it was filled (w = 1: a disocclusion or the image's edge) rather than seen (0).
-fn warped(row: i32, u: f32, t: f32) -> vec4<f32> {
-    let k = warp.parallax * t;
-    let reach = abs(k) * max(warp.focus, 1.0 - warp.focus);
-    let last = i32(warp.reference.x) - 1;
-    let lo = clamp(i32(floor(u - reach)) - 1, 0, last);
-    let hi = clamp(i32(ceil(u + reach)) + 1, 0, last);
-    var d0 = near_at(lo, row);
-    var l0 = f32(lo) + k * (d0 - warp.focus);
-    var best = -1.0; // nearness of the winning pair
-    var value = vec3<f32>(0.0);
-    var filled = 0.0;
-    var closest = abs(l0 - u); // the fallback: the sample landing nearest u
-    var fallback = lo;
-    for (var x1 = lo + 1; x1 <= hi; x1++) {
-        let d1 = near_at(x1, row);
-        let l1 = f32(x1) + k * (d1 - warp.focus);
-        let gap = l1 - l0;
-        if (gap > 0.0 && l0 <= u && u <= l1) {
-            let f = (u - l0) / gap;
-            if (gap > warp.hole_gap) {
-                // A disocclusion: the background side fills it.
-                let far = select(x1, x1 - 1, d0 < d1);
-                let d = min(d0, d1);
-                if (d > best) {
-                    best = d;
-                    value = color_at(far, row);
-                    filled = 1.0;
-                }
-            } else {
-                let d = mix(d0, d1, f);
-                // At equal depth a seen pair beats a filled one (a hole's far sample is seen
-                // itself at the hole's edge).
-                if (d > best || (d == best && filled == 1.0)) {
-                    best = d;
-                    value = mix(color_at(x1 - 1, row), color_at(x1, row), f);
-                    filled = 0.0;
-                }
-            }
-        }
-        if (abs(l1 - u) < closest) {
-            closest = abs(l1 - u);
-            fallback = x1;
-        }
-        d0 = d1;
-        l0 = l1;
-    }
-    if (best < 0.0) {
-        return vec4<f32>(color_at(fallback, row), 1.0);
-    }
-    return vec4<f32>(value, filled);
 }
 
 @fragment
@@ -115,7 +63,9 @@ fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
             v = mask_view(frame.mask, px, c);
         }
         if (v != searched) {
-            w = warped(row, u, view_position(v));
+            let k = warp.parallax * view_position(v);
+            let found = warp_row(0u, row, u, k, warp.focus, 0.0, 1.0, warp.reference.x, warp.hole_gap);
+            w = vec4<f32>(found.color, select(0.0, 1.0, found.filled));
             searched = v;
         }
         out[c] = select(w[c], w.w, warp.hole_mask == 1u);

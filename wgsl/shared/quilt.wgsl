@@ -2,8 +2,11 @@
 // bottom → top. Keep `Quilt` in sync with `QuiltUniform` in src/render/quilt.rs.
 
 struct Quilt {
-    grid: vec2<u32>, // tiles per row, rows
-    tile: vec2<u32>, // texels of one tile
+    grid: vec2<u32>,  // tiles per row, rows
+    tile: vec2<u32>,  // texels of one tile
+    panel: vec2<u32>, // the spatial image's size, when compositing (else the tile's)
+    bilinear: u32,    // compositing: 1 = up-sample tiles bilinearly, 0 = nearest texel
+    _pad: u32,
 }
 
 // Top-left texel of view `view`'s tile (texel rows top-down).

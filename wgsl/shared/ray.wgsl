@@ -7,9 +7,8 @@ struct Ray {
 }
 
 fn view_ray(frag: vec2<f32>, view: u32) -> Ray {
-    let x = camera_focal_point(frame.camera, frag);
-    let o = vec3<f32>(view_offset(view), 0.0, 0.0);
-    return Ray(o, x - o);
+    let vd = view_offset(view);
+    return Ray(vec3<f32>(vd, 0.0, 0.0), camera_ray_direction(frame.camera, frag, vd));
 }
 
 // Barycentric slack so that rays through an edge shared by two triangles hit at least one of

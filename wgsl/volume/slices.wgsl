@@ -51,9 +51,8 @@ fn inside_box(p: vec3<f32>) -> bool {
 // The shaded segment of view `view` between this slice and the next, or 0 outside the box.
 fn view_segment(frag: vec2<f32>, view: u32, depth: f32) -> vec4<f32> {
     let fd = frame.camera.focal_distance;
-    let x = camera_focal_point(frame.camera, frag);
     let origin = vec3<f32>(view_offset(view), 0.0, 0.0);
-    let dir = x - origin;
+    let dir = camera_ray_direction(frame.camera, frag, origin.x);
     let o = (params.tex_from_eye * vec4<f32>(origin, 1.0)).xyz;
     let d = (params.tex_from_eye * vec4<f32>(dir, 0.0)).xyz;
     let t_front = o + (depth / fd) * d;

@@ -34,6 +34,14 @@ pub fn frames_parser() -> clap::builder::RangedI64ValueParser<u32> {
     clap::value_parser!(u32).range(1..=i64::from(MAX_FRAMES))
 }
 
+/// `--view-scale`: a number in (0, 1].
+pub fn parse_view_scale(s: &str) -> Result<f32, String> {
+    match s.trim().parse::<f32>() {
+        Ok(v) if v > 0.0 && v <= 1.0 => Ok(v),
+        _ => Err(format!("'{s}' is not a number in (0, 1]")),
+    }
+}
+
 /// `A,B` → [a, b].
 pub fn parse_pair(s: &str) -> Result<[u32; 2], String> {
     let (a, b) = s
@@ -50,7 +58,8 @@ pub fn parse_pair(s: &str) -> Result<[u32; 2], String> {
 /// Display selection flags.
 #[derive(clap::Args, Clone, Debug)]
 pub struct DisplayArgs {
-    /// Display: hubner8 | lenticular:N | slanted:N,PITCH,SLANT,PHASE | lkg:PATH.json
+    /// Display: hubner8 | lenticular:N | slanted:N,PITCH,SLANT,PHASE | lkg:PATH.json | view:N,V
+    /// (view V of N on every pixel: one full-resolution view by any method)
     #[arg(long, default_value = "hubner8")]
     pub display: String,
     /// Number of views (Looking Glass: the quilt's view count; others: must match the display).
@@ -124,6 +133,22 @@ pub struct CameraArgs {
     /// Vertical field of view, degrees.
     #[arg(long, default_value_t = 30.0)]
     fov: f32,
+    /// Camera model: skewed (sheared frusta sharing the focal window; what displays expect) |
+    /// parallel (unsheared, images shifted to converge on the focal plane, the uncovered
+    /// strips background) | toe-in (cameras turned to the focal point: keystone and vertical
+    /// parallax). docs/USAGE.md "Cameras".
+    #[arg(long, default_value = "skewed", value_parser = camera_model_parser())]
+    camera: autostereo::camera::CameraModel,
+}
+
+/// `--camera NAME`.
+fn camera_model_parser(
+) -> impl clap::builder::TypedValueParser<Value = autostereo::camera::CameraModel> {
+    use autostereo::camera::CameraModel;
+    clap::builder::PossibleValuesParser::new(CameraModel::ALL.map(|m| m.name())).map(|name| {
+        name.parse::<CameraModel>()
+            .expect("one of the possible values")
+    })
 }
 
 impl CameraArgs {
@@ -148,13 +173,14 @@ impl CameraArgs {
         if let Some(s) = self.focal_scale {
             camera.focal_distance *= s;
         }
+        camera.model = self.camera;
         camera.validate()?;
         Ok(camera)
     }
 }
 
 /// `--method NAME`: one of the library's [`Method`] names.
-fn method_parser() -> impl clap::builder::TypedValueParser<Value = Method> {
+pub fn method_parser() -> impl clap::builder::TypedValueParser<Value = Method> {
     clap::builder::PossibleValuesParser::new(Method::ALL.map(|m| m.name()))
         .map(|name| name.parse::<Method>().expect("one of the possible values"))
 }
@@ -169,8 +195,9 @@ pub struct RenderArgs {
     /// Image size WxH in pixels.
     #[arg(long, value_parser = parse_size, default_value = "512x512")]
     pub size: [u32; 2],
-    /// Rendering method: single-pass | n-pass | single-view | tiled | layered | mrt (the last
-    /// three duplicate the geometry per view in one draw; docs/USAGE.md compares them).
+    /// Rendering method: single-pass | n-pass | single-view | tiled | layered | mrt | warp
+    /// (tiled, layered and mrt duplicate the geometry per view in one draw; warp renders
+    /// --references views and synthesises the others; docs/USAGE.md compares them).
     #[arg(long, value_parser = method_parser(), default_value = "single-pass")]
     pub method: Method,
     /// With --method tiled: also write the atlas as a Looking Glass quilt (PNG; the name gets
@@ -183,12 +210,33 @@ pub struct RenderArgs {
     /// Timed frames (after two warm-up frames); the median is reported.
     #[arg(long, default_value_t = 1, value_parser = frames_parser())]
     pub frames: u32,
-    /// Output PNG of the spatial image.
+    /// Output PNG (of the spatial image, or of --output's format).
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// What --out holds: spatial | quilt | views | anaglyph | anaglyph-half | anaglyph-dubois |
+    /// side-by-side | side-by-side-half | top-bottom | top-bottom-half | rows | columns |
+    /// checkerboard (every format but spatial renders each view it needs with the --method).
+    #[arg(long, value_enum, default_value = "spatial")]
+    pub output: crate::output::OutputArg,
+    /// With --output quilt: the quilt's grid COLSxROWS (default: chosen for the view count;
+    /// Looking Glass software also reads e.g. 8x6 for 48 views, the last tiles empty).
+    #[arg(long = "quilt", value_name = "COLSxROWS", value_parser = parse_size)]
+    pub quilt_grid: Option<[u32; 2]>,
+    /// The left and right views of the stereo outputs (default: the two nearest the middle).
+    #[arg(long, value_parser = parse_pair)]
+    pub eyes: Option<[u32; 2]>,
+    /// Per-view resolution: the n-pass, tiled, layered and mrt methods render their view
+    /// images at S × --size (each side rounded up) and up-sample them bilinearly when
+    /// compositing; 1 = full size. In (0, 1].
+    #[arg(long, value_name = "S", default_value_t = 1.0, value_parser = parse_view_scale)]
+    pub view_scale: f32,
     /// Print one JSON object with the run's parameters and timing on stdout.
     #[arg(long)]
     pub json: bool,
+    #[command(flatten)]
+    pub warp: crate::warp_cmd::WarpArgs,
+    #[command(flatten)]
+    pub turntable: crate::turntable::TurntableArgs,
     /// CPU memory budget for loading (bytes, or with K/M/G/T; default 8G): inputs that would
     /// need more are refused before anything is allocated.
     #[arg(long, value_parser = autostereo::budget::parse_bytes)]
@@ -200,6 +248,17 @@ impl RenderArgs {
     pub fn check(&self) -> Result<()> {
         if let Some(out) = &self.out {
             check_output(out)?;
+        } else if self.output != crate::output::OutputArg::Spatial {
+            bail!(
+                "--output {} writes to --out, which is missing",
+                self.output.name()
+            );
+        }
+        if self.quilt_grid.is_some() && self.output != crate::output::OutputArg::Quilt {
+            bail!(
+                "--quilt sets the grid of --output quilt, not of --output {}",
+                self.output.name()
+            );
         }
         if let Some(quilt) = &self.quilt_out {
             check_output(quilt)?;
@@ -210,6 +269,17 @@ impl RenderArgs {
                 );
             }
         }
+        let scaled = [Method::NPass, Method::Tiled, Method::Layered, Method::Mrt];
+        if self.view_scale != 1.0 && !scaled.contains(&self.method) {
+            bail!(
+                "--view-scale {}: the {} method renders no view images to scale (only n-pass, \
+                 tiled, layered and mrt do)",
+                self.view_scale,
+                self.method
+            );
+        }
+        self.warp.check(self.method)?;
+        self.turntable.check(self.out.as_deref())?;
         if let Some(bytes) = self.max_memory {
             autostereo::budget::set_max_memory(bytes);
         }
@@ -220,6 +290,9 @@ impl RenderArgs {
     pub fn frame(&self, bounds: autostereo::camera::Bounds) -> Result<Frame> {
         let display = self.display.display()?;
         let camera = self.camera.camera(bounds, display.views(), self.size)?;
-        Ok(Frame::new(camera, display, self.size)?)
+        let mut frame = Frame::new(camera, display, self.size)?;
+        frame.view_scale = self.view_scale;
+        frame.validate()?;
+        Ok(frame)
     }
 }

@@ -5,11 +5,16 @@ mod bench;
 mod interleave_cmd;
 mod mask_cmd;
 mod mesh_cmd;
+mod output;
 mod points_cmd;
+mod progress;
 mod rgbd_cmd;
 mod run;
+mod turntable;
+mod view;
 mod views_cmd;
 mod volume_cmd;
+mod warp_cmd;
 
 use clap::{Parser, Subcommand};
 
@@ -40,6 +45,9 @@ enum Command {
     Bench(bench::BenchArgs),
     /// Render a volume (a built-in CT-like head when no file is given).
     Volume(volume_cmd::VolumeArgs),
+    /// Open a window and render live (mouse: orbit, zoom, pan; keys: m method, d display,
+    /// p preview, [ ] separation, - = focal plane, r reset, Esc quit).
+    View(view::ViewArgs),
     /// Extract what one view zone sees from a spatial image, or a red/cyan anaglyph.
     Views(views_cmd::ViewsArgs),
 }
@@ -60,6 +68,7 @@ fn main() -> std::process::ExitCode {
         Command::Interleave(a) => interleave_cmd::run(a),
         Command::Points(a) => points_cmd::run(a),
         Command::Rgbd(a) => rgbd_cmd::run(a),
+        Command::View(a) => view::run(a),
         Command::Views(a) => views_cmd::run(a),
         Command::Volume(a) => volume_cmd::run(a),
     };

@@ -10,7 +10,8 @@ use autostereo::render::{
 };
 
 use crate::args::{gpu, RenderArgs};
-use crate::run::{compare_with, report, run_fields, run_summary, save_quilt, timed};
+use crate::run::{compare_with, merge, report, run_fields, run_summary, timed};
+use crate::warp_cmd::{hole_report, warp_renderer};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum VisibilityArg {
@@ -86,12 +87,15 @@ pub fn run(args: MeshArgs) -> Result<()> {
         &frame,
         args.common.frames,
     )?;
-    if let Some(out) = &args.common.out {
-        run.image.save_png(out)?;
-    }
-    if let Some(quilt) = &args.common.quilt_out {
-        save_quilt(&ctx, renderer.as_ref(), quilt)?;
-    }
+    let turntable = crate::output::save_all(
+        &ctx,
+        renderer.as_mut(),
+        &buffers,
+        &frame,
+        bounds,
+        &args.common,
+        &run.image,
+    )?;
     let diff = if args.common.compare {
         let mut npass = MeshNPass::new(device, Method::NPass)?;
         Some(compare_with(
@@ -101,13 +105,18 @@ pub fn run(args: MeshArgs) -> Result<()> {
         None
     };
     let method_name = args.common.method.name();
-    let mut fields = run_fields(
-        &ctx,
-        &args.common,
-        &frame,
-        &run,
-        serde_json::json!({ "triangles": mesh.triangle_count() }),
-    );
+    let mut extra = serde_json::json!({ "triangles": mesh.triangle_count() });
+    if args.common.method == Method::Warp {
+        let references = MeshNPass::new(device, Method::Warp)?;
+        merge(
+            &mut extra,
+            hole_report(&ctx, &args.common.warp, references, &buffers, &frame)?,
+        );
+    }
+    if let Some(t) = &turntable {
+        merge(&mut extra, t.fields());
+    }
+    let mut fields = run_fields(&ctx, &args.common, &frame, &run, extra);
     if args.common.method == Method::SinglePass {
         fields["visibility"] = single_pass_options(device, &args).visibility.name().into();
         fields["bounds"] = format!("{:?}", args.bounds).to_lowercase().into();
@@ -140,6 +149,11 @@ fn renderer(device: &wgpu::Device, args: &MeshArgs) -> Result<Box<dyn Renderer<M
         )?),
         Method::Layered => Box::new(MeshLayered::new(device)?),
         Method::Mrt => Box::new(MeshMrt::new(device)?),
+        Method::Warp => warp_renderer(
+            device,
+            &args.common.warp,
+            MeshNPass::new(device, Method::Warp)?,
+        )?,
     })
 }
 

@@ -6,10 +6,11 @@ use std::time::Instant;
 
 use anyhow::{bail, Result};
 use autostereo::points::{GroupCount, PointCloud, SplatScene};
-use autostereo::render::{Method, PointSplatter, SplatDepth, SplatOptions};
+use autostereo::render::{Method, PointSplatter, Renderer, SplatDepth, SplatOptions};
 
 use crate::args::{gpu, RenderArgs};
-use crate::run::{compare_with, report, run_fields, run_summary, save_quilt, timed};
+use crate::run::{compare_with, merge, report, run_fields, run_summary, timed};
+use crate::warp_cmd::{hole_report, warp_renderer};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum DepthArg {
@@ -74,21 +75,38 @@ pub fn run(args: PointsArgs) -> Result<()> {
         },
         epsilon: SplatOptions::epsilon_for(&scene, args.epsilon),
     };
-    let mut renderer = PointSplatter::new(device, args.common.method, options)?;
-    let run = timed(&ctx, &mut renderer, &scene, &frame, args.common.frames)?;
-    if let Some(out) = &args.common.out {
-        run.image.save_png(out)?;
-    }
-    if let Some(quilt) = &args.common.quilt_out {
-        save_quilt(&ctx, &renderer, quilt)?;
-    }
+    let method = args.common.method;
+    let mut splatter = PointSplatter::new(device, method, options)?;
+    let mut warp = match method {
+        Method::Warp => Some(warp_renderer(
+            device,
+            &args.common.warp,
+            PointSplatter::new(device, method, options)?,
+        )?),
+        _ => None,
+    };
+    let renderer: &mut dyn Renderer<SplatScene> = match &mut warp {
+        Some(warp) => warp.as_mut(),
+        None => &mut splatter,
+    };
+    let run = timed(&ctx, renderer, &scene, &frame, args.common.frames)?;
+    let turntable = crate::output::save_all(
+        &ctx,
+        renderer,
+        &scene,
+        &frame,
+        bounds,
+        &args.common,
+        &run.image,
+    )?;
     let diff = if args.common.compare {
         let mut npass = PointSplatter::new(device, Method::NPass, options)?;
         Some(compare_with(&ctx, &mut npass, &scene, &frame, &run.image)?)
     } else {
         None
     };
-    let gpu_bytes = scene.buffer_bytes() + renderer.allocated_bytes();
+    // The warp's references are splatted by a renderer of its own (not counted here).
+    let gpu_bytes = scene.buffer_bytes() + splatter.allocated_bytes();
     let method_name = args.common.method.name();
     let extra = serde_json::json!({
         "depth": options.depth.name(),
@@ -104,6 +122,17 @@ pub fn run(args: PointsArgs) -> Result<()> {
         "median_radius": scene.median_radius,
         "gpu_bytes": gpu_bytes,
     });
+    let mut extra = extra;
+    if method == Method::Warp {
+        let references = PointSplatter::new(device, method, options)?;
+        merge(
+            &mut extra,
+            hole_report(&ctx, &args.common.warp, references, &scene, &frame)?,
+        );
+    }
+    if let Some(t) = &turntable {
+        merge(&mut extra, t.fields());
+    }
     let fields = run_fields(&ctx, &args.common, &frame, &run, extra);
     let estimated = match (completion.normals_estimated, completion.radii_estimated) {
         (false, false) => String::new(),

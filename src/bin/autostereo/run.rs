@@ -48,7 +48,8 @@ pub fn timed<S: ?Sized>(
     })
 }
 
-/// One frame of `renderer` (the N-pass oracle for `--compare`) compared with `image`.
+/// One frame of `renderer` (the N-pass oracle for `--compare`, with full-size views whatever
+/// the run's `--view-scale`) compared with `image`.
 pub fn compare_with<S: ?Sized>(
     ctx: &GpuContext,
     renderer: &mut dyn Renderer<S>,
@@ -56,8 +57,12 @@ pub fn compare_with<S: ?Sized>(
     frame: &Frame,
     image: &RgbImage,
 ) -> Result<ImageDiff> {
+    let full = Frame {
+        view_scale: 1.0,
+        ..frame.clone()
+    };
     let target = SpatialTarget::new(&ctx.device, frame.size)?;
-    renderer.render(&ctx.device, &ctx.queue, scene, frame, &target)?;
+    renderer.render(&ctx.device, &ctx.queue, scene, &full, &target)?;
     Ok(compare(image, &target.read(&ctx.device, &ctx.queue)?)?)
 }
 
@@ -101,14 +106,39 @@ pub fn run_fields(
         "adapter": ctx.adapter_label(),
         "ms": run.ms,
         "frames": common.frames,
+        "view_scale": common.view_scale,
         "timing": run.timing,
         "focal_distance": frame.camera.focal_distance,
         "separation": frame.camera.separation,
     });
-    for (k, v) in extra.as_object().into_iter().flatten() {
+    merge(&mut fields, extra);
+    fields
+}
+
+/// Tell the user how to look at the spatial image `out` without the panel: it only looks
+/// right through the display's optics (stderr, so that `--json` output stays one object).
+pub fn how_to_look(out: &Path, common: &crate::args::RenderArgs, frame: &Frame) {
+    if common.json {
+        return;
+    }
+    let n = frame.camera.views;
+    let (l, r) = ((n - 1) / 2, (n / 2).min(n - 1));
+    eprintln!(
+        "{} is interleaved for {} (it looks right only through that display). Without one: \
+         `autostereo views {} --display {} --anaglyph {l},{r} --out anaglyph.png` (red-cyan), \
+         or live in a window: `autostereo view --preview side-by-side`.",
+        out.display(),
+        common.display.display,
+        out.display(),
+        common.display.display,
+    );
+}
+
+/// Add the fields of `more` to the object `fields`.
+pub fn merge(fields: &mut serde_json::Value, more: serde_json::Value) {
+    for (k, v) in more.as_object().into_iter().flatten() {
         fields[k] = v.clone();
     }
-    fields
 }
 
 /// The end of every render command's one-line summary: views, size, speed, adapter.

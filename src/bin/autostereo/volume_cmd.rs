@@ -13,11 +13,13 @@ use autostereo::volume::{phantom, TransferFunction, Volume};
 use glam::Mat4;
 
 use crate::args::{check_output, gpu, RenderArgs};
-use crate::run::{compare_with, report, run_fields, run_summary, save_quilt, timed};
+use crate::run::{compare_with, merge, report, run_fields, run_summary, timed};
+use crate::warp_cmd::{hole_report, warp_renderer};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum Builtin {
-    /// CT-like head phantom (skin, skull, brain, ventricles, lesions; anisotropic z).
+    /// A contrast CT of a head and neck: face, skull, teeth, spine, arteries, folded brain
+    /// (anisotropic z).
     Head,
     /// The Marschner–Lobb test signal.
     Ml,
@@ -210,6 +212,11 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     scene.shade = !args.no_shading;
     scene.skip_empty = !args.no_skip_empty;
     let mut renderer: Box<dyn Renderer<VolumeScene>> = match args.path {
+        PathArg::Compute if args.common.method == Method::Warp => warp_renderer(
+            &ctx.device,
+            &args.common.warp,
+            raycaster(&ctx.device, Method::Warp)?,
+        )?,
         PathArg::Compute => Box::new(raycaster(&ctx.device, args.common.method)?),
         PathArg::Slices => Box::new(VolumeSlicer::new(
             &ctx.device,
@@ -220,12 +227,15 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         )?),
     };
     let run = timed(&ctx, renderer.as_mut(), &scene, &frame, args.common.frames)?;
-    if let Some(out) = &args.common.out {
-        run.image.save_png(out)?;
-    }
-    if let Some(quilt) = &args.common.quilt_out {
-        save_quilt(&ctx, renderer.as_ref(), quilt)?;
-    }
+    let turntable = crate::output::save_all(
+        &ctx,
+        renderer.as_mut(),
+        &scene,
+        &frame,
+        bounds,
+        &args.common,
+        &run.image,
+    )?;
     if let Some(path) = &args.anaglyph {
         let n = frame.camera.views;
         let (l, r) = (n.saturating_sub(1) / 2, (n / 2).min(n - 1));
@@ -254,6 +264,17 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         "skip_empty": scene.skip_empty && matches!(args.path, PathArg::Compute),
         "transparent_bricks": scene.bricks().transparent_share(&scene.transfer),
     });
+    let mut extra = extra;
+    if args.common.method == Method::Warp {
+        let references = raycaster(&ctx.device, Method::Warp)?;
+        merge(
+            &mut extra,
+            hole_report(&ctx, &args.common.warp, references, &scene, &frame)?,
+        );
+    }
+    if let Some(t) = &turntable {
+        merge(&mut extra, t.fields());
+    }
     let fields = run_fields(&ctx, &args.common, &frame, &run, extra);
     let summary = format!(
         "{method}: volume {:?}, {}",

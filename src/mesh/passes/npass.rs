@@ -1,5 +1,6 @@
 //! The mesh baselines: N-pass (one ordinary render per view into its own layer, then mask
-//! compositing) and single view (the centre camera straight into the target).
+//! compositing) and single view (the centre camera straight into the target); and, with the
+//! same passes, a warp's reference views with their nearness (src/warp).
 //! Shading is `wgsl/shared/shading.wgsl`, the same the single-pass path uses.
 
 use crate::camera::ViewUniform;
@@ -8,13 +9,14 @@ use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
 use crate::mesh::MeshBuffers;
 use crate::render::npass::NPassHarness;
 use crate::render::pass_params::PassParams;
-use crate::render::pipeline::{begin_pass, cleared};
+use crate::render::pipeline::{begin_pass_to, cleared, PassTargets};
 use crate::render::texture::{cached_texture_2d, Texture2d};
 use crate::render::view_layers::{nearest_depth_test, DEPTH_FORMAT};
 use crate::render::Method;
 use crate::render::ViewLayers;
 use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
+use crate::warp::references::{ReferenceImages, ReferenceRenderer, NEARNESS_FORMAT};
 
 /// N-pass or single-view mesh renderer. Holds pipelines and lazily sized scratch resources.
 pub struct MeshNPass {
@@ -28,16 +30,21 @@ pub struct MeshNPass {
     views: PassParams<ViewUniform>,
     view_group: Option<wgpu::BindGroup>,
     prepared: Option<PreparedFor>,
+    /// The parallel camera model's crop, recorded last.
+    crop: crate::render::camera_crop::CameraCrop,
 }
 
 impl MeshNPass {
     /// Build the pipelines for `method`: [`Method::NPass`] or [`Method::SingleView`] (the mesh
     /// single pass is [`crate::mesh::passes::MeshSinglePass`]).
     pub fn new(device: &wgpu::Device, method: Method) -> Result<Self> {
-        if !matches!(method, Method::NPass | Method::SingleView) {
+        if !matches!(method, Method::NPass | Method::SingleView | Method::Warp) {
             return Err(crate::Error::invalid(
                 "method",
-                format!("{method}: MeshNPass renders n-pass and single-view; use MeshSinglePass"),
+                format!(
+                    "{method}: MeshNPass renders n-pass, single-view and a warp's references; \
+                     use MeshSinglePass"
+                ),
             ));
         }
         let frame_layout = frame_bind_group_layout(device);
@@ -54,6 +61,15 @@ impl MeshNPass {
             bind_group_layouts: &[Some(&frame_layout), Some(&view_layout)],
             immediate_size: 0,
         });
+        // A warp's references write their nearness too (fs_reference), else the colour only.
+        let (entry, targets): (_, &[_]) = if method == Method::Warp {
+            (
+                "fs_reference",
+                &[Some(SPATIAL_FORMAT.into()), Some(NEARNESS_FORMAT.into())],
+            )
+        } else {
+            ("fs_main", &[Some(SPATIAL_FORMAT.into())])
+        };
         let pipeline = crate::gpu::checked(device, "building the mesh N-pass pipeline", || {
             device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
                 label: Some("mesh view"),
@@ -70,9 +86,9 @@ impl MeshNPass {
                 multisample: Default::default(),
                 fragment: Some(wgpu::FragmentState {
                     module: &module,
-                    entry_point: Some("fs_main"),
+                    entry_point: Some(entry),
                     compilation_options: Default::default(),
-                    targets: &[Some(SPATIAL_FORMAT.into())],
+                    targets,
                 }),
                 multiview_mask: None,
                 cache: None,
@@ -88,6 +104,7 @@ impl MeshNPass {
             views: PassParams::new(device, "view uniforms"),
             view_group: None,
             prepared: None,
+            crop: crate::render::camera_crop::CameraCrop::new(device)?,
         })
     }
 
@@ -105,15 +122,13 @@ impl MeshNPass {
         frame: &Frame,
         target: &SpatialTarget,
     ) -> Result<()> {
-        self.frame.write(device, frame);
-        let camera = &frame.camera;
-        let offsets: Vec<f32> = (0..camera.views).map(|i| camera.view_offset(i)).collect();
-        self.write_views(device, &offsets, |vd| camera.view_uniform(vd));
+        self.write_frame_views(device, &frame.for_view_images());
         let layers = self.npass.layers();
         for (i, layer) in layers.layer_views.iter().enumerate() {
             self.draw(encoder, mesh, frame, i as u32, layer, &layers.depth_view);
         }
         self.npass.composite(device, encoder, &self.frame, target);
+        self.crop.encode(device, encoder, frame, target);
         Ok(())
     }
 
@@ -137,6 +152,14 @@ impl MeshNPass {
             .clone();
         self.draw(encoder, mesh, frame, 0, &target.view, &depth);
         Ok(())
+    }
+
+    /// This frame's constants and the uniforms of every view of its camera.
+    fn write_frame_views(&mut self, device: &wgpu::Device, frame: &Frame) {
+        self.frame.write(device, frame);
+        let camera = &frame.camera;
+        let offsets: Vec<f32> = (0..camera.views).map(|i| camera.view_offset(i)).collect();
+        self.write_views(device, &offsets, |vd| camera.view_uniform(vd));
     }
 
     /// This frame's view uniforms (`src/render/pass_params.rs`) and their bind group.
@@ -167,12 +190,34 @@ impl MeshNPass {
         color: &wgpu::TextureView,
         depth: &wgpu::TextureView,
     ) {
+        self.draw_to(
+            encoder,
+            mesh,
+            view,
+            &[Some(cleared(color, frame.background))],
+            depth,
+        );
+    }
+
+    /// Draw view `view` into `colors` (the colour, and a reference's nearness) and `depth`.
+    fn draw_to(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        mesh: &MeshBuffers,
+        view: u32,
+        colors: &[Option<wgpu::RenderPassColorAttachment<'_>>],
+        depth: &wgpu::TextureView,
+    ) {
         let view_group = self.view_group.as_ref().expect("written before drawing");
-        let mut pass = begin_pass(
+        let mut pass = begin_pass_to(
             encoder,
             "mesh view",
-            cleared(color, frame.background),
-            Some(depth),
+            PassTargets {
+                colors,
+                depth: Some(depth),
+                keep_depth: false,
+                multiview_mask: None,
+            },
         );
         pass.set_pipeline(&self.pipeline);
         pass.set_bind_group(0, &self.frame.bind_group, &[]);
@@ -188,6 +233,8 @@ impl MeshNPass {
 pub(crate) struct PreparedFor {
     size: [u32; 2],
     views: u32,
+    /// The view images' size ([`Frame::view_size`]).
+    view_size: [u32; 2],
 }
 
 impl PreparedFor {
@@ -195,6 +242,7 @@ impl PreparedFor {
         Self {
             size: frame.size,
             views: frame.camera.views,
+            view_size: frame.view_size(),
         }
     }
 }
@@ -210,7 +258,9 @@ impl Renderer<MeshBuffers> for MeshNPass {
         begin_prepare(device, frame, &mut self.prepared)?;
         match self.method {
             Method::NPass => self.npass.prepare(device, frame)?,
+            Method::Warp => return Err(crate::warp::references::not_a_frame_renderer("MeshNPass")),
             _ => {
+                frame.check_full_views("single-view")?;
                 cached_texture_2d(
                     &mut self.single_view_depth,
                     device,
@@ -218,7 +268,7 @@ impl Renderer<MeshBuffers> for MeshNPass {
                     frame.size,
                     DEPTH_FORMAT,
                     wgpu::TextureUsages::RENDER_ATTACHMENT,
-                );
+                )?;
             }
         }
         self.prepared = Some(PreparedFor::of(frame));
@@ -239,5 +289,45 @@ impl Renderer<MeshBuffers> for MeshNPass {
             Method::NPass => self.encode_npass(device, encoder, mesh, frame, target),
             _ => self.encode_single_view(device, encoder, mesh, frame, target),
         }
+    }
+}
+
+impl ReferenceRenderer<MeshBuffers> for MeshNPass {
+    fn prepare_references(
+        &mut self,
+        device: &wgpu::Device,
+        _queue: &wgpu::Queue,
+        _mesh: &MeshBuffers,
+        frame: &Frame,
+    ) -> Result<()> {
+        begin_prepare(device, frame, &mut self.prepared)?;
+        crate::warp::references::check_reference_method("MeshNPass", self.method)?;
+        self.prepared = Some(PreparedFor::of(frame));
+        Ok(())
+    }
+
+    fn encode_references(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        mesh: &MeshBuffers,
+        frame: &Frame,
+        images: &ReferenceImages,
+    ) -> Result<()> {
+        check_prepared("MeshNPass", &self.prepared, &PreparedFor::of(frame))?;
+        self.write_frame_views(device, frame);
+        let layers = images.color.layer_views.iter();
+        for (j, (color, nearness)) in layers.zip(&images.nearness.layer_views).enumerate() {
+            let colors = [
+                Some(cleared(color, frame.background)),
+                Some(cleared(nearness, [0.0; 4])),
+            ];
+            self.draw_to(encoder, mesh, j as u32, &colors, &images.color.depth_view);
+        }
+        Ok(())
+    }
+
+    fn depth_meaning(&self) -> &'static str {
+        "the nearest triangle's depth"
     }
 }

@@ -17,6 +17,7 @@ use super::PointSplatter;
 use crate::error::Result;
 use crate::frame::Frame;
 use crate::points::SplatScene;
+use crate::render::atlas::TileSampling;
 use crate::render::batches::batches;
 use crate::render::dispatch::dispatch_2d;
 use crate::render::pipeline::{
@@ -185,7 +186,7 @@ impl PointSplatter {
                 .get(&pipeline(Geometry::Tiled))
                 .expect("built");
             for (i, band) in bands.iter().enumerate() {
-                let quilt = band.layout.uniform_buffer(device);
+                let quilt = band.layout.uniform_buffer(device, band.layout.uniform());
                 let quilt_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
                     label: Some("splat quilt layout"),
                     layout: &self.layouts.quilt,
@@ -225,13 +226,24 @@ impl PointSplatter {
                 pass.draw(0..3, 0..1);
             }
             let compositor = self.atlas_compositor.as_ref().expect("tiled");
-            compositor.encode(device, encoder, &self.frame, atlas, target);
+            compositor.encode(
+                device,
+                encoder,
+                &self.frame,
+                atlas,
+                target,
+                TileSampling::Bilinear,
+            );
             return Ok(());
         }
         let Chunks::Runs(runs) = &self.chunks else {
             unreachable!("tiled and layered plan their chunks in prepare")
         };
-        let depth = self.layer_depth.as_ref().expect("allocated by prepare");
+        let depth = &self
+            .layer_depth
+            .as_ref()
+            .expect("allocated by prepare")
+            .texture;
         let npass = self.npass.as_ref().expect("layered keeps view layers");
         let mut next_pass = 1; // pass 0: the cover pass
         for run in runs {

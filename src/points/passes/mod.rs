@@ -12,23 +12,24 @@ mod chunks;
 mod duplicate;
 mod group_images;
 mod pipelines;
+mod references;
+mod views;
 
 use crate::render::Method;
 
 pub use pipelines::SplatParams;
 
 use self::bind_groups::FrameGroups;
-use self::group_images::{draw_groups, GroupImages, GroupImagesKey};
-use self::pipelines::{Geometry, Layouts, Pipelines, SplatPipelineKey, COVER_WORKGROUP};
+use self::group_images::{GroupImages, GroupImagesKey};
+use self::pipelines::{Geometry, Layouts, Pipelines, SplatPipelineKey};
+use self::views::SplatOutput;
 use crate::error::{Error, Result};
 use crate::frame::{Frame, FrameBinding};
 use crate::points::SplatScene;
 use crate::render::atlas::{Atlas, AtlasCompositor};
-use crate::render::dispatch::dispatch_2d;
 use crate::render::gpu_buffer::GpuBuffer;
 use crate::render::npass::NPassHarness;
 use crate::render::pass_params::PassParams;
-use crate::render::pipeline::{begin_pass, cleared};
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
 use crate::render::storage_fence::StorageFence;
@@ -120,12 +121,14 @@ pub struct PointSplatter {
     atlas: Option<Atlas>,
     atlas_compositor: Option<AtlasCompositor>,
     /// Layered only: a depth layer per layer of a multiview pass.
-    layer_depth: Option<wgpu::Texture>,
+    layer_depth: Option<crate::render::view_layers::DepthArray>,
     /// Tiled and layered: the views in chunks whose group images fit one texture of at most
     /// `max_image_bytes`.
     chunks: duplicate::Chunks,
     max_image_bytes: u64,
     prepared: Option<PreparedFor>,
+    /// The parallel camera model's crop, recorded last.
+    crop: crate::render::camera_crop::CameraCrop,
     fence: StorageFence,
 }
 
@@ -175,6 +178,7 @@ impl PointSplatter {
             images: None,
             npass,
             prepared: None,
+            crop: crate::render::camera_crop::CameraCrop::new(device)?,
             fence: StorageFence::new(device)?,
         })
     }
@@ -270,7 +274,7 @@ impl PointSplatter {
                 ..fixed(0.0)
             }],
             Method::SingleView => vec![fixed(0.0)],
-            Method::NPass => (0..camera.views)
+            Method::NPass | Method::Warp => (0..camera.views)
                 .map(|i| fixed(camera.view_offset(i)))
                 .collect(),
             Method::Tiled | Method::Layered => match &self.chunks {
@@ -281,6 +285,19 @@ impl PointSplatter {
                 duplicate::Chunks::None => unreachable!("planned by prepare"),
             },
             Method::Mrt => unreachable!("refused by new"),
+        }
+    }
+
+    /// The frame this method renders with: the methods that render view images render them
+    /// (everything but the final compositing) with [`Frame::for_view_images`]; the others have
+    /// none to scale.
+    fn own_frame(&self, frame: &Frame) -> Result<Frame> {
+        match self.path {
+            Method::NPass | Method::Tiled | Method::Layered => Ok(frame.for_view_images()),
+            other => {
+                frame.check_full_views(other.name())?;
+                Ok(frame.clone())
+            }
         }
     }
 
@@ -350,7 +367,7 @@ impl PointSplatter {
                 device,
                 frame.size,
                 layers,
-            );
+            )?;
         }
         for geometry in self.geometries(frame) {
             let key = SplatPipelineKey {
@@ -381,6 +398,7 @@ impl PointSplatter {
                     .map(|layers| Geometry::Layered { layers })
                     .collect()
             }
+            Method::Warp => vec![Geometry::Reference],
             _ if self.subpixel(frame) => vec![Geometry::Subpixel],
             _ => vec![Geometry::Pixel],
         }
@@ -407,6 +425,12 @@ impl Renderer<SplatScene> for PointSplatter {
         frame: &Frame,
     ) -> Result<()> {
         begin_prepare(device, frame, &mut self.prepared)?;
+        if self.path == Method::Warp {
+            return Err(crate::warp::references::not_a_frame_renderer(
+                "PointSplatter",
+            ));
+        }
+        let frame = &self.own_frame(frame)?;
         self.ensure_resources(device, scene, frame)?;
         self.prepared = Some(self.needs(scene, frame));
         Ok(())
@@ -421,72 +445,16 @@ impl Renderer<SplatScene> for PointSplatter {
         target: &SpatialTarget,
     ) -> Result<()> {
         check_target(frame, target)?;
-        check_prepared("PointSplatter", &self.prepared, &self.needs(scene, frame))?;
+        let own = self.own_frame(frame)?;
+        check_prepared("PointSplatter", &self.prepared, &self.needs(scene, &own))?;
         if matches!(self.path, Method::Tiled | Method::Layered) {
-            return self.encode_duplicated(device, encoder, scene, frame, target);
+            self.encode_duplicated(device, encoder, scene, &own, target)?;
+        } else {
+            self.encode_views(device, encoder, scene, &own, SplatOutput::Target(target));
         }
-        let passes = self.passes(frame, scene.groups());
-        self.frame.write(device, frame);
-        self.params.write(device, &passes);
-        let key = SplatPipelineKey {
-            spec: Specialization::of(frame),
-            geometry: self.geometries(frame)[0],
-        };
-        let pipelines = self.pipelines.get(&key).expect("built by prepare");
-        let scratch = self.scratch.as_ref().expect("ensured");
-        let images = &self.images.as_ref().expect("ensured").layers;
-        let FrameGroups {
-            cover: cover_group,
-            quad: quad_group,
-            images: images_group,
-            params: params_group,
-        } = self.frame_groups(device, scene);
-        let workgroups = scene.count.div_ceil(COVER_WORKGROUP);
-        let dispatch = dispatch_2d(device, workgroups);
-        for (i, _) in passes.iter().enumerate() {
-            let offset = [self.params.offset(i)];
-            self.fence.encode(
-                device,
-                encoder,
-                [scratch.eye_splats.buffer(), scratch.rects.buffer()],
-            );
-            {
-                let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-                    label: Some("splat cover"),
-                    timestamp_writes: None,
-                });
-                pass.set_pipeline(&pipelines.cover);
-                pass.set_bind_group(0, &self.frame.bind_group, &[]);
-                pass.set_bind_group(1, &cover_group, &[]);
-                pass.set_bind_group(2, &params_group, &offset);
-                pass.dispatch_workgroups(dispatch[0], dispatch[1], 1);
-            }
-            draw_groups(
-                encoder,
-                "splat group",
-                images,
-                &scene.group_ranges,
-                &pipelines.geometry,
-                &[
-                    (&self.frame.bind_group, &[]),
-                    (&quad_group, &[]),
-                    (&params_group, &offset),
-                ],
-                0..1,
-            );
-            let output = match &self.npass {
-                Some(npass) => &npass.layers().layer_views[i],
-                None => &target.view,
-            };
-            let mut pass = begin_pass(encoder, "splat composite", cleared(output, [0.0; 4]), None);
-            pass.set_pipeline(&pipelines.composite);
-            pass.set_bind_group(0, &self.frame.bind_group, &[]);
-            pass.set_bind_group(1, &images_group, &[]);
-            pass.set_bind_group(2, &params_group, &offset);
-            pass.draw(0..3, 0..1);
-        }
-        if let Some(npass) = &self.npass {
-            npass.composite(device, encoder, &self.frame, target);
+        // The single view is the centre camera on every subpixel: nothing of it is cropped.
+        if self.path != Method::SingleView {
+            self.crop.encode(device, encoder, frame, target);
         }
         Ok(())
     }

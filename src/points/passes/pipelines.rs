@@ -6,13 +6,14 @@ use crate::error::Result;
 use crate::frame::frame_bind_group_layout;
 use crate::render::pass_params::PassParams;
 use crate::render::pipeline::{
-    bind_group_layout, compilation, fullscreen_pipeline_with, multiview_mask, pipeline_layout,
+    bind_group_layout, compilation, fullscreen_pipeline_to, multiview_mask, pipeline_layout,
     storage_entry,
 };
 use crate::render::pipeline_cache::ShaderModules;
 use crate::render::specialize::Specialization;
 use crate::render::view_layers::nearest_depth_test;
 use crate::target::SPATIAL_FORMAT;
+use crate::warp::references::NEARNESS_FORMAT;
 
 /// Invocations per workgroup of `wgsl/points/cover.wgsl`.
 pub(super) const COVER_WORKGROUP: u32 = 64;
@@ -152,6 +153,8 @@ pub(super) enum Geometry {
     Tiled,
     /// Multiview into `layers` layers at once (`points/layered.wgsl`).
     Layered { layers: u32 },
+    /// A warp's reference views: the pixel geometry, composited with the nearness.
+    Reference,
 }
 
 /// What the splat pipelines are specialised for.
@@ -202,7 +205,7 @@ pub(super) fn build(
         cache: None,
     });
     let (stage, format) = match geometry {
-        Geometry::Pixel => ("points/pixel.wgsl", PIXEL_FORMAT),
+        Geometry::Pixel | Geometry::Reference => ("points/pixel.wgsl", PIXEL_FORMAT),
         Geometry::Subpixel => ("points/subpixel.wgsl", SUBPIXEL_FORMAT),
         Geometry::Tiled => ("points/tiled.wgsl", PIXEL_FORMAT),
         Geometry::Layered { .. } => ("points/layered.wgsl", PIXEL_FORMAT),
@@ -242,7 +245,12 @@ pub(super) fn build(
         cache: None,
     });
     let composite_module = modules.get(device, "points/composite.wgsl")?;
-    let composite = fullscreen_pipeline_with(
+    let reference_targets = [Some(SPATIAL_FORMAT.into()), Some(NEARNESS_FORMAT.into())];
+    let fragment: (_, &[_]) = match key.geometry {
+        Geometry::Reference => ("fs_reference", &reference_targets),
+        _ => ("fs_main", &[Some(SPATIAL_FORMAT.into())]),
+    };
+    let composite = fullscreen_pipeline_to(
         device,
         "splat composite",
         &composite_module,
@@ -251,7 +259,7 @@ pub(super) fn build(
             Some(&layouts.groups),
             Some(&layouts.params),
         ],
-        SPATIAL_FORMAT,
+        fragment,
         &composite_constants,
     );
     Ok(Pipelines {

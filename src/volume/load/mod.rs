@@ -8,7 +8,7 @@ mod raw;
 
 pub use den::{load_den, parse_den};
 pub use nrrd::{load_nrrd, parse_nrrd};
-pub use raw::{load_raw, RawSpec};
+pub use raw::{load_raw, parse_raw, RawSpec};
 
 use std::path::Path;
 

@@ -21,9 +21,32 @@ pub struct RawSpec {
     pub header_bytes: u64,
 }
 
-/// Load a raw volume; the file must hold exactly `header_bytes` + the samples.
+/// Load a raw volume; the file must hold exactly `header_bytes` + the samples (its size is
+/// checked before it is read).
 pub fn load_raw(path: &Path, spec: &RawSpec) -> Result<Volume> {
-    let needed = data_bytes(spec.dims.map(u64::from), spec.kind)
+    let needed = needed_bytes(path, spec)?;
+    let actual = crate::file::check_regular(path)?.len();
+    check_length(path, spec, actual, needed)?;
+    let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+    parse_raw(&bytes, path, spec)
+}
+
+/// A raw volume from the bytes of a file `path` (named in errors): exactly `header_bytes` + the
+/// samples `spec` describes.
+pub fn parse_raw(bytes: &[u8], path: &Path, spec: &RawSpec) -> Result<Volume> {
+    let needed = needed_bytes(path, spec)?;
+    check_length(path, spec, bytes.len() as u64, needed)?;
+    let samples = decode(
+        &bytes[spec.header_bytes as usize..],
+        spec.kind,
+        spec.big_endian,
+    );
+    to_volume(path, spec.dims, spec.spacing, samples, spec.kind)
+}
+
+/// The header plus the samples, checked for overflow and the voxel limit.
+fn needed_bytes(path: &Path, spec: &RawSpec) -> Result<u64> {
+    data_bytes(spec.dims.map(u64::from), spec.kind)
         .map_err(|e| format_error(path, e.to_string()))?
         .checked_add(spec.header_bytes)
         .ok_or_else(|| {
@@ -34,26 +57,22 @@ pub fn load_raw(path: &Path, spec: &RawSpec) -> Result<Volume> {
                     spec.header_bytes
                 ),
             )
-        })?;
-    let actual = crate::file::check_regular(path)?.len();
-    if actual != needed {
-        return Err(format_error(
-            path,
-            format!(
-                "{} bytes, but {:?} {:?} samples after a {}-byte header need {needed}{}",
-                actual,
-                spec.dims,
-                spec.kind,
-                spec.header_bytes,
-                if actual < needed { " (truncated?)" } else { "" }
-            ),
-        ));
+        })
+}
+
+fn check_length(path: &Path, spec: &RawSpec, actual: u64, needed: u64) -> Result<()> {
+    if actual == needed {
+        return Ok(());
     }
-    let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
-    let samples = decode(
-        &bytes[spec.header_bytes as usize..],
-        spec.kind,
-        spec.big_endian,
-    );
-    to_volume(path, spec.dims, spec.spacing, samples, spec.kind)
+    Err(format_error(
+        path,
+        format!(
+            "{} bytes, but {:?} {:?} samples after a {}-byte header need {needed}{}",
+            actual,
+            spec.dims,
+            spec.kind,
+            spec.header_bytes,
+            if actual < needed { " (truncated?)" } else { "" }
+        ),
+    ))
 }

@@ -5,10 +5,12 @@
 //! (z = view) into texture-array layers (`raycast_layered.wgsl`) or the tiles of a quilt atlas
 //! (`raycast_tiled.wgsl`), then composites.
 
+mod references;
+
 use super::resources::{VolumeParams, VolumeResources};
 use crate::error::{Error, Result};
 use crate::frame::Frame;
-use crate::render::atlas::{Atlas, AtlasCompositor};
+use crate::render::atlas::{Atlas, AtlasCompositor, TileSampling};
 use crate::render::npass::NPassHarness;
 use crate::render::pipeline::{bind_group_layout, compilation, uniform_entry};
 use crate::render::pipeline_cache::PipelineCache;
@@ -31,6 +33,8 @@ pub struct VolumeRaycaster {
     /// Tiled only.
     tiled: Option<Tiled>,
     prepared: Option<PreparedFor>,
+    /// The parallel camera model's crop, recorded last.
+    crop: crate::render::camera_crop::CameraCrop,
 }
 
 /// The tiled method's atlas and its compositor.
@@ -48,6 +52,8 @@ enum Output {
     Layers,
     /// Every tile of a quilt atlas in one dispatch.
     Atlas,
+    /// A warp's reference views, colour and nearness layers, in one dispatch.
+    References,
 }
 
 impl Output {
@@ -56,6 +62,7 @@ impl Output {
             Method::SinglePass | Method::SingleView | Method::NPass => Ok(Self::Image),
             Method::Layered => Ok(Self::Layers),
             Method::Tiled => Ok(Self::Atlas),
+            Method::Warp => Ok(Self::References),
             Method::Mrt => Err(Error::invalid(
                 "method",
                 "mrt renders meshes only: its point is one depth buffer shared by the views of \
@@ -70,20 +77,22 @@ impl Output {
             Self::Image => "volume/raycast.wgsl",
             Self::Layers => "volume/raycast_layered.wgsl",
             Self::Atlas => "volume/raycast_tiled.wgsl",
+            Self::References => "volume/raycast_reference.wgsl",
         }
     }
 
     fn layout(self, device: &wgpu::Device) -> wgpu::BindGroupLayout {
-        let storage = |view_dimension| wgpu::BindGroupLayoutEntry {
-            binding: 0,
+        let storage_of = |binding, format, view_dimension| wgpu::BindGroupLayoutEntry {
+            binding,
             visibility: wgpu::ShaderStages::COMPUTE,
             ty: wgpu::BindingType::StorageTexture {
                 access: wgpu::StorageTextureAccess::WriteOnly,
-                format: crate::target::SPATIAL_FORMAT,
+                format,
                 view_dimension,
             },
             count: None,
         };
+        let storage = |view_dimension| storage_of(0, crate::target::SPATIAL_FORMAT, view_dimension);
         let quilt = uniform_entry(1, wgpu::ShaderStages::COMPUTE);
         let d2 = wgpu::TextureViewDimension::D2;
         match self {
@@ -94,6 +103,18 @@ impl Output {
                 &[storage(wgpu::TextureViewDimension::D2Array)],
             ),
             Self::Atlas => bind_group_layout(device, "volume output atlas", &[storage(d2), quilt]),
+            Self::References => bind_group_layout(
+                device,
+                "volume reference views",
+                &[
+                    storage(wgpu::TextureViewDimension::D2Array),
+                    storage_of(
+                        1,
+                        crate::warp::references::NEARNESS_FORMAT,
+                        wgpu::TextureViewDimension::D2Array,
+                    ),
+                ],
+            ),
         }
     }
 }
@@ -125,6 +146,7 @@ impl VolumeRaycaster {
             npass,
             tiled,
             prepared: None,
+            crop: crate::render::camera_crop::CameraCrop::new(device)?,
         })
     }
 
@@ -137,7 +159,10 @@ impl VolumeRaycaster {
             let layout = resources.pipeline_layout(device, "volume raycast", output_layout);
             let module = modules.get(device, stage)?;
             let skip = f64::from(u8::from(key.skip_empty));
-            let constants = key.spec.constants(&[("SKIP_EMPTY", skip)]);
+            let track = f64::from(u8::from(stage == Output::References.stage()));
+            let constants = key
+                .spec
+                .constants(&[("SKIP_EMPTY", skip), ("TRACK_DEPTH", track)]);
             Ok(
                 device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
                     label: Some("volume raycast"),
@@ -149,6 +174,19 @@ impl VolumeRaycaster {
                 }),
             )
         })?;
+        Ok(())
+    }
+
+    /// The end of every prepare: the pipeline for `key`, then `key` is what was prepared.
+    fn finish_prepare(&mut self, device: &wgpu::Device, key: PreparedFor) -> Result<()> {
+        self.ensure_pipeline(
+            device,
+            RaycastPipelineKey {
+                spec: key.spec,
+                skip_empty: key.skip_empty,
+            },
+        )?;
+        self.prepared = Some(key);
         Ok(())
     }
 
@@ -214,6 +252,21 @@ impl VolumeEncode<'_> {
     }
 }
 
+impl VolumeRaycaster {
+    /// The frame this method renders with: the methods that render view images render them
+    /// (everything but the final compositing) with [`Frame::for_view_images`]; the others have
+    /// none to scale.
+    fn own_frame(&self, frame: &Frame) -> Result<Frame> {
+        match self.method {
+            Method::NPass | Method::Tiled | Method::Layered => Ok(frame.for_view_images()),
+            other => {
+                frame.check_full_views(other.name())?;
+                Ok(frame.clone())
+            }
+        }
+    }
+}
+
 impl Renderer<VolumeScene> for VolumeRaycaster {
     fn prepare(
         &mut self,
@@ -223,6 +276,12 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         frame: &Frame,
     ) -> Result<()> {
         begin_prepare(device, frame, &mut self.prepared)?;
+        if self.method == Method::Warp {
+            return Err(crate::warp::references::not_a_frame_renderer(
+                "VolumeRaycaster",
+            ));
+        }
+        let frame = &self.own_frame(frame)?;
         let key = PreparedFor::of(scene, frame);
         self.resources.upload(device, queue, scene)?;
         if let Some(npass) = &mut self.npass {
@@ -235,15 +294,7 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
                 tiled.atlas = Some(Atlas::new(device, layout, false)?);
             }
         }
-        self.ensure_pipeline(
-            device,
-            RaycastPipelineKey {
-                spec: key.spec,
-                skip_empty: key.skip_empty,
-            },
-        )?;
-        self.prepared = Some(key);
-        Ok(())
+        self.finish_prepare(device, key)
     }
 
     fn encode(
@@ -254,20 +305,23 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         frame: &Frame,
         target: &SpatialTarget,
     ) -> Result<()> {
+        let own = self.own_frame(frame)?;
         VolumeEncode {
             renderer: "VolumeRaycaster",
             prepared: &self.prepared,
             resources: &self.resources,
-            wanted: PreparedFor::of(scene, frame),
+            wanted: PreparedFor::of(scene, &own),
         }
         .check(scene, frame, target)?;
+        let full = frame;
+        let frame = &own;
         let camera = &frame.camera;
         // One dispatch per camera: all K views per pixel, or one fixed camera per view /
         // centre; the duplication methods one dispatch for every view.
         let params = |use_mask, offset| VolumeResources::params(scene, frame, use_mask, offset);
         let dispatches: Vec<VolumeParams> = match self.method {
             Method::SinglePass => vec![params(true, 0.0)],
-            Method::SingleView | Method::Tiled | Method::Layered | Method::Mrt => {
+            Method::SingleView | Method::Tiled | Method::Layered | Method::Mrt | Method::Warp => {
                 vec![params(false, 0.0)]
             }
             Method::NPass => (0..camera.views)
@@ -299,7 +353,7 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         let outputs: Vec<(wgpu::BindGroup, u32)> = match (&self.npass, &self.tiled) {
             (_, Some(tiled)) => {
                 let atlas = tiled.atlas.as_ref().expect("allocated by prepare");
-                let quilt = atlas.layout.uniform_buffer(device);
+                let quilt = atlas.layout.uniform_buffer(device, atlas.layout.uniform());
                 let group = output(&[view(&atlas.color.view), quilt.as_entire_binding()]);
                 vec![(group, camera.views)]
             }
@@ -334,9 +388,17 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         }
         if let Some(tiled) = &self.tiled {
             let atlas = tiled.atlas.as_ref().expect("allocated by prepare");
-            tiled
-                .compositor
-                .encode(device, encoder, &self.resources.frame, atlas, target);
+            tiled.compositor.encode(
+                device,
+                encoder,
+                &self.resources.frame,
+                atlas,
+                target,
+                TileSampling::Bilinear,
+            );
+        }
+        if self.method != Method::SingleView {
+            self.crop.encode(device, encoder, full, target);
         }
         Ok(())
     }

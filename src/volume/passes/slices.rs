@@ -55,6 +55,8 @@ pub struct VolumeSlicer {
     resolve: wgpu::RenderPipeline,
     accumulation: Option<Texture2d>,
     prepared: Option<PreparedFor>,
+    /// The parallel camera model's crop, recorded last.
+    crop: crate::render::camera_crop::CameraCrop,
 }
 
 impl VolumeSlicer {
@@ -113,6 +115,7 @@ impl VolumeSlicer {
             resolve,
             accumulation: None,
             prepared: None,
+            crop: crate::render::camera_crop::CameraCrop::new(device)?,
         })
     }
 
@@ -184,12 +187,36 @@ fn slices(scene: &VolumeScene, frame: &Frame) -> Vec<SliceRect> {
         .flat_map(|a| [1usize, 2, 4].map(move |bit| (a, a | bit)))
         .filter(|(a, b)| a != b);
     let edges: Vec<(Vec3, Vec3)> = edges.map(|(a, b)| (corners[a], corners[b])).collect();
-    let depths = corners.iter().map(|c| -c.z);
+    // Each view's own depths of the corners: the slices are at the same depths in every view,
+    // which for turned (toe-in) cameras are not the centre's.
+    let toe_in = camera.model == crate::camera::CameraModel::ToeIn;
+    let offsets: Vec<f32> = if toe_in {
+        (0..camera.views).map(|i| camera.view_offset(i)).collect()
+    } else {
+        vec![0.0]
+    };
+    let depths: Vec<f32> = offsets
+        .iter()
+        .flat_map(|&vd| {
+            let turn = glam::Mat4::from_rotation_y(-camera.toe_in_angle(vd));
+            let origin = Vec3::new(vd, 0.0, 0.0);
+            let corners = &corners;
+            (0..8).map(move |i| match toe_in {
+                true => -turn.transform_point3(corners[i] - origin).z,
+                false => -corners[i].z,
+            })
+        })
+        .collect();
     let d_min = depths
-        .clone()
+        .iter()
+        .copied()
         .fold(f32::INFINITY, f32::min)
         .max(camera.near);
-    let d_max = depths.fold(f32::NEG_INFINITY, f32::max).min(camera.far);
+    let d_max = depths
+        .iter()
+        .copied()
+        .fold(f32::NEG_INFINITY, f32::max)
+        .min(camera.far);
     let step = scene.step;
     let (fd, spread) = (camera.focal_distance, camera.max_offset());
     let window = camera.focal_window();
@@ -217,8 +244,13 @@ fn slices(scene: &VolumeScene, frame: &Frame) -> Vec<SliceRect> {
             glam::Vec2::splat(f32::INFINITY),
             glam::Vec2::splat(f32::NEG_INFINITY),
         );
-        section(d, &mut lo, &mut hi);
-        section(d + step, &mut lo, &mut hi);
+        if toe_in {
+            // Turned views cut the box along turned planes: cover the whole image.
+            (lo, hi) = (-window * 0.5, window * 0.5);
+        } else {
+            section(d, &mut lo, &mut hi);
+            section(d + step, &mut lo, &mut hi);
+        }
         if lo.x > hi.x {
             continue;
         }
@@ -243,6 +275,7 @@ impl Renderer<VolumeScene> for VolumeSlicer {
         frame: &Frame,
     ) -> Result<()> {
         begin_prepare(device, frame, &mut self.prepared)?;
+        frame.check_full_views("slice-based")?;
         let key = PreparedFor::for_slices(scene, frame);
         self.resources.upload(device, queue, scene)?;
         self.ensure_pipeline(device, key.spec)?;
@@ -253,7 +286,7 @@ impl Renderer<VolumeScene> for VolumeSlicer {
             frame.size,
             ACCUMULATION_FORMAT,
             wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
-        );
+        )?;
         self.prepared = Some(key);
         Ok(())
     }
@@ -325,6 +358,7 @@ impl Renderer<VolumeScene> for VolumeSlicer {
             &[&self.resources.frame.bind_group, &accumulated],
             &target.view,
         );
+        self.crop.encode(device, encoder, frame, target);
         Ok(())
     }
 }

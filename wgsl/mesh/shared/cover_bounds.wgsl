@@ -1,5 +1,6 @@
 // Covering bounds (docs/DESIGN.md §3) of one triangle on the focal plane: y from the centre projection,
-// x widened per vertex by vd·|1 − fd/d| (exact for the sheared frusta; the paper's printed
+// x widened per vertex by vd·|1 − fd/d| (exact for the sheared and parallel frusta; toe-in
+// cameras take the bounds of every view's projection; the paper's printed
 // vd·fd/d under-covers geometry beyond 2·fd and is kept only as a measured option). Vertices
 // behind the near plane are clipped first, so a triangle crossing it gets the bounds of its
 // visible part. Used by mesh/single_pass_cover.wgsl and mesh/single_pass_compute.wgsl.
@@ -12,6 +13,9 @@ struct Bounds {
 }
 
 fn extend(b: Bounds, q: vec3<f32>) -> Bounds {
+    if (frame.camera.model == CAMERA_TOE_IN) {
+        return extend_toe_in(b, q);
+    }
     let s = frame.camera.focal_distance / -q.z;
     let centre = q.xy * s;
     var spread = max_view_offset() * abs(1.0 - s);
@@ -22,6 +26,22 @@ fn extend(b: Bounds, q: vec3<f32>) -> Bounds {
         min(b.lo, vec2<f32>(centre.x - spread, centre.y)),
         max(b.hi, vec2<f32>(centre.x + spread, centre.y)),
     );
+}
+
+// Toe-in cameras turn, so a vertex moves in x and y from view to view, not linearly in vd:
+// the bounds of its projections in every view (N is a pipeline constant). A view that sees it
+// at no positive depth gets the whole image (such a triangle is near the camera plane).
+fn extend_toe_in(b: Bounds, q: vec3<f32>) -> Bounds {
+    var out = b;
+    for (var i = 0u; i < VIEW_COUNT; i++) {
+        let p = camera_project(frame.camera, q, view_offset(i));
+        if (!(p.z > 0.0)) {
+            let everything = 2.0 * frame.camera.focal_window;
+            return Bounds(-everything, everything);
+        }
+        out = Bounds(min(out.lo, p.xy), max(out.hi, p.xy));
+    }
+    return out;
 }
 
 // Focal-plane bounds of the part of triangle p in front of the near plane.

@@ -4,7 +4,8 @@
 // The disk's axis-aligned box (half-extent r·√(1 − n_j²) per axis) is clipped to the near
 // plane, and its 8 corners are projected for the two extreme offsets: for a fixed offset a the
 // map x ↦ (x − a)·fd/d + a is a perspective projection, so the convex box's image is the hull of
-// its corners' images, and x is linear in a, so the extremes lie at lo and hi. Reads `frame`.
+// its corners' images, and x is linear in a, so the extremes lie at lo and hi (toe-in cameras:
+// every view's image of the corners, since turned views move x and y non-linearly). Reads `frame`.
 
 // Padding, pixels: a sliver where fragments sample pixel centres; the subpixel-resolution pass
 // (fragments at x + 1/6, 1/2, 5/6 cast the ray of the pixel centre) needs half a pixel.
@@ -30,6 +31,28 @@ fn splat_cover_rect(centre: vec3<f32>, radius: f32, normal: vec3<f32>, lo: f32, 
             select(centre.y - half_extent.y, centre.y + half_extent.y, (k & 2u) != 0u),
             select(z_far, z_near, (k & 4u) != 0u),
         );
+        if (frame.camera.model == CAMERA_TOE_IN) {
+            // Turned cameras: each view's projection of the corner (x and y move, not
+            // linearly in the offset): the cameras at lo and hi and the views between.
+            for (var i = 0u; i < VIEW_COUNT + 2u; i++) {
+                var vd = lo;
+                if (i == 1u) {
+                    vd = hi;
+                } else if (i > 1u) {
+                    vd = view_offset(i - 2u);
+                    if (!(vd > lo && vd < hi)) {
+                        continue;
+                    }
+                }
+                let p = camera_project(frame.camera, q, vd);
+                if (!(p.z > 0.0)) {
+                    return vec4<f32>(-2.0, -2.0, 2.0, 2.0); // beside the camera: everything
+                }
+                lo_xy = min(lo_xy, p.xy);
+                hi_xy = max(hi_xy, p.xy);
+            }
+            continue;
+        }
         let scale = fd / -q.z;
         let y = q.y * scale;
         let x_lo = q.x * scale + lo * (1.0 - scale);

@@ -70,9 +70,8 @@ fn splat_hit(ray: Ray, s: Splat) -> SplatHit {
 
 // The ray of the camera at eye-space offset `offset` through pixel position `frag`.
 fn offset_ray(frag: vec2<f32>, offset: f32) -> Ray {
-    let x = camera_focal_point(frame.camera, frag);
     let o = vec3<f32>(offset, 0.0, 0.0);
-    return Ray(o, x - o);
+    return Ray(o, camera_ray_direction(frame.camera, frag, offset));
 }
 
 // Camera offset of ray c of pixel px in this pass.

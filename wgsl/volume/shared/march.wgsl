@@ -20,6 +20,37 @@ const BRICK: f32 = 4.0;
 // it the march is the plain loop.
 override SKIP_EMPTY: bool = true;
 
+// A warp's reference views (volume/raycast_reference.wgsl, src/warp) need one representative
+// depth per ray: the eye depth where the accumulated opacity crosses ½ (interpolated within
+// the segment), and for rays that never reach ½, the opacity-weighted mean depth of what they
+// crossed. Compiled in only for that pipeline: the other marches are unchanged.
+override TRACK_DEPTH: bool = false;
+// Per ray (reset by the caller): the depth where α crossed ½ (0: not yet), and the running
+// Σ w·d, Σ w of the segments' contributions w.
+var<private> half_depth: f32 = 0.0;
+var<private> weighted_depth: vec2<f32> = vec2<f32>(0.0);
+
+// Note segment `seg` ending on plane k, composited onto `before` (giving `after`).
+fn track_depth(before: vec4<f32>, after: vec4<f32>, seg: vec4<f32>, k: f32) {
+    let w = (1.0 - before.a) * seg.a;
+    weighted_depth += vec2<f32>(w * (k - 0.5) * params.step, w);
+    if (half_depth == 0.0 && after.a >= 0.5) {
+        let f = (0.5 - before.a) / max(after.a - before.a, 1e-6);
+        half_depth = (k - 1.0 + f) * params.step;
+    }
+}
+
+// The representative depth of the last ray (see TRACK_DEPTH); 0 where it crossed nothing.
+fn representative_depth() -> f32 {
+    if (half_depth > 0.0) {
+        return half_depth;
+    }
+    if (weighted_depth.y > 0.0) {
+        return weighted_depth.x / weighted_depth.y;
+    }
+    return 0.0;
+}
+
 // Texture-space position of sample plane k (eye depth k·Δ) on the ray o + u·d.
 fn plane_position(o: vec3<f32>, d: vec3<f32>, k: f32) -> vec3<f32> {
     let depth = k * params.step;
@@ -95,7 +126,12 @@ fn march(origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
         // look-ups disabled, so it is a separate specialisation.
         for (var i = 1u; i <= count; i++) {
             let back = sample_plane(o, d, k0 + f32(i));
-            acc = over(acc, segment(front, back, k0 + f32(i), origin, dir));
+            let seg = segment(front, back, k0 + f32(i), origin, dir);
+            let before = acc;
+            acc = over(acc, seg);
+            if (TRACK_DEPTH) {
+                track_depth(before, acc, seg, k0 + f32(i));
+            }
             if (acc.a >= OPAQUE) {
                 break;
             }
@@ -132,7 +168,11 @@ fn march(origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
         let back = sample_plane(o, d, k0 + f32(i));
         if (!resume) {
             let seg = segment(front, back, k0 + f32(i), origin, dir);
+            let before = acc;
             acc = over(acc, seg);
+            if (TRACK_DEPTH) {
+                track_depth(before, acc, seg, k0 + f32(i));
+            }
             if (acc.a >= OPAQUE) {
                 break;
             }
@@ -147,9 +187,8 @@ fn march(origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
 
 // Premultiplied RGBA of the ray through pixel centre `frag` from the camera at offset `offset`.
 fn ray_color(frag: vec2<f32>, offset: f32) -> vec4<f32> {
-    let x = camera_focal_point(frame.camera, frag);
     let o = vec3<f32>(offset, 0.0, 0.0);
-    return march(o, x - o);
+    return march(o, camera_ray_direction(frame.camera, frag, offset));
 }
 
 // `color` of per-channel coverage `alpha` over the background: exact per channel, each

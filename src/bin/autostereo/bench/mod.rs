@@ -6,8 +6,11 @@
 mod plot;
 mod report;
 mod scenes;
+mod schedule;
 mod targets;
 mod tradeoffs;
+mod view_scale;
+mod warping;
 
 use autostereo::render::Renderer;
 use std::path::PathBuf;
@@ -16,6 +19,7 @@ use std::time::Instant;
 use anyhow::{Context, Result};
 use autostereo::target::SpatialTarget;
 use autostereo::timing::{median, FrameTimer};
+use schedule::{count_measurements, estimate_seconds, measured};
 use serde::{Deserialize, Serialize};
 
 use crate::args::gpu;
@@ -44,6 +48,16 @@ pub struct BenchArgs {
     /// 64 at 256², the quick run's points and mesh and the full-size head, no studies.
     #[arg(long, conflicts_with_all = ["quick", "duplication"])]
     sweep: bool,
+    /// Only depth-image warping against every other method: N = 8 and 45 at 512², the quick
+    /// run's points and mesh and the full-size head, timed beside every method, and the warp's
+    /// accuracy for R = 1, 2, 3 and N/2 references (PSNR, share off > 2/255, hole share).
+    #[arg(long, conflicts_with_all = ["quick", "duplication", "sweep"])]
+    warp: bool,
+    /// Only per-view resolution: N = 8 at 512², the quick run's points and mesh and the
+    /// full-size head, every method timed, and the n-pass, tiled and layered methods at view
+    /// scales 1, ¾, ½, ⅓, ¼ against the full-size N-pass (time, PSNR, share off > 2/255).
+    #[arg(long, conflicts_with_all = ["quick", "duplication", "sweep", "warp"])]
+    view_scale: bool,
     /// Timed frames per measurement (after 2 warm-up frames).
     #[arg(long, default_value_t = 20, value_parser = crate::args::frames_parser())]
     frames: u32,
@@ -56,6 +70,10 @@ pub struct Plan {
     pub duplication: bool,
     /// `--sweep`: N = 1…64 at 256² only, no studies.
     pub sweep: bool,
+    /// `--warp`: N = 8 and 45 at 512², the warp study only.
+    pub warp: bool,
+    /// `--view-scale`: N = 8 at 512², the view-scale study only.
+    pub view_scale: bool,
     pub size: [u32; 2],
     pub views: Vec<u32>,
     /// N-pass is measured up to this N (it grows linearly).
@@ -73,6 +91,10 @@ impl Plan {
             ([512, 512], vec![8], 8, vec![[1920, 1080]])
         } else if args.sweep {
             ([256, 256], ALL_N.to_vec(), 64, vec![])
+        } else if args.warp {
+            ([512, 512], vec![8, 45], 45, vec![])
+        } else if args.view_scale {
+            ([512, 512], vec![8], 8, vec![])
         } else if args.quick {
             ([256, 256], vec![2, 8, 64], 8, vec![])
         } else {
@@ -82,6 +104,8 @@ impl Plan {
             quick: args.quick,
             duplication: args.duplication,
             sweep: args.sweep,
+            warp: args.warp,
+            view_scale: args.view_scale,
             size,
             views,
             npass_max_views,
@@ -92,12 +116,18 @@ impl Plan {
 
     /// `quick`, `duplication`, `sweep` or `full`.
     pub fn name(&self) -> &'static str {
-        run_name(self.quick, self.duplication, self.sweep)
+        run_name(
+            self.quick,
+            self.duplication,
+            self.sweep,
+            self.warp,
+            self.view_scale,
+        )
     }
 
     /// Whether the speed/accuracy and economy studies run.
     pub fn studies(&self) -> bool {
-        !self.duplication && !self.sweep
+        !self.duplication && !self.sweep && !self.warp && !self.view_scale
     }
 
     /// Frames per trade-off and economy measurement (each setting is a separate render).
@@ -168,6 +198,12 @@ pub struct Results {
     /// A `--sweep` run.
     #[serde(default)]
     pub sweep: bool,
+    /// A `--warp` run.
+    #[serde(default)]
+    pub warp: bool,
+    /// A `--view-scale` run.
+    #[serde(default)]
+    pub view_scale: bool,
     pub frames: u32,
     /// Frames per trade-off and economy measurement.
     pub study_frames: u32,
@@ -188,15 +224,29 @@ pub struct Results {
 impl Results {
     /// `quick`, `duplication`, `sweep` or `full`.
     pub fn run_name(&self) -> &'static str {
-        run_name(self.quick, self.duplication, self.sweep)
+        run_name(
+            self.quick,
+            self.duplication,
+            self.sweep,
+            self.warp,
+            self.view_scale,
+        )
     }
 }
 
-fn run_name(quick: bool, duplication: bool, sweep: bool) -> &'static str {
-    match (quick, duplication, sweep) {
-        (true, _, _) => "quick",
-        (_, true, _) => "duplication",
-        (_, _, true) => "sweep",
+fn run_name(
+    quick: bool,
+    duplication: bool,
+    sweep: bool,
+    warp: bool,
+    view_scale: bool,
+) -> &'static str {
+    match (quick, duplication, sweep, warp, view_scale) {
+        (true, ..) => "quick",
+        (_, true, ..) => "duplication",
+        (_, _, true, ..) => "sweep",
+        (_, _, _, true, _) => "warp",
+        (.., true) => "view-scale",
         _ => "full",
     }
 }
@@ -262,6 +312,7 @@ pub fn run(args: BenchArgs) -> Result<()> {
     let mut rows = Vec::new();
     let mut failures = Vec::new();
     let total = count_measurements(&plan, &scenes, &all_methods);
+    let bar = crate::progress::bar(total as u64, "bench");
     for (scene, methods) in scenes.iter().zip(&mut all_methods) {
         for (display, size) in plan.configs() {
             let frame = scenes::frame(scene.bounds, &display, size)?;
@@ -277,7 +328,8 @@ pub fn run(args: BenchArgs) -> Result<()> {
                             "{} {} {display} {}x{}: {}",
                             scene.primitive, scene.name, size[0], size[1], m.name
                         );
-                        eprintln!("{what}: not measured: {e:#}");
+                        crate::progress::log(&bar, &format!("{what}: not measured: {e:#}"));
+                        bar.inc(1);
                         failures.push((what, format!("{e:#}")));
                         continue;
                     }
@@ -294,7 +346,8 @@ pub fn run(args: BenchArgs) -> Result<()> {
                     ms,
                     frames: plan.frames,
                 });
-                eprintln!(
+                bar.inc(1);
+                let line = format!(
                     "[{}/{total}] {} {} {display} {}x{}: {} {ms:.1} ms ({:.0} s elapsed)",
                     rows.len(),
                     scene.primitive,
@@ -304,10 +357,21 @@ pub fn run(args: BenchArgs) -> Result<()> {
                     m.name,
                     start.elapsed().as_secs_f64()
                 );
+                crate::progress::log(&bar, &line);
             }
         }
     }
-    let (tradeoffs, economy) = if !plan.studies() {
+    bar.finish_and_clear();
+    let (tradeoffs, economy) = if plan.warp {
+        eprintln!("warp accuracy…");
+        (warping::measure(&ctx, &timer, &scenes, &plan)?, Vec::new())
+    } else if plan.view_scale {
+        eprintln!("view scales…");
+        (
+            view_scale::measure(&ctx, &timer, &scenes, &plan)?,
+            Vec::new(),
+        )
+    } else if !plan.studies() {
         (Vec::new(), Vec::new())
     } else {
         eprintln!("speed/accuracy trade-offs…");
@@ -323,6 +387,8 @@ pub fn run(args: BenchArgs) -> Result<()> {
         quick: plan.quick,
         duplication: plan.duplication,
         sweep: plan.sweep,
+        warp: plan.warp,
+        view_scale: plan.view_scale,
         frames: plan.frames,
         study_frames: plan.study_frames(),
         size: plan.size,
@@ -351,110 +417,6 @@ pub fn run(args: BenchArgs) -> Result<()> {
     Ok(())
 }
 
-/// Whether `kind` is measured for this configuration: N-pass on the N sweep up to the plan's
-/// limit (always for volumes, whose targets are stated at N = 64) and on the extra sizes, single
-/// view once per size (it has no views). The quick run sweeps N with each primitive's `primary`
-/// single pass only; the others at N = 8.
-fn measured(
-    plan: &Plan,
-    primitive: &str,
-    kind: Kind,
-    primary: bool,
-    display: &str,
-    n: u32,
-    size: [u32; 2],
-) -> bool {
-    let extra = size != plan.size;
-    match kind {
-        Kind::SinglePass => primary || !plan.quick || n == 8,
-        Kind::NPass | Kind::Duplication => {
-            extra || (in_sweep(display) && (n <= plan.npass_max_views || primitive == "volume"))
-        }
-        Kind::SingleView => extra || display == "hubner8",
-    }
-}
-
-fn count_measurements(plan: &Plan, scenes: &[BenchScene], methods: &[Vec<MethodEntry>]) -> usize {
-    let mut total = 0;
-    for (scene, methods) in scenes.iter().zip(methods) {
-        for (display, size) in plan.configs() {
-            let n = autostereo::display::Display::parse(&display).map_or(0, |d| d.views());
-            total += methods
-                .iter()
-                .enumerate()
-                .filter(|(i, m)| {
-                    measured(plan, scene.primitive, m.kind, *i == 0, &display, n, size)
-                })
-                .count();
-        }
-    }
-    total
-}
-
-/// Seconds the run should take: single view ≈ `probe`, single pass ≈ 2.5 × probe, N-pass ≈ N ×
-/// probe, scaled by pixels; plus ~20 % for the trade-offs.
-fn estimate_seconds(
-    plan: &Plan,
-    scenes: &[BenchScene],
-    methods: &[Vec<MethodEntry>],
-    probe_ms: &[f64],
-) -> f64 {
-    let frames = (plan.frames + 2) as f64;
-    let mut ms = 0.0;
-    for ((scene, methods), probe) in scenes.iter().zip(methods).zip(probe_ms) {
-        let singles = methods
-            .iter()
-            .filter(|m| m.kind == Kind::SinglePass)
-            .count() as f64;
-        for (display, size) in plan.configs() {
-            let n = autostereo::display::Display::parse(&display).map_or(1, |d| d.views());
-            let scale = (size[0] * size[1]) as f64 / (plan.size[0] * plan.size[1]) as f64;
-            ms += 2.5 * probe * scale * frames;
-            if measured(
-                plan,
-                scene.primitive,
-                Kind::SinglePass,
-                false,
-                &display,
-                n,
-                size,
-            ) {
-                ms += (singles - 1.0) * 2.5 * probe * scale * frames;
-            }
-            if measured(plan, scene.primitive, Kind::NPass, false, &display, n, size) {
-                ms += n as f64 * probe * scale * frames;
-            }
-            let duplications = methods
-                .iter()
-                .filter(|m| m.kind == Kind::Duplication)
-                .count() as f64;
-            if measured(
-                plan,
-                scene.primitive,
-                Kind::Duplication,
-                false,
-                &display,
-                n,
-                size,
-            ) {
-                ms += duplications * n as f64 * probe * scale * frames;
-            }
-            if measured(
-                plan,
-                scene.primitive,
-                Kind::SingleView,
-                false,
-                &display,
-                n,
-                size,
-            ) {
-                ms += probe * scale * frames;
-            }
-        }
-    }
-    ms * 1.2 / 1e3
-}
-
 /// Median GPU ms of `frames` frames of `method` on `scene` (after 2 warm-up frames).
 fn time(
     ctx: &autostereo::gpu::GpuContext,
@@ -467,6 +429,25 @@ fn time(
 ) -> Result<f64> {
     let frame = scenes::frame(scene.bounds, display, size)?;
     time_frame(ctx, timer, scene, &mut method.renderer, &frame, frames)
+}
+
+/// One frame of `renderer` on `scene` as an image.
+pub(crate) fn image(
+    ctx: &autostereo::gpu::GpuContext,
+    scene: &BenchScene,
+    renderer: &mut scenes::AnyRenderer,
+    frame: &autostereo::frame::Frame,
+) -> Result<autostereo::image_io::RgbImage> {
+    let target = SpatialTarget::new(&ctx.device, frame.size)?;
+    autostereo::render::Renderer::render(
+        renderer,
+        &ctx.device,
+        &ctx.queue,
+        &scene.data,
+        frame,
+        &target,
+    )?;
+    Ok(target.read(&ctx.device, &ctx.queue)?)
 }
 
 pub(crate) fn time_frame(

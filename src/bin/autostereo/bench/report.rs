@@ -215,9 +215,14 @@ pub fn write(dir: &Path, r: &Results) -> Result<()> {
 
     super::targets::targets(&mut md, r)?;
     super::targets::duplication(&mut md, r)?;
-    if !r.tradeoffs.is_empty() {
+    if r.view_scale {
+        super::view_scale::report(&mut md, r, &images)?;
+    } else if r.tradeoffs.iter().any(|t| t.hole_share.is_none()) {
         tradeoffs(&mut md, r, &images)?;
         economy(&mut md, r)?;
+    }
+    if r.tradeoffs.iter().any(|t| t.hole_share.is_some()) {
+        super::warping::report(&mut md, r, &images)?;
     }
     if !r.failures.is_empty() {
         writeln!(md, "## Not measured\n")?;
@@ -227,10 +232,25 @@ pub fn write(dir: &Path, r: &Results) -> Result<()> {
         }
         writeln!(md)?;
     }
+    // The quick run's report is docs/BENCHMARKS.md; every other run's lives in a folder below.
+    let up = if r.quick { "" } else { "../" };
+    if r.quick {
+        writeln!(
+            md,
+            "## Runs of their own\n\n\
+             - every method against per-view duplication, 512² and 1920×1080: \
+             [duplication/BENCHMARKS.md](duplication/BENCHMARKS.md) (`bench --duplication`)\n\
+             - time against N = 1…64: [sweep/BENCHMARKS.md](sweep/BENCHMARKS.md) (`bench --sweep`)\n\
+             - depth-image warping: [warp/BENCHMARKS.md](warp/BENCHMARKS.md) (`bench --warp`)\n\
+             - per-view resolution (`--view-scale`), time and PSNR per scale: \
+             [view_scale/BENCHMARKS.md](view_scale/BENCHMARKS.md) (`bench --view-scale`)\n\
+             - the full matrix: [full/BENCHMARKS.md](full/BENCHMARKS.md) (`bench`)\n"
+        )?;
+    }
     writeln!(
         md,
         "## Numerical stability\n\nThe stability suite (`tests/stability.rs`, run by CI) and its table: \
-         [STABILITY.md](STABILITY.md).\n"
+         [STABILITY.md]({up}STABILITY.md).\n"
     )?;
     std::fs::write(dir.join("BENCHMARKS.md"), md)?;
     Ok(())

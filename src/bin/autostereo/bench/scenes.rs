@@ -8,6 +8,7 @@ use autostereo::display::Display;
 use autostereo::frame::Frame;
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::points::{GroupCount, PointCloud, SplatScene};
+use autostereo::render::Renderer;
 use autostereo::render::{
     AlphaMode, MeshLayered, MeshMrt, MeshNPass, MeshSinglePass, MeshSinglePassOptions, MeshTiled,
     Method, PointSplatter, SplatDepth, SplatOptions, TileClip, Visibility, VolumeRaycaster,
@@ -15,6 +16,7 @@ use autostereo::render::{
 };
 pub use autostereo::render::{AnyRenderer, AnyScene};
 use autostereo::volume::{load, phantom, TransferFunction, Volume};
+use autostereo::warp::{ReferenceRenderer, SceneWarp, SceneWarpOptions, WarpPath};
 use glam::Mat4;
 
 pub struct BenchScene {
@@ -37,6 +39,8 @@ pub enum Kind {
     SingleView,
     /// Per-view duplication in one draw (tiled, layered, MRT): the competition.
     Duplication,
+    /// Depth-image warping of R reference views (approximate; accuracy in `bench --warp`).
+    Warp,
 }
 
 pub struct MethodEntry {
@@ -84,7 +88,7 @@ pub fn scenes(ctx: &autostereo::gpu::GpuContext, plan: &super::Plan) -> Result<V
         });
     }
     // The sweep's duplication and N-pass grow with N to 64: the smaller dragon keeps it short.
-    let dragon = if quick || plan.sweep {
+    let dragon = if quick || plan.sweep || plan.warp || plan.view_scale {
         "dragon_vrip_res3.ply"
     } else {
         "dragon_vrip.ply"
@@ -151,6 +155,31 @@ fn mesh_scene(device: &wgpu::Device, name: String, mesh: &Mesh) -> Result<BenchS
     })
 }
 
+/// The warp rows of every run: R = 2 references, straight into the spatial image and Beck's
+/// way through N view images.
+pub const WARP_DIRECT: &str = "warp (R = 2, direct, approximate)";
+pub const WARP_PER_VIEW: &str = "warp (R = 2, per-view, approximate)";
+
+/// [`Method::Warp`] from `references` (a renderer built for it) with `options`.
+pub fn warp_renderer<S: ?Sized + 'static>(
+    device: &wgpu::Device,
+    references: impl ReferenceRenderer<S> + 'static,
+    options: SceneWarpOptions,
+) -> Result<Box<dyn Renderer<S>>> {
+    Ok(Box::new(SceneWarp::new(
+        device,
+        Box::new(references),
+        options,
+    )?))
+}
+
+fn on_path(path: WarpPath) -> SceneWarpOptions {
+    SceneWarpOptions {
+        path,
+        ..Default::default()
+    }
+}
+
 /// Every method measured on `scene`: each single-pass path/mode, N-pass, single view, the
 /// duplication methods.
 pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEntry>> {
@@ -165,6 +194,11 @@ pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEn
                 Ok(AnyRenderer::Volume(Box::new(VolumeRaycaster::new(
                     device, m,
                 )?)))
+            };
+            let warp = |path| -> Result<AnyRenderer> {
+                let references = VolumeRaycaster::new(device, Method::Warp)?;
+                let r = warp_renderer(device, references, on_path(path))?;
+                Ok(AnyRenderer::Volume(r))
             };
             let slices = |a| -> Result<AnyRenderer> {
                 Ok(AnyRenderer::Volume(Box::new(VolumeSlicer::new(device, a)?)))
@@ -189,6 +223,8 @@ pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEn
                 entry("single-view", Kind::SingleView, ray(Method::SingleView)?),
                 entry("tiled", Kind::Duplication, ray(Method::Tiled)?),
                 entry("layered", Kind::Duplication, ray(Method::Layered)?),
+                entry(WARP_DIRECT, Kind::Warp, warp(WarpPath::Direct)?),
+                entry(WARP_PER_VIEW, Kind::Warp, warp(WarpPath::PerView)?),
             ]
         }
         AnyScene::Points(s) => {
@@ -200,6 +236,12 @@ pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEn
                 Ok(AnyRenderer::Points(Box::new(PointSplatter::new(
                     device, m, options,
                 )?)))
+            };
+            let warp = |path| -> Result<AnyRenderer> {
+                let options = SplatOptions::for_scene(s, 0.01);
+                let references = PointSplatter::new(device, Method::Warp, options)?;
+                let r = warp_renderer(device, references, on_path(path))?;
+                Ok(AnyRenderer::Points(r))
             };
             vec![
                 entry(
@@ -232,6 +274,8 @@ pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEn
                     Kind::Duplication,
                     splat(Method::Layered, SplatDepth::Exact)?,
                 ),
+                entry(WARP_DIRECT, Kind::Warp, warp(WarpPath::Direct)?),
+                entry(WARP_PER_VIEW, Kind::Warp, warp(WarpPath::PerView)?),
             ]
         }
         AnyScene::Mesh(_) => {
@@ -288,6 +332,14 @@ pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEn
                 Kind::Duplication,
                 AnyRenderer::Mesh(Box::new(MeshMrt::new(device)?)),
             ));
+            for (name, path) in [
+                (WARP_DIRECT, WarpPath::Direct),
+                (WARP_PER_VIEW, WarpPath::PerView),
+            ] {
+                let references = MeshNPass::new(device, Method::Warp)?;
+                let r = warp_renderer(device, references, on_path(path))?;
+                v.push(entry(name, Kind::Warp, AnyRenderer::Mesh(r)));
+            }
             v
         }
     })

@@ -27,6 +27,9 @@ pub struct Tradeoff {
     pub ms: f64,
     pub psnr_db: f64,
     pub frac_off_2: f64,
+    /// Share of subpixels filled rather than seen (warping only).
+    #[serde(default)]
+    pub hole_share: Option<f64>,
 }
 
 /// A feature a scene can do without, and the time with and without it.
@@ -73,6 +76,7 @@ impl Probe<'_> {
             ms,
             psnr_db: d.psnr_db,
             frac_off_2: d.frac_off_2,
+            hole_share: None,
         })
     }
 }

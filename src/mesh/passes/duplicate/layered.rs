@@ -71,8 +71,10 @@ struct Multiview {
     pipelines: PipelineCache<u32, wgpu::RenderPipeline>,
     npass: NPassHarness,
     /// One depth layer per layer of a pass.
-    depth: Option<wgpu::Texture>,
+    depth: Option<crate::render::view_layers::DepthArray>,
     prepared: Option<PreparedFor>,
+    /// The parallel camera model's crop, recorded last.
+    crop: crate::render::camera_crop::CameraCrop,
 }
 
 impl Multiview {
@@ -92,6 +94,7 @@ impl Multiview {
             frame: FrameBinding::new(device, &frame_layout),
             depth: None,
             prepared: None,
+            crop: crate::render::camera_crop::CameraCrop::new(device)?,
         })
     }
 
@@ -100,7 +103,7 @@ impl Multiview {
         self.npass.prepare(device, frame)?;
         let passes = batches(frame.camera.views, self.views.max_per_pass);
         let deepest = passes.iter().map(|r| r.len() as u32).max().unwrap_or(1);
-        depth_array(&mut self.depth, device, frame.size, deepest);
+        depth_array(&mut self.depth, device, frame.view_size(), deepest)?;
         for layers in passes.iter().map(|r| r.len() as u32) {
             let layout = &self.layout;
             self.pipelines.prepare(device, layers, |modules| {
@@ -124,10 +127,10 @@ impl Multiview {
     ) -> Result<()> {
         check_target(frame, target)?;
         check_prepared("MeshLayered", &self.prepared, &PreparedFor::of(frame))?;
-        self.frame.write(device, frame);
+        self.frame.write(device, &frame.for_view_images());
         let BoundBatches { passes, group } = self.views.bind(device, &frame.camera);
         let layers = &self.npass.layers().texture;
-        let depth = self.depth.as_ref().expect("allocated by prepare");
+        let depth = &self.depth.as_ref().expect("allocated by prepare").texture;
         for (i, range) in passes.iter().enumerate() {
             let count = range.len() as u32;
             let color = layer_range(layers, range.start, count);
@@ -148,6 +151,7 @@ impl Multiview {
             draw_mesh(&mut pass, mesh, 1);
         }
         self.npass.composite(device, encoder, &self.frame, target);
+        self.crop.encode(device, encoder, frame, target);
         Ok(())
     }
 }

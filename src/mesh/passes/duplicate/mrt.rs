@@ -29,6 +29,8 @@ pub struct MeshMrt {
     pipelines: PipelineCache<u32, wgpu::RenderPipeline>,
     npass: NPassHarness,
     prepared: Option<PreparedFor>,
+    /// The parallel camera model's crop, recorded last.
+    crop: crate::render::camera_crop::CameraCrop,
 }
 
 impl MeshMrt {
@@ -54,6 +56,7 @@ impl MeshMrt {
             npass: NPassHarness::new(device, &frame_layout)?,
             frame: FrameBinding::new(device, &frame_layout),
             prepared: None,
+            crop: crate::render::camera_crop::CameraCrop::new(device)?,
         })
     }
 
@@ -106,7 +109,7 @@ impl Renderer<MeshBuffers> for MeshMrt {
     ) -> Result<()> {
         check_target(frame, target)?;
         check_prepared("MeshMrt", &self.prepared, &PreparedFor::of(frame))?;
-        self.frame.write(device, frame);
+        self.frame.write(device, &frame.for_view_images());
         let BoundBatches { passes, group } = self.views.bind(device, &frame.camera);
         let layers = self.npass.layers();
         for (i, range) in passes.iter().enumerate() {
@@ -131,6 +134,7 @@ impl Renderer<MeshBuffers> for MeshMrt {
             draw_mesh(&mut pass, mesh, targets);
         }
         self.npass.composite(device, encoder, &self.frame, target);
+        self.crop.encode(device, encoder, frame, target);
         Ok(())
     }
 }

@@ -7,7 +7,7 @@ use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
 use crate::mesh::passes::npass::PreparedFor;
 use crate::mesh::MeshBuffers;
-use crate::render::atlas::{Atlas, AtlasCompositor};
+use crate::render::atlas::{Atlas, AtlasCompositor, TileSampling};
 use crate::render::pipeline::{
     begin_pass_to, bind_group_layout, cleared, pipeline_layout, uniform_entry, PassTargets,
 };
@@ -68,6 +68,8 @@ pub struct MeshTiled {
     compositor: AtlasCompositor,
     atlas: Option<Atlas>,
     prepared: Option<PreparedFor>,
+    /// The parallel camera model's crop, recorded last.
+    crop: crate::render::camera_crop::CameraCrop,
 }
 
 impl MeshTiled {
@@ -97,6 +99,7 @@ impl MeshTiled {
             frame: FrameBinding::new(device, &frame_layout),
             atlas: None,
             prepared: None,
+            crop: crate::render::camera_crop::CameraCrop::new(device)?,
         })
     }
 
@@ -115,7 +118,7 @@ impl Renderer<MeshBuffers> for MeshTiled {
         frame: &Frame,
     ) -> Result<()> {
         begin_prepare(device, frame, &mut self.prepared)?;
-        let layout = QuiltLayout::for_views(frame.camera.views, frame.size);
+        let layout = QuiltLayout::for_views(frame.camera.views, frame.view_size());
         if !self.atlas.as_ref().is_some_and(|a| a.fits(&layout, true)) {
             self.atlas = None; // free before allocating the replacement
             self.atlas = Some(Atlas::new(device, layout, true)?);
@@ -134,10 +137,10 @@ impl Renderer<MeshBuffers> for MeshTiled {
     ) -> Result<()> {
         check_target(frame, target)?;
         check_prepared("MeshTiled", &self.prepared, &PreparedFor::of(frame))?;
-        self.frame.write(device, frame);
+        self.frame.write(device, &frame.for_view_images());
         let atlas = self.atlas.as_ref().expect("allocated by prepare");
         let views = views_buffer(device, &frame.camera);
-        let quilt = atlas.layout.uniform_buffer(device);
+        let quilt = atlas.layout.uniform_buffer(device, atlas.layout.uniform());
         let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("tiled views"),
             layout: &self.views_layout,
@@ -170,8 +173,15 @@ impl Renderer<MeshBuffers> for MeshTiled {
             pass.set_bind_group(1, &group, &[]);
             draw_mesh(&mut pass, mesh, frame.camera.views);
         }
-        self.compositor
-            .encode(device, encoder, &self.frame, atlas, target);
+        self.compositor.encode(
+            device,
+            encoder,
+            &self.frame,
+            atlas,
+            target,
+            TileSampling::Bilinear,
+        );
+        self.crop.encode(device, encoder, frame, target);
         Ok(())
     }
 

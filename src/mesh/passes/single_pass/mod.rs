@@ -120,6 +120,8 @@ pub struct MeshSinglePass {
     pipelines: PipelineCache<Specialization, Pipelines>,
     scratch: Scratch,
     prepared: Option<PreparedFor>,
+    /// The parallel camera model's crop, recorded last.
+    crop: crate::render::camera_crop::CameraCrop,
     fence: StorageFence,
 }
 
@@ -144,6 +146,7 @@ impl MeshSinglePass {
             pipelines: PipelineCache::new("single-pass mesh"),
             scratch: Scratch::default(),
             prepared: None,
+            crop: crate::render::camera_crop::CameraCrop::new(device)?,
             fence: StorageFence::new(device)?,
         })
     }
@@ -181,6 +184,7 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
         frame: &Frame,
     ) -> Result<()> {
         begin_prepare(device, frame, &mut self.prepared)?;
+        frame.check_full_views("single-pass")?;
         let key = PreparedFor::of(frame, mesh);
         let (layouts, options) = (&self.layouts, self.options);
         self.pipelines.prepare(device, key.spec, |modules| {
@@ -201,6 +205,7 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
         target: &SpatialTarget,
     ) -> Result<()> {
         check_target(frame, target)?;
+        frame.check_full_views("single-pass")?;
         let key = PreparedFor::of(frame, mesh);
         check_prepared("MeshSinglePass", &self.prepared, &key)?;
         let (spec, triangles) = (key.spec, key.triangles);
@@ -279,6 +284,7 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
                 &target.view,
             );
         }
+        self.crop.encode(device, encoder, frame, target);
         Ok(())
     }
 }

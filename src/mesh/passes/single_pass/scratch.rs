@@ -78,7 +78,7 @@ impl Scratch {
                     frame.size,
                     DEPTH_FORMAT,
                     wgpu::TextureUsages::RENDER_ATTACHMENT,
-                );
+                )?;
             }
             Visibility::Exact => {
                 // K·W subpixel columns: a wide frame can pass the size check and fail here.
@@ -91,7 +91,7 @@ impl Scratch {
                     wide,
                     DEPTH_FORMAT,
                     wgpu::TextureUsages::RENDER_ATTACHMENT,
-                );
+                )?;
                 cached_texture_2d(
                     &mut self.triangle_ids,
                     device,
@@ -99,7 +99,7 @@ impl Scratch {
                     wide,
                     TRIANGLE_ID_FORMAT,
                     wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
-                );
+                )?;
             }
             Visibility::Atomic | Visibility::Compute => {
                 let bytes = w as u64 * h as u64 * k as u64 * KEY_BYTES;

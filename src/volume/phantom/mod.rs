@@ -1,10 +1,13 @@
-//! Built-in data sets generated in code: a CT-like head phantom and the Marschner–Lobb signal.
+//! Built-in data sets generated in code: a CT-like head and the Marschner–Lobb signal.
+
+mod head;
 
 use super::{check_dims, Volume};
 use crate::error::Result;
 
-/// A CT-like head: skin, skull, brain with ventricles, a few dense lesions, on a `n³` grid with
-/// slightly anisotropic spacing (z 1.25× coarser, as CT slices often are).
+/// A contrast CT of a head and neck (face, skull, teeth, spine, arteries, folded brain; see
+/// `head.rs`) on a `n³` grid with slightly anisotropic spacing (z 1.25× coarser, as CT slices
+/// often are).
 pub fn ct_head(n: u32) -> Result<Volume> {
     let n = n.max(4);
     let nz = ((n as f32) / 1.25).round().max(4.0) as u32;
@@ -20,48 +23,11 @@ pub fn ct_head(n: u32) -> Result<Volume> {
                     (y as f32 + 0.5) / n as f32 * 2.0 - 1.0,
                     (z as f32 + 0.5) / nz as f32 * 2.0 - 1.0,
                 ];
-                data.push(head_density(p));
+                data.push(head::density(p));
             }
         }
     }
     Volume::new([n, n, nz], spacing, data)
-}
-
-/// Ellipsoid "radius" of p for semi-axes r around centre c (1 on the surface).
-fn ellipsoid(p: [f32; 3], c: [f32; 3], r: [f32; 3]) -> f32 {
-    let q = [0, 1, 2].map(|i| (p[i] - c[i]) / r[i]);
-    (q[0] * q[0] + q[1] * q[1] + q[2] * q[2]).sqrt()
-}
-
-/// 1 inside an ellipsoid, 0 outside, with a smooth shell (no staircase contours when shaded).
-fn inside(r: f32) -> f32 {
-    const SOFT: f32 = 0.04;
-    let t = ((r - (1.0 - SOFT)) / (2.0 * SOFT)).clamp(0.0, 1.0);
-    1.0 - t * t * (3.0 - 2.0 * t)
-}
-
-fn mix(a: f32, b: f32, t: f32) -> f32 {
-    a + (b - a) * t
-}
-
-fn head_density(p: [f32; 3]) -> f32 {
-    let origin = [0.0; 3];
-    let brain = 0.45 + 0.05 * (6.0 * p[0]).sin() * (5.0 * p[1]).cos();
-    // Layers from the outside in: skin and soft tissue, bone, brain with a little texture.
-    let mut d = 0.3 * inside(ellipsoid(p, origin, [0.72, 0.88, 0.8]));
-    d = mix(d, 0.95, inside(ellipsoid(p, origin, [0.66, 0.82, 0.74])));
-    d = mix(d, brain, inside(ellipsoid(p, origin, [0.6, 0.76, 0.68])));
-    for side in [-0.12f32, 0.12] {
-        d = mix(
-            d,
-            0.1,
-            inside(ellipsoid(p, [side, 0.05, 0.0], [0.07, 0.3, 0.12])),
-        ); // ventricles
-    }
-    for c in [[0.25, 0.3, 0.1], [-0.3, -0.2, -0.2], [0.1, -0.4, 0.35]] {
-        d = mix(d, 0.75, inside(ellipsoid(p, c, [0.08, 0.08, 0.08]))); // dense lesions
-    }
-    d
 }
 
 /// The Marschner–Lobb test signal (f_M = 6, α = 0.25) on an `n³` grid over [−1, 1]³, the

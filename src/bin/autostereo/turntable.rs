@@ -1,0 +1,160 @@
+//! `--turntable FRAMES [--axis x|y|z]`: the scene turned once around an axis through the centre
+//! of its bounds, as FRAMES numbered files `{stem}_{k:04}.png` in `--output`'s format (spatial
+//! images, quilts, anaglyphs…), each rendered by the run's renderer. The camera, lights and
+//! display stay put, as on a real turntable; a progress bar runs on stderr while it renders
+//! and the frame times are summarised at the end.
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use anyhow::{bail, Result};
+use autostereo::camera::Bounds;
+use autostereo::frame::Frame;
+use autostereo::gpu::GpuContext;
+use autostereo::render::Renderer;
+use glam::{Mat4, Vec3};
+
+use crate::args::RenderArgs;
+
+/// The axis the scene turns around (world coordinates, through the centre of its bounds).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Axis {
+    X,
+    Y,
+    Z,
+}
+
+/// The turntable's flags.
+#[derive(clap::Args, Clone, Debug)]
+pub struct TurntableArgs {
+    /// Render one full turn of the scene as FRAMES numbered files `{--out stem}_{k:04}.png`
+    /// (quilts: `{stem}_{k:04}_qs…png`) in --output's format, frame k turned by k/FRAMES·360°.
+    #[arg(long, value_name = "FRAMES", value_parser = crate::args::frames_parser())]
+    pub turntable: Option<u32>,
+    /// The turntable's axis through the scene's centre (y: upright, as on a real turntable).
+    #[arg(long, value_enum, default_value = "y", requires = "turntable")]
+    pub axis: Axis,
+}
+
+impl TurntableArgs {
+    /// Fail early: a turntable writes to numbered files named after `--out`.
+    pub fn check(&self, out: Option<&Path>) -> Result<()> {
+        if self.turntable.is_some() && out.is_none() {
+            bail!("--turntable writes numbered files named after --out, which is missing");
+        }
+        Ok(())
+    }
+}
+
+/// What a turntable run wrote and how long its frames took.
+pub struct Summary {
+    pub frames: u32,
+    pub first: PathBuf,
+    pub last: PathBuf,
+    /// Per-frame wall time (render, read back, write), ms.
+    pub frame_ms: Vec<f64>,
+    pub seconds: f64,
+}
+
+impl Summary {
+    /// The `--json` fields.
+    pub fn fields(&self) -> serde_json::Value {
+        let (min, median, max) = self.stats();
+        serde_json::json!({
+            "turntable_frames": self.frames,
+            "turntable_first": self.first,
+            "turntable_last": self.last,
+            "turntable_frame_ms_min": min,
+            "turntable_frame_ms_median": median,
+            "turntable_frame_ms_max": max,
+            "turntable_seconds": self.seconds,
+        })
+    }
+
+    fn stats(&self) -> (f64, f64, f64) {
+        let min = self.frame_ms.iter().copied().fold(f64::INFINITY, f64::min);
+        let max = self.frame_ms.iter().copied().fold(0.0, f64::max);
+        (min, autostereo::timing::median(&self.frame_ms), max)
+    }
+
+    /// One line for stderr.
+    pub fn line(&self) -> String {
+        let (min, median, max) = self.stats();
+        format!(
+            "turntable: {} frames in {:.1} s, {median:.0} ms/frame median ({min:.0}…{max:.0}; \
+             render, read back and write) → {} … {}",
+            self.frames,
+            self.seconds,
+            self.first.display(),
+            self.last.display()
+        )
+    }
+}
+
+/// The scene of `frame` turned by `angle` radians around `axis` through `center`: the
+/// camera's world → eye transform composed with the turn (still rigid).
+pub fn turned(frame: &Frame, axis: Axis, center: Vec3, angle: f32) -> Frame {
+    let axis = match axis {
+        Axis::X => Vec3::X,
+        Axis::Y => Vec3::Y,
+        Axis::Z => Vec3::Z,
+    };
+    let turn = Mat4::from_translation(center)
+        * Mat4::from_axis_angle(axis, angle)
+        * Mat4::from_translation(-center);
+    let mut turned = frame.clone();
+    turned.camera.eye_from_world = frame.camera.eye_from_world * turn;
+    turned
+}
+
+/// `{stem}_{k:04}.png` next to `out`.
+fn numbered(out: &Path, k: u32) -> PathBuf {
+    PathBuf::from(format!("{}_{k:04}.png", out.with_extension("").display()))
+}
+
+/// Render the turntable `args` asks for; `None` when it asks for none.
+pub fn render<S: ?Sized>(
+    ctx: &GpuContext,
+    renderer: &mut dyn Renderer<S>,
+    scene: &S,
+    frame: &Frame,
+    bounds: Bounds,
+    common: &RenderArgs,
+) -> Result<Option<Summary>> {
+    let (Some(frames), Some(out)) = (common.turntable.turntable, &common.out) else {
+        return Ok(None);
+    };
+    let start = Instant::now();
+    let bar = crate::progress::bar(u64::from(frames), "turntable");
+    let mut written = Vec::new();
+    let mut frame_ms = Vec::new();
+    for k in 0..frames {
+        let angle = std::f32::consts::TAU * k as f32 / frames as f32;
+        let this = turned(frame, common.turntable.axis, bounds.center(), angle);
+        let t = Instant::now();
+        let paths =
+            crate::output::write(ctx, renderer, scene, &this, common, None, &numbered(out, k))?;
+        frame_ms.push(t.elapsed().as_secs_f64() * 1e3);
+        written.extend(paths);
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    Ok(Some(Summary {
+        frames,
+        first: written.first().cloned().unwrap_or_default(),
+        last: written.last().cloned().unwrap_or_default(),
+        frame_ms,
+        seconds: start.elapsed().as_secs_f64(),
+    }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbered_files_keep_the_directory_and_drop_the_extension() {
+        let p = numbered(Path::new("out/head.png"), 7);
+        assert_eq!(p, PathBuf::from("out/head_0007.png"));
+    }
+}

@@ -1,0 +1,137 @@
+//! `autostereo view`: the interactive viewer, in a real window, on the library's public API
+//! (surface, prepare/encode into our encoder, `OutputBlit` into the surface texture). The mask
+//! follows the window: the display's origin is the client area's position on the screen.
+
+mod app;
+mod orbit;
+mod scene;
+
+use std::path::PathBuf;
+
+use anyhow::Result;
+use autostereo::render::Method;
+
+use crate::args::{check_output, parse_pair, parse_size, CameraArgs, DisplayArgs};
+
+pub use scene::KindArg;
+
+/// What `--exercise` switches.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Switch {
+    Methods,
+    Displays,
+    Sizes,
+}
+
+/// What the window shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Preview {
+    /// The interleaved image for the panel.
+    Spatial,
+    /// One view on every pixel (the centre view; keys , and . step through the views), for
+    /// ordinary monitors.
+    View,
+    /// Red-cyan anaglyph (Dubois) of the centre view and the next.
+    Anaglyph,
+    /// The centre view and the next side by side, each half the window's width.
+    SideBySide,
+    /// Every view in a Looking Glass quilt (view 0 bottom-left).
+    Quilt,
+}
+
+impl Preview {
+    /// The stereo format of the two-view previews.
+    fn stereo(self) -> Option<autostereo::render::StereoFormat> {
+        use autostereo::render::StereoFormat;
+        match self {
+            Preview::Anaglyph => Some(StereoFormat::AnaglyphDubois),
+            Preview::SideBySide => Some(StereoFormat::SideBySide),
+            Preview::Spatial | Preview::View | Preview::Quilt => None,
+        }
+    }
+
+    /// The next preview (key p).
+    fn next(self) -> Self {
+        match self {
+            Preview::Spatial => Preview::View,
+            Preview::View => Preview::Anaglyph,
+            Preview::Anaglyph => Preview::SideBySide,
+            Preview::SideBySide => Preview::Quilt,
+            Preview::Quilt => Preview::Spatial,
+        }
+    }
+}
+
+#[derive(clap::Args)]
+pub struct ViewArgs {
+    /// OBJ (mesh), PLY (points), NRRD/.den (volume); the built-in head volume when omitted.
+    file: Option<PathBuf>,
+    /// What the file holds, where its extension does not say.
+    #[arg(long, value_enum)]
+    kind: Option<KindArg>,
+    #[command(flatten)]
+    display: DisplayArgs,
+    #[command(flatten)]
+    camera: CameraArgs,
+    /// Window client-area size WxH in pixels.
+    #[arg(long, value_parser = parse_size, default_value = "512x512")]
+    size: [u32; 2],
+    /// Window position X,Y on the screen (the mask's origin follows it).
+    #[arg(long, value_parser = parse_pair)]
+    position: Option<[u32; 2]>,
+    /// Full screen on monitor MONITOR (0 = the first; default 0).
+    #[arg(long, num_args = 0..=1, default_missing_value = "0")]
+    fullscreen: Option<usize>,
+    /// Starting method (keys: m cycles through the primitive's methods).
+    #[arg(long, value_parser = crate::args::method_parser(), default_value = "single-pass")]
+    method: Method,
+    /// What the window shows (key: p).
+    #[arg(long, value_enum, default_value = "spatial")]
+    preview: Preview,
+    /// Save what was presented as PNG (read back from the surface texture) after
+    /// --quit-after-frames frames, or after 3.
+    #[arg(long)]
+    screenshot: Option<PathBuf>,
+    /// Exit after K presented frames.
+    #[arg(long)]
+    quit_after_frames: Option<u32>,
+    /// Move the window to X,Y after frame K (tests: the mask phase must follow): K:X,Y.
+    #[arg(long, value_parser = parse_move)]
+    move_after: Option<(u32, [u32; 2])>,
+    /// Scripted stress run for K frames: switch the method every 10 frames, the display every
+    /// 70, the window size every 35; prints the resident memory every 50 frames and the
+    /// period after which the run's state repeats.
+    #[arg(long)]
+    exercise: Option<u32>,
+    /// What the exercise run switches (default all).
+    #[arg(
+        long,
+        value_enum,
+        value_delimiter = ',',
+        default_value = "methods,displays,sizes"
+    )]
+    exercise_switch: Vec<Switch>,
+}
+
+fn parse_move(s: &str) -> Result<(u32, [u32; 2]), String> {
+    let (frame, at) = s
+        .split_once(':')
+        .ok_or_else(|| format!("'{s}' is not K:X,Y"))?;
+    let frame = frame
+        .trim()
+        .parse()
+        .map_err(|_| format!("'{s}': K is not a whole number"))?;
+    Ok((frame, parse_pair(at)?))
+}
+
+pub fn run(args: ViewArgs) -> Result<()> {
+    if let Some(path) = &args.screenshot {
+        check_output(path)?;
+    }
+    if args.quit_after_frames == Some(0) {
+        anyhow::bail!("--quit-after-frames 0: at least one frame");
+    }
+    // Fail on a bad display before opening a window.
+    args.display.display()?;
+    app::run(args)
+}

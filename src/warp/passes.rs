@@ -1,0 +1,423 @@
+//! [`SceneWarp`]: reference views through the scene's own renderer, the nearness range of
+//! each of their rows (`wgsl/warp/row_bounds.wgsl`: it bounds the search), then one
+//! full-screen warp pass (`wgsl/warp/warp.wgsl`) straight into the spatial image, or into N
+//! view images first ([`WarpPath::PerView`], Beck's way).
+
+use bytemuck::{Pod, Zeroable};
+
+use super::references::{reference_frame, ReferenceImages, ReferenceRenderer};
+use super::WarpPath;
+use crate::error::{Error, Result};
+use crate::frame::{Frame, FrameBinding};
+use crate::render::gpu_buffer::GpuBuffer;
+use crate::render::npass::NPassHarness;
+use crate::render::pass_params::constants_buffer;
+use crate::render::pipeline::{
+    bind_group_layout, compilation, draw_fullscreen, fullscreen_pipeline, pipeline_layout,
+    storage_entry, uniform_entry,
+};
+use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
+use crate::target::{SpatialTarget, SPATIAL_FORMAT};
+
+/// References when none are asked for: the two outermost views, every other view interpolated
+/// between them.
+pub const DEFAULT_REFERENCES: u32 = 2;
+
+/// Two references blend where their nearness differs by at most this share (2 % of the depth):
+/// they see the same surface. Beyond it the nearer surface wins.
+pub const DEFAULT_SAME_SURFACE: f32 = 0.02;
+
+/// How a scene is warped.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SceneWarpOptions {
+    /// Reference views R (1 ≤ R ≤ N), spread evenly over the views' span.
+    pub references: u32,
+    /// Neighbours warped further apart than this (pixels) straddle a disocclusion
+    /// ([`crate::rgbd::passes::DEFAULT_HOLE_GAP`]).
+    pub hole_gap: f32,
+    /// See [`DEFAULT_SAME_SURFACE`].
+    pub same_surface: f32,
+    /// Write the hole mask instead of colour: 255 on every subpixel that was filled rather
+    /// than seen by a reference.
+    pub hole_mask: bool,
+    /// See [`WarpPath`].
+    pub path: WarpPath,
+}
+
+impl Default for SceneWarpOptions {
+    fn default() -> Self {
+        Self {
+            references: DEFAULT_REFERENCES,
+            hole_gap: crate::rgbd::passes::DEFAULT_HOLE_GAP,
+            same_surface: DEFAULT_SAME_SURFACE,
+            hole_mask: false,
+            path: WarpPath::Direct,
+        }
+    }
+}
+
+impl SceneWarpOptions {
+    /// Check the values (the references against N are checked by `prepare`).
+    pub fn check(&self) -> Result<()> {
+        if !(self.hole_gap.is_finite() && self.hole_gap >= 1.0) {
+            return Err(Error::invalid(
+                "hole gap",
+                format!("{}: at least 1 pixel", self.hole_gap),
+            ));
+        }
+        if !(0.0..=1.0).contains(&self.same_surface) {
+            return Err(Error::invalid(
+                "same surface",
+                format!("{}: a share of the depth in 0…1", self.same_surface),
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// The warp's constants. Keep in sync with `struct ReferenceWarp` in `wgsl/warp/warp.wgsl`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct ReferenceWarpUniform {
+    size: [u32; 2],
+    references: u32,
+    fixed_view: u32,
+    parallax: f32,
+    hole_gap: f32,
+    hole_mask: u32,
+    same_surface: f32,
+}
+crate::shader::gpu_layout!(
+    ReferenceWarpUniform,
+    "ReferenceWarp",
+    [
+        size,
+        references,
+        fixed_view,
+        parallax,
+        hole_gap,
+        hole_mask,
+        same_surface
+    ]
+);
+
+impl ReferenceWarpUniform {
+    /// The constants of warping `frame`'s views from `options.references` references, into
+    /// every subpixel's view (`view` = None) or into view `view` everywhere.
+    ///
+    /// A point at eye depth d lands at `x_f = p.x·fd/d + vd·(1 − fd/d)` on the focal plane
+    /// (`MultiViewCamera::project_offset`), so between cameras at vd_r and vd_v it moves by
+    /// `−(vd_v − vd_r)·(n − 1)` with nearness n = fd/d; vd = t·(N−1)/2·e for view position t.
+    fn new(options: &SceneWarpOptions, frame: &Frame, view: Option<u32>) -> Self {
+        let camera = &frame.camera;
+        let half_span = (camera.views as f32 - 1.0) * 0.5 * camera.separation;
+        let pixels_per_unit = frame.size[0] as f32 / camera.focal_window().x;
+        Self {
+            size: frame.size,
+            references: options.references,
+            fixed_view: view.unwrap_or(u32::MAX),
+            parallax: -half_span * pixels_per_unit,
+            hole_gap: options.hole_gap,
+            hole_mask: u32::from(options.hole_mask),
+            same_surface: options.same_surface,
+        }
+    }
+}
+
+/// What a [`SceneWarp`] was prepared for.
+#[derive(Clone, Debug, PartialEq)]
+struct PreparedFor {
+    size: [u32; 2],
+    views: u32,
+    references: u32,
+}
+
+/// [`crate::render::Method::Warp`] for scenes of type `S`: R reference views rendered by a
+/// [`ReferenceRenderer`] of `S`, then warped into every view.
+pub struct SceneWarp<S: ?Sized> {
+    options: SceneWarpOptions,
+    references: Box<dyn ReferenceRenderer<S>>,
+    images: Option<ReferenceImages>,
+    /// Per reference and row, the nearness range of its surfaces (2 × f32).
+    row_bounds: GpuBuffer,
+    bounds_layout: wgpu::BindGroupLayout,
+    bounds_pipeline: wgpu::ComputePipeline,
+    layout: wgpu::BindGroupLayout,
+    pipeline: wgpu::RenderPipeline,
+    frame: FrameBinding,
+    npass: NPassHarness,
+    prepared: Option<PreparedFor>,
+    /// The parallel camera model's crop, recorded last.
+    crop: crate::render::camera_crop::CameraCrop,
+}
+
+impl<S: ?Sized> SceneWarp<S> {
+    /// Warp the references `references` renders, with `options`.
+    pub fn new(
+        device: &wgpu::Device,
+        references: Box<dyn ReferenceRenderer<S>>,
+        options: SceneWarpOptions,
+    ) -> Result<Self> {
+        options.check()?;
+        let frame_layout = crate::frame::frame_bind_group_layout(device);
+        let array = |binding, sample_type| wgpu::BindGroupLayoutEntry {
+            binding,
+            visibility: wgpu::ShaderStages::FRAGMENT,
+            ty: wgpu::BindingType::Texture {
+                sample_type,
+                view_dimension: wgpu::TextureViewDimension::D2Array,
+                multisampled: false,
+            },
+            count: None,
+        };
+        let layout = bind_group_layout(
+            device,
+            "reference warp",
+            &[
+                array(0, wgpu::TextureSampleType::Float { filterable: false }),
+                array(1, wgpu::TextureSampleType::Uint),
+                uniform_entry(2, wgpu::ShaderStages::FRAGMENT),
+                storage_entry(3, true, wgpu::ShaderStages::FRAGMENT),
+            ],
+        );
+        let bounds_layout = bind_group_layout(
+            device,
+            "reference row bounds",
+            &[
+                wgpu::BindGroupLayoutEntry {
+                    visibility: wgpu::ShaderStages::COMPUTE,
+                    ..array(0, wgpu::TextureSampleType::Uint)
+                },
+                storage_entry(1, false, wgpu::ShaderStages::COMPUTE),
+            ],
+        );
+        let bounds_module = crate::shader::module(device, "warp/row_bounds.wgsl")?;
+        let bounds_pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some("reference row bounds"),
+            layout: Some(&pipeline_layout(
+                device,
+                "reference row bounds",
+                &[Some(&bounds_layout)],
+            )),
+            module: &bounds_module,
+            entry_point: Some("cs_main"),
+            compilation_options: compilation(&[]),
+            cache: None,
+        });
+        let module = crate::shader::module(device, "warp/warp.wgsl")?;
+        let pipeline = fullscreen_pipeline(
+            device,
+            "reference warp",
+            &module,
+            &[Some(&frame_layout), Some(&layout)],
+            SPATIAL_FORMAT,
+        );
+        Ok(Self {
+            options,
+            references,
+            images: None,
+            row_bounds: GpuBuffer::new("reference row bounds", wgpu::BufferUsages::STORAGE),
+            bounds_layout,
+            bounds_pipeline,
+            layout,
+            pipeline,
+            frame: FrameBinding::new(device, &frame_layout),
+            npass: NPassHarness::new(device, &frame_layout)?,
+            prepared: None,
+            crop: crate::render::camera_crop::CameraCrop::new(device)?,
+        })
+    }
+
+    /// The options frames are warped with.
+    pub fn options(&self) -> SceneWarpOptions {
+        self.options
+    }
+
+    /// Change the options (e.g. the hole mask); takes effect at the next `prepare`.
+    pub fn set_options(&mut self, options: SceneWarpOptions) -> Result<()> {
+        options.check()?;
+        self.options = options;
+        self.prepared = None;
+        Ok(())
+    }
+
+    /// The reference views of the last frame (layer j = reference j), if any.
+    pub fn reference_images(&self) -> Option<&ReferenceImages> {
+        self.images.as_ref()
+    }
+
+    /// One line on what the warp does, for reports.
+    pub fn describe(&self) -> String {
+        format!(
+            "{} references ({}), {:?} path",
+            self.options.references,
+            self.references.depth_meaning(),
+            self.options.path
+        )
+    }
+
+    fn needs(&self, frame: &Frame) -> PreparedFor {
+        PreparedFor {
+            size: frame.size,
+            views: frame.camera.views,
+            references: self.options.references,
+        }
+    }
+
+    /// The references' textures and the constants of `view` (a buffer of the frame's own).
+    fn bind_group(
+        &self,
+        device: &wgpu::Device,
+        frame: &Frame,
+        view: Option<u32>,
+    ) -> wgpu::BindGroup {
+        let images = self.images.as_ref().expect("allocated by prepare");
+        let uniform = ReferenceWarpUniform::new(&self.options, frame, view);
+        let constants = constants_buffer(
+            device,
+            "reference warp constants",
+            wgpu::BufferUsages::UNIFORM,
+            bytemuck::bytes_of(&uniform),
+        );
+        device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("reference warp"),
+            layout: &self.layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: wgpu::BindingResource::TextureView(&images.color.array_view),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: wgpu::BindingResource::TextureView(&images.nearness.array_view),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: constants.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 3,
+                    resource: self.row_bounds.binding(),
+                },
+            ],
+        })
+    }
+
+    /// Record the row-bounds pass over the references just rendered.
+    fn encode_row_bounds(&self, device: &wgpu::Device, encoder: &mut wgpu::CommandEncoder) {
+        let images = self.images.as_ref().expect("allocated by prepare");
+        let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("reference row bounds"),
+            layout: &self.bounds_layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: wgpu::BindingResource::TextureView(&images.nearness.array_view),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: self.row_bounds.binding(),
+                },
+            ],
+        });
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some("reference row bounds"),
+            timestamp_writes: None,
+        });
+        pass.set_pipeline(&self.bounds_pipeline);
+        pass.set_bind_group(0, &group, &[]);
+        let rows = images.size()[1];
+        pass.dispatch_workgroups(rows.div_ceil(ROW_BOUNDS_WORKGROUP), images.references(), 1);
+    }
+}
+
+/// Keep in sync with `@workgroup_size` in `wgsl/warp/row_bounds.wgsl`.
+const ROW_BOUNDS_WORKGROUP: u32 = 64;
+
+impl<S: ?Sized> Renderer<S> for SceneWarp<S> {
+    fn prepare(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        scene: &S,
+        frame: &Frame,
+    ) -> Result<()> {
+        begin_prepare(device, frame, &mut self.prepared)?;
+        frame.check_full_views("warp")?;
+        if frame.camera.model == crate::camera::CameraModel::ToeIn {
+            return Err(Error::invalid(
+                "camera",
+                "toe-in: the warp shifts reference rows horizontally, which turned cameras do \
+                 not produce (use skewed or parallel cameras, or another method)",
+            ));
+        }
+        let references = reference_frame(frame, self.options.references)?;
+        self.references
+            .prepare_references(device, queue, scene, &references)?;
+        let fits = |i: &ReferenceImages| {
+            i.size() == frame.size && i.references() == self.options.references
+        };
+        if !self.images.as_ref().is_some_and(fits) {
+            self.images = None; // free before allocating the replacement
+            self.images = Some(ReferenceImages::new(
+                device,
+                frame.size,
+                self.options.references,
+            )?);
+        }
+        let rows = u64::from(frame.size[1]) * u64::from(self.options.references);
+        self.row_bounds.ensure(
+            device,
+            || format!("{rows} reference rows' nearness range"),
+            rows * 8,
+        )?;
+        if self.options.path == WarpPath::PerView {
+            self.npass.prepare(device, frame)?;
+        }
+        self.prepared = Some(self.needs(frame));
+        Ok(())
+    }
+
+    fn encode(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        scene: &S,
+        frame: &Frame,
+        target: &SpatialTarget,
+    ) -> Result<()> {
+        check_target(frame, target)?;
+        check_prepared("SceneWarp", &self.prepared, &self.needs(frame))?;
+        let references = reference_frame(frame, self.options.references)?;
+        let images = self.images.as_ref().expect("allocated by prepare");
+        self.references
+            .encode_references(device, encoder, scene, &references, images)?;
+        self.encode_row_bounds(device, encoder);
+        self.frame.write(device, frame);
+        if self.options.path == WarpPath::Direct {
+            let group = self.bind_group(device, frame, None);
+            draw_fullscreen(
+                encoder,
+                "reference warp",
+                &self.pipeline,
+                &[&self.frame.bind_group, &group],
+                &target.view,
+            );
+            self.crop.encode(device, encoder, frame, target);
+            return Ok(());
+        }
+        for (v, layer) in self.npass.layers().layer_views.iter().enumerate() {
+            let group = self.bind_group(device, frame, Some(v as u32));
+            draw_fullscreen(
+                encoder,
+                "reference warp (one view)",
+                &self.pipeline,
+                &[&self.frame.bind_group, &group],
+                layer,
+            );
+        }
+        self.npass.composite(device, encoder, &self.frame, target);
+        self.crop.encode(device, encoder, frame, target);
+        Ok(())
+    }
+}
