@@ -25,9 +25,10 @@ use super::{Preview, ViewArgs};
 
 mod controls;
 mod images;
+mod memory;
 
-use controls::{live_gpu_objects, resident_mib};
 use images::copyable_target;
+use memory::MemoryLog;
 
 /// Frames after which `--screenshot` is taken without `--quit-after-frames`.
 const SCREENSHOT_FRAME: u32 = 3;
@@ -92,12 +93,8 @@ struct State {
     buttons: (bool, bool),
     frames: u32,
     last_ms: f64,
-    /// Resident memory every 50 frames of an exercise run, MiB.
-    rss: Vec<f64>,
-    /// Resident memory at the end of each period of the exercise schedule, MiB.
-    rss_each_period: Vec<f64>,
-    /// Live GPU objects and bytes at the end of each period of the exercise schedule.
-    gpu_each_period: Vec<serde_json::Value>,
+    /// What an exercise run records of its memory.
+    memory: MemoryLog,
 }
 
 impl ApplicationHandler for App {
@@ -288,9 +285,7 @@ impl State {
             buttons: (false, false),
             frames: 0,
             last_ms: 0.0,
-            rss: Vec::new(),
-            rss_each_period: Vec::new(),
-            gpu_each_period: Vec::new(),
+            memory: MemoryLog::default(),
         };
         state.update_position();
         Ok(state)
@@ -482,24 +477,17 @@ impl State {
             }
         }
         if self.frames.is_multiple_of(50) {
-            self.rss.extend(resident_mib());
+            self.memory.sample();
         }
         if args.exercise.is_some() && self.frames.is_multiple_of(self.exercise_period(args)) {
-            self.rss_each_period.extend(resident_mib());
-            self.gpu_each_period.push(live_gpu_objects(device));
+            self.memory.end_period(device);
         }
         let done = last.is_some_and(|k| self.frames >= k);
         if done && args.exercise.is_some() {
-            println!(
-                "{}",
-                serde_json::json!({
-                    "frames": self.frames,
-                    "rss_mib_every_50_frames": self.rss,
-                    "period_frames": self.exercise_period(args),
-                    "rss_mib_each_period": self.rss_each_period,
-                    "gpu_objects_each_period": self.gpu_each_period,
-                })
-            );
+            let mut report = self.memory.report();
+            report["frames"] = self.frames.into();
+            report["period_frames"] = self.exercise_period(args).into();
+            println!("{report}");
         }
         Ok(done)
     }

@@ -115,32 +115,3 @@ fn lcm(a: u32, b: u32) -> u32 {
     };
     a / gcd(a, b) * b
 }
-
-/// Resident memory of this process in MiB (Linux), if known.
-pub(super) fn resident_mib() -> Option<f64> {
-    let statm = std::fs::read_to_string("/proc/self/statm").ok()?;
-    let pages: f64 = statm.split_whitespace().nth(1)?.parse().ok()?;
-    Some(pages * 4096.0 / (1024.0 * 1024.0))
-}
-
-/// What the device holds right now, from wgpu's internal counters. Unlike resident memory
-/// (which the allocator returns to the system whenever it likes) these are exact, so an
-/// exercise run can compare them one period apart. Waits for the GPU first so that what the
-/// last frames dropped is really freed: this stalls, which only the exercise run does.
-/// Textures are left out: wgpu-hal 30's Vulkan backend subtracts on destroy but never adds on
-/// create, so that count only falls; their views and (on Vulkan) bytes stand in for them.
-pub(super) fn live_gpu_objects(device: &wgpu::Device) -> serde_json::Value {
-    let _ = device.poll(wgpu::PollType::wait_indefinitely());
-    let hal = device.get_internal_counters().hal;
-    serde_json::json!({
-        "buffers": hal.buffers.read(),
-        "texture_views": hal.texture_views.read(),
-        "bind_groups": hal.bind_groups.read(),
-        "render_pipelines": hal.render_pipelines.read(),
-        "compute_pipelines": hal.compute_pipelines.read(),
-        "samplers": hal.samplers.read(),
-        "shader_modules": hal.shader_modules.read(),
-        "buffer_bytes": hal.buffer_memory.read(),
-        "texture_bytes": hal.texture_memory.read(),
-    })
-}
