@@ -36,6 +36,7 @@ const SHARED: &[(&str, &str)] = &[
     wgsl!("mesh/shared/tiled_vertex.wgsl"),
     wgsl!("volume/shared/volume.wgsl"),
     wgsl!("volume/shared/march.wgsl"),
+    wgsl!("volume/shared/share.wgsl"),
     wgsl!("points/shared/splat.wgsl"),
     wgsl!("points/shared/splat_quad.wgsl"),
     wgsl!("points/shared/cover_rect.wgsl"),

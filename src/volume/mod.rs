@@ -11,7 +11,8 @@ pub mod transfer;
 
 pub use bricks::BrickRanges;
 pub use scene::{
-    PreintegrationTexture, TransparentBrickTexture, VolumeScene, VolumeTexture, MAX_SAMPLES_PER_RAY,
+    PreintegrationTexture, TransparentBrickTexture, VolumeScene, VolumeTexture,
+    MAX_SAMPLES_PER_RAY, SUGGESTED_SHARE_SAMPLES,
 };
 pub use transfer::{PreintegrationTable, TransferFunction};
 

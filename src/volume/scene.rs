@@ -168,11 +168,20 @@ pub struct VolumeScene {
     /// Jump over bricks the transfer function makes fully transparent (ray-marching path;
     /// exact: the image is the same bit for bit, see `volume::bricks`).
     pub skip_empty: bool,
+    /// Sample sharing among a pixel's K rays (single pass, ray marching): where every pair of
+    /// the rays' samples on a plane lies within this many voxels, they take their mean ray's
+    /// samples (`wgsl/volume/shared/share.wgsl`). 0 (the default): every ray exact.
+    pub share_samples: f32,
     /// Scalar ranges per brick of the uploaded volume.
     pub(crate) bricks: BrickRanges,
     /// Identifies the uploaded volume for caches of data derived from it.
     pub(crate) id: u64,
 }
+
+/// The sample-sharing tolerance `--share-samples` takes when given without a value, in voxels:
+/// where the measured curve (docs/share_samples/BENCHMARKS.md) still keeps ≥ 40 dB against the
+/// exact single pass on the head and brainsmall.
+pub const SUGGESTED_SHARE_SAMPLES: f32 = 0.5;
 
 /// Most samples a ray may take (a guard, and the bound on `--step`).
 pub const MAX_SAMPLES_PER_RAY: f32 = 16384.0;
@@ -208,6 +217,7 @@ impl VolumeScene {
             model,
             shade: true,
             skip_empty: true,
+            share_samples: 0.0,
             bricks: BrickRanges::new(volume),
             id: NEXT_ID.fetch_add(1, Ordering::Relaxed),
         })
@@ -216,7 +226,17 @@ impl VolumeScene {
     /// Check the public fields a caller may have changed since [`VolumeScene::new`]: the
     /// renderers call this before every frame.
     pub fn validate(&self) -> Result<()> {
-        check_scene(self.extent, &self.transfer, self.step, self.model)
+        check_scene(self.extent, &self.transfer, self.step, self.model)?;
+        if !(self.share_samples.is_finite() && self.share_samples >= 0.0) {
+            return Err(Error::invalid(
+                "sample sharing tolerance (--share-samples)",
+                format!(
+                    "{}: must be a finite number of voxels, 0 or more",
+                    self.share_samples
+                ),
+            ));
+        }
+        Ok(())
     }
 
     /// The uploaded volume (gradients + scalar).

@@ -5,6 +5,7 @@
 #import shared/multiview.wgsl
 #import volume/shared/volume.wgsl
 #import volume/shared/march.wgsl
+#import volume/shared/share.wgsl
 
 // Bindings read by shared/frame.wgsl.
 @group(0) @binding(0) var<uniform> frame: Frame;
@@ -16,6 +17,10 @@
 
 @group(1) @binding(4) var transparent_bricks: texture_3d<u32>;
 @group(2) @binding(0) var output: texture_storage_2d<rgba8unorm, write>;
+
+// The K rays share samples near the focal plane (volume/shared/share.wgsl); compiled in only
+// for `--share-samples` above 0, so the exact path is unchanged.
+override SHARE_SAMPLES: bool = false;
 
 @compute @workgroup_size(8, 8)
 fn cs_main(@builtin(global_invocation_id) id: vec3<u32>) {
@@ -31,6 +36,12 @@ fn cs_main(@builtin(global_invocation_id) id: vec3<u32>) {
         let c = ray_color(frag, params.fixed_offset);
         color = c.rgb;
         alpha = vec3<f32>(c.a);
+    } else if (SHARE_SAMPLES && VIEWS_PER_PIXEL == 3u) {
+        let rays = shared_rays(px, frag);
+        for (var k = 0u; k < 3u; k++) {
+            color[k] = rays[k][k];
+            alpha[k] = rays[k].a;
+        }
     } else {
         for (var k = 0u; k < VIEWS_PER_PIXEL; k++) {
             let c = ray_color(frag, view_offset(ray_view(px, k)));

@@ -94,6 +94,11 @@ pub struct VolumeArgs {
     /// measuring what skipping saves: the image is the same).
     #[arg(long)]
     no_skip_empty: bool,
+    /// Single pass, compute path: a pixel's K rays share their samples where they lie within
+    /// TAU voxels of each other (near the focal plane); 0 = every ray exact. Measured trade-off
+    /// in docs/share_samples/BENCHMARKS.md.
+    #[arg(long, value_name = "TAU", default_value_t = 0.0)]
+    share_samples: f32,
     /// Average blocks of F³ voxels first (for volumes over the adapter's 3D texture limit).
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=256))]
     downsample: u32,
@@ -211,6 +216,7 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     let mut scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, tf, step, model)?;
     scene.shade = !args.no_shading;
     scene.skip_empty = !args.no_skip_empty;
+    scene.share_samples = share_samples(&args)?;
     let mut renderer: Box<dyn Renderer<VolumeScene>> = match args.path {
         PathArg::Compute if args.common.method == Method::Warp => warp_renderer(
             &ctx.device,
@@ -262,6 +268,9 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         "step": scene.step,
         "samples_per_ray_max": (scene.extent.length() / scene.step).ceil(),
         "skip_empty": scene.skip_empty && matches!(args.path, PathArg::Compute),
+        // Sharing needs K = 3 rays per pixel (subpixel displays).
+        "share_samples": scene.share_samples,
+        "share_samples_active": scene.share_samples > 0.0 && frame.display.views_per_pixel() == 3,
         "transparent_bricks": scene.bricks().transparent_share(&scene.transfer),
     });
     let mut extra = extra;
@@ -302,4 +311,17 @@ fn write_views(
         RgbImage::from_rgba(frame.size, &rgba).save_png(&dir.join(format!("view_{i:02}.png")))?;
     }
     Ok(())
+}
+
+/// `--share-samples`, refused where it would change nothing: it is an option of the single
+/// pass's compute path.
+fn share_samples(args: &VolumeArgs) -> Result<f32> {
+    let tau = args.share_samples;
+    if tau != 0.0 && (args.common.method != Method::SinglePass || args.path != PathArg::Compute) {
+        bail!(
+            "--share-samples {tau}: sample sharing is an option of the single pass's compute \
+             path (--method single-pass --path compute)"
+        );
+    }
+    Ok(tau)
 }

@@ -160,9 +160,11 @@ impl VolumeRaycaster {
             let module = modules.get(device, stage)?;
             let skip = f64::from(u8::from(key.skip_empty));
             let track = f64::from(u8::from(stage == Output::References.stage()));
-            let constants = key
-                .spec
-                .constants(&[("SKIP_EMPTY", skip), ("TRACK_DEPTH", track)]);
+            let mut extra = vec![("SKIP_EMPTY", skip), ("TRACK_DEPTH", track)];
+            if stage == Output::Image.stage() {
+                extra.push(("SHARE_SAMPLES", f64::from(u8::from(key.share_samples))));
+            }
+            let constants = key.spec.constants(&extra);
             Ok(
                 device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
                     label: Some("volume raycast"),
@@ -179,13 +181,7 @@ impl VolumeRaycaster {
 
     /// The end of every prepare: the pipeline for `key`, then `key` is what was prepared.
     fn finish_prepare(&mut self, device: &wgpu::Device, key: PreparedFor) -> Result<()> {
-        self.ensure_pipeline(
-            device,
-            RaycastPipelineKey {
-                spec: key.spec,
-                skip_empty: key.skip_empty,
-            },
-        )?;
+        self.ensure_pipeline(device, RaycastPipelineKey::from(key))?;
         self.prepared = Some(key);
         Ok(())
     }
@@ -203,6 +199,18 @@ struct RaycastPipelineKey {
     spec: Specialization,
     /// Empty-space skipping compiled in.
     skip_empty: bool,
+    /// Sample sharing among a pixel's rays compiled in (single pass, K = 3 only).
+    share_samples: bool,
+}
+
+impl From<PreparedFor> for RaycastPipelineKey {
+    fn from(prepared: PreparedFor) -> Self {
+        Self {
+            spec: prepared.spec,
+            skip_empty: prepared.skip_empty,
+            share_samples: prepared.share_samples,
+        }
+    }
 }
 
 /// What a volume renderer was prepared for: display specialisation, empty-space skipping,
@@ -211,25 +219,33 @@ struct RaycastPipelineKey {
 pub(crate) struct PreparedFor {
     pub spec: Specialization,
     pub skip_empty: bool,
+    /// The single pass shares samples among a pixel's K rays.
+    pub share_samples: bool,
     pub size: [u32; 2],
     pub views: u32,
 }
 
 impl PreparedFor {
-    pub fn of(scene: &VolumeScene, frame: &Frame) -> Self {
+    pub fn of(scene: &VolumeScene, frame: &Frame, method: Method) -> Self {
+        let spec = Specialization::of(frame);
         Self {
-            spec: Specialization::of(frame),
+            spec,
             skip_empty: scene.skip_empty,
+            share_samples: method == Method::SinglePass
+                && spec.views_per_pixel == 3
+                && scene.share_samples > 0.0,
             size: frame.size,
             views: frame.camera.views,
         }
     }
 
-    /// The proxy slices have no empty-space skipping: toggling it needs no new prepare.
+    /// The proxy slices have no empty-space skipping or sample sharing: toggling them needs
+    /// no new prepare.
     pub fn for_slices(scene: &VolumeScene, frame: &Frame) -> Self {
         Self {
             skip_empty: false,
-            ..Self::of(scene, frame)
+            share_samples: false,
+            ..Self::of(scene, frame, Method::SinglePass)
         }
     }
 }
@@ -282,7 +298,7 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
             ));
         }
         let frame = &self.own_frame(frame)?;
-        let key = PreparedFor::of(scene, frame);
+        let key = PreparedFor::of(scene, frame, self.method);
         self.resources.upload(device, queue, scene)?;
         if let Some(npass) = &mut self.npass {
             npass.prepare(device, frame)?;
@@ -310,7 +326,7 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
             renderer: "VolumeRaycaster",
             prepared: &self.prepared,
             resources: &self.resources,
-            wanted: PreparedFor::of(scene, &own),
+            wanted: PreparedFor::of(scene, &own, self.method),
         }
         .check(scene, frame, target)?;
         let full = frame;
@@ -329,10 +345,7 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
                 .collect(),
         };
         let volume_group = self.resources.bind(device, scene, frame, &dispatches);
-        let key = RaycastPipelineKey {
-            spec: Specialization::of(frame),
-            skip_empty: scene.skip_empty,
-        };
+        let key = RaycastPipelineKey::from(PreparedFor::of(scene, frame, self.method));
         let output = |resources: &[wgpu::BindingResource]| {
             let entries: Vec<_> = resources
                 .iter()

@@ -25,7 +25,8 @@ pub struct VolumeParams {
     use_mask: u32,
     max_samples: u32,
     shade: u32,
-    _pad: [u32; 3],
+    share_tolerance: f32,
+    _pad: [u32; 2],
 }
 const _: () = assert!(std::mem::size_of::<VolumeParams>() == 160);
 crate::shader::gpu_layout!(
@@ -38,7 +39,8 @@ crate::shader::gpu_layout!(
         fixed_offset,
         use_mask,
         max_samples,
-        shade
+        shade,
+        share_tolerance
     ]
 );
 
@@ -156,7 +158,8 @@ impl VolumeResources {
             use_mask: use_mask as u32,
             max_samples: (scene.extent.length() / scene.step).ceil() as u32 + 2,
             shade: scene.shade as u32,
-            _pad: [0; 3],
+            share_tolerance: scene.share_samples,
+            _pad: [0; 2],
         }
     }
 

@@ -100,8 +100,19 @@ fn sample_plane(o: vec3<f32>, d: vec3<f32>, k: f32) -> vec4<f32> {
     return textureSampleLevel(volume, linear_clamp, plane_position(o, d, k), 0.0);
 }
 
+// Plane index bounds that leave a march's range open at that end.
+const ALL_PLANES: f32 = 3.0e38;
+
 // Premultiplied RGBA along the ray origin + t·dir (eye depth t·fd).
 fn march(origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
+    return march_planes(origin, dir, vec2<f32>(-ALL_PLANES, ALL_PLANES), OPAQUE);
+}
+
+// Premultiplied RGBA of the segments between sample planes planes.x … planes.y of the ray
+// origin + t·dir (clipped to the box, near and far; the first plane is the front sample),
+// stopping once the accumulated opacity reaches `opaque`. `march` is the whole ray; the
+// sample-sharing march (volume/shared/share.wgsl) splits one ray into ranges.
+fn march_planes(origin: vec3<f32>, dir: vec3<f32>, planes: vec2<f32>, opaque: f32) -> vec4<f32> {
     let fd = frame.camera.focal_distance;
     let o = (params.tex_from_eye * vec4<f32>(origin, 1.0)).xyz;
     let d = (params.tex_from_eye * vec4<f32>(dir, 0.0)).xyz;
@@ -116,8 +127,8 @@ fn march(origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
     if (!(d_out > d_in)) {
         return vec4<f32>(0.0);
     }
-    let k0 = ceil(d_in / params.step);
-    let k1 = floor(d_out / params.step);
+    let k0 = max(ceil(d_in / params.step), planes.x);
+    let k1 = min(floor(d_out / params.step), planes.y);
     let count = min(u32(max(k1 - k0, 0.0)), params.max_samples);
     var front = sample_plane(o, d, k0);
     var acc = vec4<f32>(0.0);
@@ -132,7 +143,7 @@ fn march(origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
             if (TRACK_DEPTH) {
                 track_depth(before, acc, seg, k0 + f32(i));
             }
-            if (acc.a >= OPAQUE) {
+            if (acc.a >= opaque) {
                 break;
             }
             front = back;
@@ -173,7 +184,7 @@ fn march(origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
             if (TRACK_DEPTH) {
                 track_depth(before, acc, seg, k0 + f32(i));
             }
-            if (acc.a >= OPAQUE) {
+            if (acc.a >= opaque) {
                 break;
             }
             look_up = seg.a <= 0.0;

@@ -10,7 +10,7 @@ struct VolumeParams {
     use_mask: u32,                // 1: K views per pixel from the mask; 0: one fixed camera
     max_samples: u32,             // guard against runaway loops
     shade: u32,                   // 1: Blinn-Phong from gradients; 0: emission-absorption only
-    _pad0: u32,
+    share_tolerance: f32,         // voxels within which a pixel's rays share samples
     _pad1: u32,
     _pad2: u32,
 }

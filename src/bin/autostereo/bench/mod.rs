@@ -7,6 +7,7 @@ mod plot;
 mod report;
 mod scenes;
 mod schedule;
+mod share_samples;
 mod targets;
 mod tradeoffs;
 mod view_scale;
@@ -58,6 +59,11 @@ pub struct BenchArgs {
     /// scales 1, ¾, ½, ⅓, ¼ against the full-size N-pass (time, PSNR, share off > 2/255).
     #[arg(long, conflicts_with_all = ["quick", "duplication", "sweep", "warp"])]
     view_scale: bool,
+    /// Only volumes: the head and brainsmall at 512², N = 8 and 64, every method, and the
+    /// single pass's sample sharing (`--share-samples` TAU = 0.25 … 4 voxels: time, PSNR and
+    /// share off > 2/255 against the exact single pass).
+    #[arg(long, conflicts_with_all = ["quick", "duplication", "sweep", "warp", "view_scale"])]
+    volumes: bool,
     /// Timed frames per measurement (after 2 warm-up frames).
     #[arg(long, default_value_t = 20, value_parser = crate::args::frames_parser())]
     frames: u32,
@@ -74,6 +80,8 @@ pub struct Plan {
     pub warp: bool,
     /// `--view-scale`: N = 8 at 512², the view-scale study only.
     pub view_scale: bool,
+    /// `--volumes`: volumes only, N = 8 and 64 at 512², the sample-sharing study only.
+    pub volumes: bool,
     pub size: [u32; 2],
     pub views: Vec<u32>,
     /// N-pass is measured up to this N (it grows linearly).
@@ -95,6 +103,8 @@ impl Plan {
             ([512, 512], vec![8, 45], 45, vec![])
         } else if args.view_scale {
             ([512, 512], vec![8], 8, vec![])
+        } else if args.volumes {
+            ([512, 512], vec![8, 64], 64, vec![])
         } else if args.quick {
             ([256, 256], vec![2, 8, 64], 8, vec![])
         } else {
@@ -106,6 +116,7 @@ impl Plan {
             sweep: args.sweep,
             warp: args.warp,
             view_scale: args.view_scale,
+            volumes: args.volumes,
             size,
             views,
             npass_max_views,
@@ -122,12 +133,13 @@ impl Plan {
             self.sweep,
             self.warp,
             self.view_scale,
+            self.volumes,
         )
     }
 
     /// Whether the speed/accuracy and economy studies run.
     pub fn studies(&self) -> bool {
-        !self.duplication && !self.sweep && !self.warp && !self.view_scale
+        !self.duplication && !self.sweep && !self.warp && !self.view_scale && !self.volumes
     }
 
     /// Frames per trade-off and economy measurement (each setting is a separate render).
@@ -204,6 +216,9 @@ pub struct Results {
     /// A `--view-scale` run.
     #[serde(default)]
     pub view_scale: bool,
+    /// A `--volumes` run.
+    #[serde(default)]
+    pub volumes: bool,
     pub frames: u32,
     /// Frames per trade-off and economy measurement.
     pub study_frames: u32,
@@ -230,6 +245,7 @@ impl Results {
             self.sweep,
             self.warp,
             self.view_scale,
+            self.volumes,
         )
     }
 }
@@ -240,13 +256,15 @@ fn run_name(
     sweep: bool,
     warp: bool,
     view_scale: bool,
+    volumes: bool,
 ) -> &'static str {
-    match (quick, duplication, sweep, warp, view_scale) {
+    match (quick, duplication, sweep, warp, view_scale, volumes) {
         (true, ..) => "quick",
         (_, true, ..) => "duplication",
         (_, _, true, ..) => "sweep",
-        (_, _, _, true, _) => "warp",
-        (.., true) => "view-scale",
+        (_, _, _, true, ..) => "warp",
+        (_, _, _, _, true, _) => "view-scale",
+        (.., true) => "volumes",
         _ => "full",
     }
 }
@@ -371,6 +389,12 @@ pub fn run(args: BenchArgs) -> Result<()> {
             view_scale::measure(&ctx, &timer, &scenes, &plan)?,
             Vec::new(),
         )
+    } else if plan.volumes {
+        eprintln!("sample sharing…");
+        (
+            share_samples::measure(&ctx, &timer, &mut scenes, &plan)?,
+            Vec::new(),
+        )
     } else if !plan.studies() {
         (Vec::new(), Vec::new())
     } else {
@@ -389,6 +413,7 @@ pub fn run(args: BenchArgs) -> Result<()> {
         sweep: plan.sweep,
         warp: plan.warp,
         view_scale: plan.view_scale,
+        volumes: plan.volumes,
         frames: plan.frames,
         study_frames: plan.study_frames(),
         size: plan.size,

@@ -94,3 +94,11 @@ pub fn draw(path: &std::path::Path, axes: &Axes, series: &[Series]) -> anyhow::R
     root.present()?;
     Ok(true)
 }
+
+/// Add `point` to the series called `name`, starting it if there is none.
+pub fn push(series: &mut Vec<Series>, name: &str, point: (f64, f64)) {
+    match series.iter_mut().find(|x| x.0 == name) {
+        Some(x) => x.1.push(point),
+        None => series.push((name.to_string(), vec![point])),
+    }
+}

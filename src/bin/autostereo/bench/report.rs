@@ -217,6 +217,8 @@ pub fn write(dir: &Path, r: &Results) -> Result<()> {
     super::targets::duplication(&mut md, r)?;
     if r.view_scale {
         super::view_scale::report(&mut md, r, &images)?;
+    } else if r.volumes {
+        super::share_samples::report(&mut md, r, &images)?;
     } else if r.tradeoffs.iter().any(|t| t.hole_share.is_none()) {
         tradeoffs(&mut md, r, &images)?;
         economy(&mut md, r)?;
@@ -244,6 +246,9 @@ pub fn write(dir: &Path, r: &Results) -> Result<()> {
              - depth-image warping: [warp/BENCHMARKS.md](warp/BENCHMARKS.md) (`bench --warp`)\n\
              - per-view resolution (`--view-scale`), time and PSNR per scale: \
              [view_scale/BENCHMARKS.md](view_scale/BENCHMARKS.md) (`bench --view-scale`)\n\
+             - volumes at N = 8 and 64 with the single pass's sample sharing \
+             (`--share-samples`): [volumes/BENCHMARKS.md](volumes/BENCHMARKS.md) \
+             (`bench --volumes`)\n\
              - the full matrix: [full/BENCHMARKS.md](full/BENCHMARKS.md) (`bench`)\n"
         )?;
     }

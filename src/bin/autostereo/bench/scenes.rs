@@ -67,7 +67,7 @@ pub fn scenes(ctx: &autostereo::gpu::GpuContext, plan: &super::Plan) -> Result<V
         "ct-skin",
     )];
     let brain = fetched("brainsmall.den");
-    if plan.studies() && !quick && brain.is_file() {
+    if ((plan.studies() && !quick) || plan.volumes) && brain.is_file() {
         let v = load::load_den(&brain)?;
         volumes.push((
             "brainsmall.den".into(),
@@ -86,6 +86,9 @@ pub fn scenes(ctx: &autostereo::gpu::GpuContext, plan: &super::Plan) -> Result<V
             data: AnyScene::Volume(Box::new(scene)),
             splats: None,
         });
+    }
+    if plan.volumes {
+        return Ok(out);
     }
     // The sweep's duplication and N-pass grow with N to 64: the smaller dragon keeps it short.
     let dragon = if quick || plan.sweep || plan.warp || plan.view_scale {

@@ -77,7 +77,7 @@ pub fn measure(
 /// ratio to the same method at full size), the accuracy against the full-size N-pass, and the
 /// best single pass of the same run; one plot of PSNR against time.
 pub fn report(md: &mut String, r: &super::Results, images: &std::path::Path) -> Result<()> {
-    use super::plot::{draw, Axes, Series};
+    use super::plot::{draw, push, Axes, Series};
     writeln!(md, "## Per-view resolution against the full-size N-pass\n")?;
     writeln!(
         md,
@@ -168,11 +168,4 @@ pub fn report(md: &mut String, r: &super::Results, images: &std::path::Path) -> 
         }
     }
     Ok(())
-}
-
-fn push(series: &mut Vec<super::plot::Series>, name: &str, point: (f64, f64)) {
-    match series.iter_mut().find(|x| x.0 == name) {
-        Some(x) => x.1.push(point),
-        None => series.push((name.to_string(), vec![point])),
-    }
 }

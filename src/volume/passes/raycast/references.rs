@@ -7,7 +7,7 @@ use super::{PreparedFor, RaycastPipelineKey, VolumeEncode, VolumeRaycaster};
 use crate::error::Result;
 use crate::frame::Frame;
 use crate::render::begin_prepare;
-use crate::render::specialize::Specialization;
+use crate::render::Method;
 use crate::volume::passes::resources::VolumeResources;
 use crate::volume::VolumeScene;
 use crate::warp::references::{check_reference_method, ReferenceImages, ReferenceRenderer};
@@ -22,7 +22,7 @@ impl ReferenceRenderer<VolumeScene> for VolumeRaycaster {
     ) -> Result<()> {
         begin_prepare(device, frame, &mut self.prepared)?;
         check_reference_method("VolumeRaycaster", self.method)?;
-        let key = PreparedFor::of(scene, frame);
+        let key = PreparedFor::of(scene, frame, Method::Warp);
         self.resources.upload(device, queue, scene)?;
         self.finish_prepare(device, key)
     }
@@ -40,7 +40,7 @@ impl ReferenceRenderer<VolumeScene> for VolumeRaycaster {
             renderer: "VolumeRaycaster",
             prepared: &self.prepared,
             resources: &self.resources,
-            wanted: PreparedFor::of(scene, frame),
+            wanted: PreparedFor::of(scene, frame, Method::Warp),
         };
         let current = encode
             .prepared
@@ -62,10 +62,7 @@ impl ReferenceRenderer<VolumeScene> for VolumeRaycaster {
                 },
             ],
         });
-        let key = RaycastPipelineKey {
-            spec: Specialization::of(frame),
-            skip_empty: scene.skip_empty,
-        };
+        let key = RaycastPipelineKey::from(PreparedFor::of(scene, frame, Method::Warp));
         let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
             label: Some("volume reference views"),
             timestamp_writes: None,

@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# The benchmarks that mean something only on a real GPU, in one short run: the quick bench
+# (every primitive and method at 256², N = 2, 8, 64) and the volume table (`bench --volumes`:
+# the head and brainsmall at 512², N = 8 and 64, every method, the sample-sharing curve), on
+# whatever adapter wgpu picks (WGPU_BACKEND / WGPU_ADAPTER_NAME choose another). About 3–8
+# minutes on a discrete GPU; on lavapipe ≈ 20 minutes.
+#
+# It installs nothing. It uses, in this order: $AUTOSTEREO_BIN, target/release/autostereo (a
+# build carried from another x86-64 machine works), or `cargo build --release` where cargo is
+# on the PATH; otherwise it says what is missing and stops. Without data/fetched/ (data/fetch
+# needs the network) the bench uses its generated stand-ins and says so in each table.
+#
+# Usage: docs/tools/gpu_bench.sh [OUT]   (default OUT = gpu_bench/; writes OUT/GPU.md, then
+#        OUT/quick/ and OUT/volumes/ with their BENCHMARKS.md and bench_*.json). Commit the
+#        printed GPU.md as docs/GPU.md.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+out="${1:-gpu_bench}"
+mkdir -p "$out"
+
+bin="${AUTOSTEREO_BIN:-target/release/autostereo}"
+if [ ! -x "$bin" ]; then
+  if command -v cargo >/dev/null 2>&1; then
+    echo "building target/release/autostereo (cargo build --release)"
+    cargo build --release --quiet
+  else
+    echo "gpu_bench.sh: no autostereo binary ($bin) and no cargo on the PATH: build it elsewhere" >&2
+    echo "  (cargo build --release) and bring target/release/autostereo, or install Rust" >&2
+    exit 1
+  fi
+fi
+[ -d data/fetched ] || echo "note: no data/fetched/ (data/fetch not run): generated stand-ins only"
+
+# Which adapter: the first line the renderer logs.
+adapter=$(RUST_LOG=info "$bin" volume --size 16x16 --out "$out/probe.png" 2>&1 |
+  grep -o 'adapter: .*' | head -n 1 || true)
+rm -f "$out/probe.png"
+echo "${adapter:-adapter: unknown (the probe render failed; see below)}"
+
+start=$(date +%s)
+"$bin" bench --quick --report "$out/quick"
+"$bin" bench --volumes --frames 10 --report "$out/volumes"
+seconds=$(( $(date +%s) - start ))
+
+{
+  echo "# Benchmarks on a GPU"
+  echo
+  echo "Made by \`docs/tools/gpu_bench.sh\` in ${seconds} s on $(date -u +%Y-%m-%d)."
+  echo "${adapter:-adapter: unknown}; CPU: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')."
+  echo
+  echo "Absolute times mean something here, unlike on the software rasterisers of CI."
+  echo
+  echo "## Volumes (\`bench --volumes --frames 10\`)"
+  echo
+  sed -e '1,/^## /{/^## /!d}' -e 's/^#/##/' "$out/volumes/BENCHMARKS.md" | sed 's#(images/#(gpu/volumes/images/#g'
+  echo
+  echo "## Quick run (\`bench --quick\`)"
+  echo
+  sed -e '1,/^## /{/^## /!d}' -e 's/^#/##/' "$out/quick/BENCHMARKS.md" | sed 's#(images/#(gpu/quick/images/#g'
+} > "$out/GPU.md"
+cat "$out/GPU.md"
