@@ -21,13 +21,8 @@ fn scene(volume: &Volume, tf: &str) -> VolumeScene {
 }
 
 fn render(scene: &VolumeScene, frame: &Frame, method: Method) -> RgbImage {
-    let ctx = common::gpu();
-    let target = SpatialTarget::new(&ctx.device, frame.size).unwrap();
-    VolumeRaycaster::new(&ctx.device, method)
-        .unwrap()
-        .render(&ctx.device, &ctx.queue, scene, frame, &target)
-        .unwrap();
-    target.read(&ctx.device, &ctx.queue).unwrap()
+    let mut renderer = VolumeRaycaster::new(&common::gpu().device, method).unwrap();
+    common::render(&mut renderer, scene, frame)
 }
 
 /// Two K = 3 displays: the paper's and a slanted lens of 45 views.
