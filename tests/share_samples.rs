@@ -1,6 +1,6 @@
 //! Sample sharing among a pixel's K rays (`VolumeScene::share_samples`, `--share-samples`):
 //! 0 is the exact single pass bit for bit; above 0 it is an approximation whose error against
-//! the exact path stays within what the benchmark measured (docs/share_samples/BENCHMARKS.md).
+//! the exact path stays within what the benchmark measured (docs/volumes/BENCHMARKS.md).
 
 mod common;
 

@@ -11,8 +11,8 @@ pub mod transfer;
 
 pub use bricks::BrickRanges;
 pub use scene::{
-    PreintegrationTexture, TransparentBrickTexture, VolumeScene, VolumeTexture,
-    MAX_SAMPLES_PER_RAY, SUGGESTED_SHARE_SAMPLES,
+    PreintegrationTexture, TransparentBrickTexture, VolumeScene, VolumeTexture, MAX_EMPTY_STRIDE,
+    MAX_SAMPLES_PER_RAY, SUGGESTED_EMPTY_STRIDE, SUGGESTED_SHARE_SAMPLES,
 };
 pub use transfer::{PreintegrationTable, TransferFunction};
 

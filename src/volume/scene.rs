@@ -172,6 +172,18 @@ pub struct VolumeScene {
     /// the rays' samples on a plane lies within this many voxels, they take their mean ray's
     /// samples (`wgsl/volume/shared/share.wgsl`). 0 (the default): every ray exact.
     pub share_samples: f32,
+    /// Probing stride through transparent material (ray marching, every method; needs
+    /// `skip_empty`): after a segment that added nothing, a ray probes this many sample planes
+    /// ahead and takes the planes between as transparent where the pre-integrated segment
+    /// between the two samples is exactly zero; where it is not, it marches them one by one
+    /// (`wgsl/volume/shared/march.wgsl`). An approximation: it misses material thinner than
+    /// `empty_stride` samples whose scalars lie outside both ends'. 1 (the default): exact.
+    pub empty_stride: u32,
+    /// With `empty_stride` > 1, probes also go on through thin material: a probe whose
+    /// pre-integrated segment adds at most this opacity per sample step becomes one segment
+    /// `empty_stride` steps long (opacity `1 − (1 − α)^P`, colour alike). 0 (the default): only
+    /// transparent material.
+    pub thin_alpha: f32,
     /// Scalar ranges per brick of the uploaded volume.
     pub(crate) bricks: BrickRanges,
     /// Identifies the uploaded volume for caches of data derived from it.
@@ -179,9 +191,19 @@ pub struct VolumeScene {
 }
 
 /// The sample-sharing tolerance `--share-samples` takes when given without a value, in voxels:
-/// where the measured curve (docs/share_samples/BENCHMARKS.md) still keeps ≥ 40 dB against the
+/// where the measured curve (docs/volumes/BENCHMARKS.md) still keeps ≥ 40 dB against the
 /// exact single pass on the head and brainsmall.
 pub const SUGGESTED_SHARE_SAMPLES: f32 = 0.5;
+
+/// The probing stride through transparent material USAGE.md suggests: 2 voxels at the default
+/// step, which keeps ≥ 45 dB against the exact image even on phantoms with shells one or two
+/// voxels thin (tests/empty_stride.rs; 8 loses up to 16 dB there), and ≥ 55 dB on the head and
+/// brainsmall at 512² (docs/volumes/BENCHMARKS.md).
+pub const SUGGESTED_EMPTY_STRIDE: u32 = 4;
+
+/// Largest probing stride through transparent material (`VolumeScene::empty_stride`): past a
+/// few voxels a probe only misses more, as bricks (4 voxels) already skip what is surely empty.
+pub const MAX_EMPTY_STRIDE: u32 = 64;
 
 /// Most samples a ray may take (a guard, and the bound on `--step`).
 pub const MAX_SAMPLES_PER_RAY: f32 = 16384.0;
@@ -218,6 +240,8 @@ impl VolumeScene {
             shade: true,
             skip_empty: true,
             share_samples: 0.0,
+            empty_stride: 1,
+            thin_alpha: 0.0,
             bricks: BrickRanges::new(volume),
             id: NEXT_ID.fetch_add(1, Ordering::Relaxed),
         })
@@ -233,6 +257,31 @@ impl VolumeScene {
                 format!(
                     "{}: must be a finite number of voxels, 0 or more",
                     self.share_samples
+                ),
+            ));
+        }
+        if !(1..=MAX_EMPTY_STRIDE).contains(&self.empty_stride) {
+            return Err(Error::invalid(
+                "probing stride through transparent material (--empty-stride)",
+                format!(
+                    "{}: must be 1 (exact) to {MAX_EMPTY_STRIDE} sample planes",
+                    self.empty_stride
+                ),
+            ));
+        }
+        if !(0.0..1.0).contains(&self.thin_alpha) {
+            return Err(Error::invalid(
+                "thin-material opacity (--thin-alpha)",
+                format!("{}: must be at least 0 and below 1", self.thin_alpha),
+            ));
+        }
+        if self.empty_stride > 1 && !self.skip_empty {
+            return Err(Error::invalid(
+                "probing stride through transparent material (--empty-stride)",
+                format!(
+                    "{}: probing is part of empty-space skipping, which is off \
+                     (--no-skip-empty); use stride 1 or turn skipping on",
+                    self.empty_stride
                 ),
             ));
         }

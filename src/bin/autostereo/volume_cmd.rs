@@ -96,9 +96,19 @@ pub struct VolumeArgs {
     no_skip_empty: bool,
     /// Single pass, compute path: a pixel's K rays share their samples where they lie within
     /// TAU voxels of each other (near the focal plane); 0 = every ray exact. Measured trade-off
-    /// in docs/share_samples/BENCHMARKS.md.
+    /// in docs/volumes/BENCHMARKS.md.
     #[arg(long, value_name = "TAU", default_value_t = 0.0)]
     share_samples: f32,
+    /// Compute path, every method: after a segment that added nothing, probe P sample planes
+    /// ahead and take the planes between as transparent where the segment between the two
+    /// samples is (1 = exact; an approximation that can miss features thinner than P samples).
+    /// Measured trade-off in docs/volumes/BENCHMARKS.md.
+    #[arg(long, value_name = "P", default_value_t = 1)]
+    empty_stride: u32,
+    /// With --empty-stride: probes also step through thin material, where a sample step adds
+    /// at most A opacity (0 = transparent material only). Measured in docs/volumes/BENCHMARKS.md.
+    #[arg(long, value_name = "A", default_value_t = 0.0)]
+    thin_alpha: f32,
     /// Average blocks of F³ voxels first (for volumes over the adapter's 3D texture limit).
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=256))]
     downsample: u32,
@@ -217,6 +227,22 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     scene.shade = !args.no_shading;
     scene.skip_empty = !args.no_skip_empty;
     scene.share_samples = share_samples(&args)?;
+    scene.empty_stride = args.empty_stride;
+    scene.thin_alpha = args.thin_alpha;
+    if args.thin_alpha != 0.0 && args.empty_stride < 2 {
+        bail!(
+            "--thin-alpha {}: thin material is stepped through by the probes of --empty-stride \
+             (give a stride of 2 or more)",
+            args.thin_alpha
+        );
+    }
+    if args.empty_stride != 1 && args.path != PathArg::Compute {
+        bail!(
+            "--empty-stride {}: probing is part of the compute path's empty-space skipping \
+             (--path compute)",
+            args.empty_stride
+        );
+    }
     let mut renderer: Box<dyn Renderer<VolumeScene>> = match args.path {
         PathArg::Compute if args.common.method == Method::Warp => warp_renderer(
             &ctx.device,
@@ -271,6 +297,8 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         // Sharing needs K = 3 rays per pixel (subpixel displays).
         "share_samples": scene.share_samples,
         "share_samples_active": scene.share_samples > 0.0 && frame.display.views_per_pixel() == 3,
+        "empty_stride": scene.empty_stride,
+        "thin_alpha": scene.thin_alpha,
         "transparent_bricks": scene.bricks().transparent_share(&scene.transfer),
     });
     let mut extra = extra;

@@ -164,6 +164,8 @@ impl VolumeRaycaster {
             if stage == Output::Image.stage() {
                 extra.push(("SHARE_SAMPLES", f64::from(u8::from(key.share_samples))));
             }
+            extra.push(("EMPTY_STRIDE", f64::from(key.empty_stride)));
+            extra.push(("THIN_ALPHA", f64::from(f32::from_bits(key.thin_alpha_bits))));
             let constants = key.spec.constants(&extra);
             Ok(
                 device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
@@ -201,6 +203,10 @@ struct RaycastPipelineKey {
     skip_empty: bool,
     /// Sample sharing among a pixel's rays compiled in (single pass, K = 3 only).
     share_samples: bool,
+    /// Probing stride through transparent material (1: the exact march).
+    empty_stride: u32,
+    /// Thin-material threshold of the probes (`f32::to_bits`: a key must hash).
+    thin_alpha_bits: u32,
 }
 
 impl From<PreparedFor> for RaycastPipelineKey {
@@ -209,6 +215,8 @@ impl From<PreparedFor> for RaycastPipelineKey {
             spec: prepared.spec,
             skip_empty: prepared.skip_empty,
             share_samples: prepared.share_samples,
+            empty_stride: prepared.empty_stride,
+            thin_alpha_bits: prepared.thin_alpha_bits,
         }
     }
 }
@@ -221,6 +229,10 @@ pub(crate) struct PreparedFor {
     pub skip_empty: bool,
     /// The single pass shares samples among a pixel's K rays.
     pub share_samples: bool,
+    /// Probing stride through transparent material (`VolumeScene::empty_stride`).
+    pub empty_stride: u32,
+    /// Thin-material threshold of the probes (`VolumeScene::thin_alpha`, as bits).
+    pub thin_alpha_bits: u32,
     pub size: [u32; 2],
     pub views: u32,
 }
@@ -234,17 +246,21 @@ impl PreparedFor {
             share_samples: method == Method::SinglePass
                 && spec.views_per_pixel == 3
                 && scene.share_samples > 0.0,
+            empty_stride: scene.empty_stride,
+            thin_alpha_bits: scene.thin_alpha.to_bits(),
             size: frame.size,
             views: frame.camera.views,
         }
     }
 
-    /// The proxy slices have no empty-space skipping or sample sharing: toggling them needs
-    /// no new prepare.
+    /// The proxy slices have no empty-space skipping, sample sharing or probing stride:
+    /// toggling them needs no new prepare.
     pub fn for_slices(scene: &VolumeScene, frame: &Frame) -> Self {
         Self {
             skip_empty: false,
             share_samples: false,
+            empty_stride: 1,
+            thin_alpha_bits: 0,
             ..Self::of(scene, frame, Method::SinglePass)
         }
     }

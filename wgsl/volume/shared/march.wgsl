@@ -19,6 +19,19 @@ const BRICK: f32 = 4.0;
 // Empty-space skipping compiled in (src/volume/passes/raycast.rs sets it per scene): without
 // it the march is the plain loop.
 override SKIP_EMPTY: bool = true;
+// Probing stride through transparent material (`--empty-stride P`, `VolumeScene::empty_stride`;
+// an approximation, needs SKIP_EMPTY): after a segment that added nothing, the ray's next
+// sample is P planes on instead of one. Where the pre-integrated segment between the two is
+// exactly zero (no extinction anywhere between their scalars), the P segments are taken as
+// transparent; otherwise the ray goes back and marches those planes one by one. What it can
+// miss: material whose scalars lie outside both ends' range within those P planes (a feature
+// thinner than P·Δ). 1: compiled out, the exact march.
+override EMPTY_STRIDE: u32 = 1u;
+// Coarse steps through thin material too (`--thin-alpha A`, `VolumeScene::thin_alpha`; with
+// EMPTY_STRIDE > 1): a probe whose segment adds at most A opacity per sample step is taken as
+// one segment P steps long (opacity 1 − (1 − α)^P, colour scaled alike: exact where colour and
+// scalar change linearly over it), and probing goes on after it. 0: only transparent material.
+override THIN_ALPHA: f32 = 0.0;
 
 // A warp's reference views (volume/raycast_reference.wgsl, src/warp) need one representative
 // depth per ray: the eye depth where the accumulated opacity crosses ½ (interpolated within
@@ -158,6 +171,10 @@ fn march_planes(origin: vec3<f32>, dir: vec3<f32>, planes: vec2<f32>, opaque: f3
     var look_up = true;
     var resume = false;
     var next_look_up = 0u;
+    // EMPTY_STRIDE: the last segment added nothing, and the first sample a probe may start at
+    // (past a probe that crossed material).
+    var clear = true;
+    var probe_from = 1u;
     var i = 1u;
     loop {
         if (i > count) {
@@ -176,22 +193,41 @@ fn march_planes(origin: vec3<f32>, dir: vec3<f32>, planes: vec2<f32>, opaque: f3
                 next_look_up = select(i, u32(max(last, 0.0)) + 1u, last >= f32(i - 1u));
             }
         }
-        let back = sample_plane(o, d, k0 + f32(i));
+        // Segments this iteration spans: one, or a probe of EMPTY_STRIDE through clear space.
+        var n = 1u;
+        if (EMPTY_STRIDE > 1u && clear && !resume && i >= probe_from) {
+            n = min(EMPTY_STRIDE, count + 1u - i);
+        }
+        let back = sample_plane(o, d, k0 + f32(i + n - 1u));
         if (!resume) {
-            let seg = segment(front, back, k0 + f32(i), origin, dir);
-            let before = acc;
-            acc = over(acc, seg);
-            if (TRACK_DEPTH) {
-                track_depth(before, acc, seg, k0 + f32(i));
+            var seg = segment(front, back, k0 + f32(i + n - 1u), origin, dir);
+            let step_alpha = seg.a;
+            if (n > 1u && step_alpha > THIN_ALPHA) {
+                // The probe crossed material: march its planes one by one from `front`.
+                probe_from = i + n;
+                continue;
             }
-            if (acc.a >= opaque) {
-                break;
+            if (n > 1u && step_alpha > 0.0) {
+                // Thin material: the probe is one segment n steps long.
+                let a = 1.0 - pow(1.0 - step_alpha, f32(n));
+                seg = vec4<f32>(seg.rgb * (a / step_alpha), a);
             }
-            look_up = seg.a <= 0.0;
+            if (n == 1u || seg.a > 0.0) {
+                let before = acc;
+                acc = over(acc, seg);
+                if (TRACK_DEPTH) {
+                    track_depth(before, acc, seg, k0 + f32(i + n - 1u));
+                }
+                if (acc.a >= opaque) {
+                    break;
+                }
+            }
+            look_up = step_alpha <= 0.0;
+            clear = step_alpha <= THIN_ALPHA;
         }
         resume = false;
         front = back;
-        i++;
+        i += n;
     }
     return acc;
 }

@@ -3,11 +3,11 @@
 //! against the N-pass high-quality render; what a scene that skips a feature saves. `--report
 //! DIR` writes DIR/BENCHMARKS.md (+ PNG plots with `--features plots`).
 
+mod approximations;
 mod plot;
 mod report;
 mod scenes;
 mod schedule;
-mod share_samples;
 mod targets;
 mod tradeoffs;
 mod view_scale;
@@ -390,9 +390,9 @@ pub fn run(args: BenchArgs) -> Result<()> {
             Vec::new(),
         )
     } else if plan.volumes {
-        eprintln!("sample sharing…");
+        eprintln!("volume approximations…");
         (
-            share_samples::measure(&ctx, &timer, &mut scenes, &plan)?,
+            approximations::measure(&ctx, &timer, &mut scenes, &plan)?,
             Vec::new(),
         )
     } else if !plan.studies() {

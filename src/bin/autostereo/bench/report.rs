@@ -218,7 +218,7 @@ pub fn write(dir: &Path, r: &Results) -> Result<()> {
     if r.view_scale {
         super::view_scale::report(&mut md, r, &images)?;
     } else if r.volumes {
-        super::share_samples::report(&mut md, r, &images)?;
+        super::approximations::report(&mut md, r, &images)?;
     } else if r.tradeoffs.iter().any(|t| t.hole_share.is_none()) {
         tradeoffs(&mut md, r, &images)?;
         economy(&mut md, r)?;
