@@ -188,3 +188,65 @@ fn bad_strides_and_thresholds_are_clear_errors() {
         assert!(err.contains("--thin-alpha"), "{thin}: {err}");
     }
 }
+
+/// `autostereo volume ARGS --json`: (success, stdout, stderr).
+fn volume_cli(args: &[&str]) -> (bool, String, String) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_autostereo"))
+        .arg("volume")
+        .args([
+            "--builtin-size",
+            "32",
+            "--size",
+            "64x48",
+            "--frames",
+            "1",
+            "--json",
+        ])
+        .args(args)
+        .env("RUST_LOG", "off")
+        .output()
+        .unwrap();
+    let text = |b: &[u8]| String::from_utf8_lossy(b).into_owned();
+    (out.status.success(), text(&out.stdout), text(&out.stderr))
+}
+
+/// With a stride, `--compare` measures against the exact N-pass (the stride would otherwise
+/// apply to the oracle as well and hide the error); the JSON reports the setting.
+#[test]
+fn compare_measures_an_approximation_against_the_exact_npass() {
+    let out = common::out_dir().join("empty_stride_cli.png");
+    let png = out.to_str().unwrap();
+    let (ok, stdout, stderr) = volume_cli(&["--compare", "--out", png]);
+    assert!(ok, "{stderr}");
+    let exact: serde_json::Value = serde_json::from_str(stdout.trim()).unwrap();
+    assert_eq!(exact["empty_stride"], 1);
+    assert!(exact["psnr_db"].as_f64().unwrap() >= 999.0, "{exact}");
+    let (ok, stdout, stderr) = volume_cli(&["--empty-stride", "32", "--compare", "--out", png]);
+    assert!(ok, "{stderr}");
+    let probed: serde_json::Value = serde_json::from_str(stdout.trim()).unwrap();
+    assert_eq!(probed["empty_stride"], 32);
+    assert!(probed["psnr_db"].as_f64().unwrap() < 999.0, "{probed}");
+}
+
+#[test]
+fn bad_command_lines_name_the_flag() {
+    for (args, flag) in [
+        (&["--empty-stride", "0"][..], "--empty-stride"),
+        (
+            &["--empty-stride", "4", "--no-skip-empty"],
+            "--empty-stride",
+        ),
+        (
+            &["--empty-stride", "4", "--path", "slices"],
+            "--empty-stride",
+        ),
+        (&["--thin-alpha", "0.01"], "--thin-alpha"),
+        (
+            &["--empty-stride", "4", "--thin-alpha", "1.5"],
+            "--thin-alpha",
+        ),
+    ] {
+        let (ok, _, stderr) = volume_cli(args);
+        assert!(!ok && stderr.contains(flag), "{args:?}: {stderr}");
+    }
+}

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The benchmarks that mean something only on a real GPU, in one short run: the quick bench
 # (every primitive and method at 256², N = 2, 8, 64) and the volume table (`bench --volumes`:
-# the head and brainsmall at 512², N = 8 and 64, every method, the sample-sharing curve), on
+# the head and brainsmall at 512², N = 8 and 64, every method, the approximations' curves), on
 # whatever adapter wgpu picks (WGPU_BACKEND / WGPU_ADAPTER_NAME choose another). About 3–8
 # minutes on a discrete GPU; on lavapipe ≈ 20 minutes.
 #

@@ -44,6 +44,9 @@ ROOT = Path(__file__).resolve().parents[2]
 IMAGES = ROOT / "docs/images/peers"
 SIZE = (512, 512)
 VIEWS = 8
+# The probing stride through transparent material that docs/USAGE.md suggests
+# (SUGGESTED_EMPTY_STRIDE in src/volume/scene.rs): the single pass's approximate row.
+STRIDE = 4
 FRAME_ARGS = ["--rotate=-90,0,0", "--display", "hubner8", "--size", f"{SIZE[0]}x{SIZE[1]}"]
 VOLUMES = [
     # (name, picture stem, file (None: the built-in head), transfer-function preset)
@@ -269,6 +272,8 @@ def measure(name, stem, path, preset, tools, frames, tmp):
     r["ours"]["one"] = ours.run("single-view", IMAGES / f"{stem}_ours_single-view.png")
     r["ours"]["flat"] = ours.run("single-view", tmp / f"{stem}_flat.png", "--no-shading")
     r["ours"]["single-pass"] = ours.run("single-pass", IMAGES / f"{stem}_ours_single-pass.png")
+    r["ours"]["stride"] = ours.run("single-pass", tmp / f"{stem}_stride.png",
+                                   "--empty-stride", str(STRIDE))
     r["ours"]["n-pass"] = ours.run("n-pass", tmp / f"{stem}_npass.png",
                                    "--views-out", str(views_dir))
     r["adapter"] = ours.adapter
@@ -282,6 +287,8 @@ def measure(name, stem, path, preset, tools, frames, tmp):
         "views": [psnr(v, load_rgb(views_dir / f"view_{i:02}.png"))
                   for i, v in enumerate(vtk_views)],
         "spatial": psnr(vtk_spatial, load_rgb(IMAGES / f"{stem}_ours_single-pass.png")),
+        "stride": psnr(load_rgb(tmp / f"{stem}_stride.png"),
+                       load_rgb(IMAGES / f"{stem}_ours_single-pass.png")),
     }
     print(json.dumps(r), file=sys.stderr)
     return r
@@ -362,6 +369,9 @@ def write(results, frames):
         row("autostereo, single view, unshaded", lambda r: f"{r['ours']['flat']:.0f}"),
         row("autostereo, single pass (8 views, spatial image)",
             lambda r: f"{r['ours']['single-pass']:.0f}"),
+        row(f"autostereo, single pass with `--empty-stride {STRIDE}` (approximate; PSNR against "
+            "the exact single pass in brackets)",
+            lambda r: f"{r['ours']['stride']:.0f} ({r['psnr']['stride']:.1f} dB)"),
         row("autostereo, N-pass (8 views + mask)", lambda r: f"{r['ours']['n-pass']:.0f}"),
         "",
         "Is autostereo's 8-view single pass faster than VTK's single view of the same volume?",

@@ -190,9 +190,10 @@ pub struct VolumeScene {
     pub(crate) id: u64,
 }
 
-/// The sample-sharing tolerance `--share-samples` takes when given without a value, in voxels:
-/// where the measured curve (docs/volumes/BENCHMARKS.md) still keeps ≥ 40 dB against the
-/// exact single pass on the head and brainsmall.
+/// The sample-sharing tolerance tests/share_samples.rs holds to its measured error bound, in
+/// voxels: the largest on the measured curve (docs/volumes/BENCHMARKS.md) that keeps ≥ 40 dB
+/// against the exact single pass on the head and brainsmall. On lavapipe sharing is slower than
+/// the exact path at this tolerance, so nothing turns it on by default.
 pub const SUGGESTED_SHARE_SAMPLES: f32 = 0.5;
 
 /// The probing stride through transparent material USAGE.md suggests: 2 voxels at the default

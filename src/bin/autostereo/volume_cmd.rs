@@ -276,7 +276,12 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     if let Some(dir) = &args.views_out {
         write_views(&ctx, &scene, &frame, dir)?;
     }
+    let (share, stride, thin) = (scene.share_samples, scene.empty_stride, scene.thin_alpha);
     let diff = if args.common.compare {
+        // Against the exact N-pass: the probes would otherwise thin out the oracle's samples too.
+        scene.share_samples = 0.0;
+        scene.empty_stride = 1;
+        scene.thin_alpha = 0.0;
         let mut npass = raycaster(&ctx.device, Method::NPass)?;
         Some(compare_with(&ctx, &mut npass, &scene, &frame, &run.image)?)
     } else {
@@ -295,10 +300,10 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         "samples_per_ray_max": (scene.extent.length() / scene.step).ceil(),
         "skip_empty": scene.skip_empty && matches!(args.path, PathArg::Compute),
         // Sharing needs K = 3 rays per pixel (subpixel displays).
-        "share_samples": scene.share_samples,
-        "share_samples_active": scene.share_samples > 0.0 && frame.display.views_per_pixel() == 3,
-        "empty_stride": scene.empty_stride,
-        "thin_alpha": scene.thin_alpha,
+        "share_samples": share,
+        "share_samples_active": share > 0.0 && frame.display.views_per_pixel() == 3,
+        "empty_stride": stride,
+        "thin_alpha": thin,
         "transparent_bricks": scene.bricks().transparent_share(&scene.transfer),
     });
     let mut extra = extra;
