@@ -1,10 +1,10 @@
 //! `bench --volumes`: the volume march's approximations, each against the exact path of the
 //! same run: sample sharing among a pixel's K rays (`--share-samples TAU`, single pass only)
 //! and the probes through transparent material (`--empty-stride P`), also through thin
-//! material (`--thin-alpha A`). Per setting: time, PSNR and the share of subpixels off by
-//! > 2/255 for the single pass on the paper's display (N = 8); the probes, which apply to every
-//! method, also for the single view, the N-pass and the single pass at N = 64, timed one after
-//! the other per setting so that the ratios between them are side by side.
+//! material (`--thin-alpha A`). Per setting: time, PSNR and the share of subpixels off by more
+//! than 2/255 for the single pass on the paper's display (N = 8); the probes, which apply to
+//! every method, also for the single view, the N-pass and the single pass at N = 64, timed one
+//! after the other per setting so that the ratios between them are side by side.
 
 use std::fmt::Write as _;
 
@@ -46,7 +46,7 @@ impl Knob {
     fn label(self) -> String {
         match self {
             Self::Share(tau) => tau.to_string(),
-            Self::Probe { stride, thin } if thin == 0.0 => stride.to_string(),
+            Self::Probe { stride, thin: 0.0 } => stride.to_string(),
             Self::Probe { stride, thin } => format!("{stride}, A = {thin}"),
         }
     }
@@ -55,7 +55,7 @@ impl Knob {
     fn flags(self) -> String {
         match self {
             Self::Share(tau) => format!("--share-samples {tau}"),
-            Self::Probe { stride, thin } if thin == 0.0 => format!("--empty-stride {stride}"),
+            Self::Probe { stride, thin: 0.0 } => format!("--empty-stride {stride}"),
             Self::Probe { stride, thin } => {
                 format!("--empty-stride {stride} --thin-alpha {thin}")
             }
@@ -244,7 +244,7 @@ fn ratio(a: Option<f64>, b: f64) -> String {
 fn series_of(knob: Knob) -> (&'static str, Option<f64>) {
     match knob {
         Knob::Share(tau) => ("share samples", Some(f64::from(tau))),
-        Knob::Probe { stride, thin } if thin == 0.0 => ("empty stride", Some(f64::from(stride))),
+        Knob::Probe { stride, thin: 0.0 } => ("empty stride", Some(f64::from(stride))),
         Knob::Probe { .. } => ("empty stride + thin alpha", None),
     }
 }
