@@ -149,6 +149,9 @@ pub struct SceneWarp<S: ?Sized> {
     prepared: Option<PreparedFor>,
     /// The parallel camera model's crop, recorded last.
     crop: crate::render::camera_crop::CameraCrop,
+    /// One texel the nearness is copied into before the row-bounds pass reads it (see
+    /// `settle_references`).
+    settle: wgpu::Texture,
 }
 
 impl<S: ?Sized> SceneWarp<S> {
@@ -223,6 +226,20 @@ impl<S: ?Sized> SceneWarp<S> {
             pipeline,
             frame: FrameBinding::new(device, &frame_layout),
             npass: NPassHarness::new(device, &frame_layout)?,
+            settle: device.create_texture(&wgpu::TextureDescriptor {
+                label: Some("reference settle texel"),
+                size: wgpu::Extent3d {
+                    width: 1,
+                    height: 1,
+                    depth_or_array_layers: 1,
+                },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format: crate::warp::references::NEARNESS_FORMAT,
+                usage: wgpu::TextureUsages::COPY_DST,
+                view_formats: &[],
+            }),
             prepared: None,
             crop: crate::render::camera_crop::CameraCrop::new(device)?,
         })
@@ -301,6 +318,24 @@ impl<S: ?Sized> SceneWarp<S> {
                 },
             ],
         })
+    }
+
+    /// Copy one texel of the nearness just rendered. Mesa 22.3's llvmpipe (GL) can start a
+    /// compute dispatch that reads a texture while the rasteriser threads are still writing it
+    /// from the render pass before: under load the row-bounds pass then read stale nearness
+    /// (tests/outputs.rs saw 1.5 % of subpixels off, about one run in eight). A copy waits for
+    /// the writes to finish; elsewhere it is one texel.
+    fn settle_references(&self, encoder: &mut wgpu::CommandEncoder) {
+        let images = self.images.as_ref().expect("allocated by prepare");
+        encoder.copy_texture_to_texture(
+            images.nearness.texture.as_image_copy(),
+            self.settle.as_image_copy(),
+            wgpu::Extent3d {
+                width: 1,
+                height: 1,
+                depth_or_array_layers: 1,
+            },
+        );
     }
 
     /// Record the row-bounds pass over the references just rendered.
@@ -392,6 +427,7 @@ impl<S: ?Sized> Renderer<S> for SceneWarp<S> {
         let images = self.images.as_ref().expect("allocated by prepare");
         self.references
             .encode_references(device, encoder, scene, &references, images)?;
+        self.settle_references(encoder);
         self.encode_row_bounds(device, encoder);
         self.frame.write(device, frame);
         if self.options.path == WarpPath::Direct {
