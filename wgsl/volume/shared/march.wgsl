@@ -29,8 +29,8 @@ override SKIP_EMPTY: bool = true;
 override EMPTY_STRIDE: u32 = 1u;
 // Coarse steps through thin material too (`--thin-alpha A`, `VolumeScene::thin_alpha`; with
 // EMPTY_STRIDE > 1): a probe whose segment adds at most A opacity per sample step is taken as
-// one segment P steps long (opacity 1 − (1 − α)^P, colour scaled alike: exact where colour and
-// scalar change linearly over it), and probing goes on after it. 0: only transparent material.
+// one segment P steps long (opacity 1 − (1 − α)^P, colour scaled alike: exact where the scalar
+// changes linearly over the P steps and the colour is constant), and probing goes on after it. 0: only transparent material.
 override THIN_ALPHA: f32 = 0.0;
 
 // A warp's reference views (volume/raycast_reference.wgsl, src/warp) need one representative
