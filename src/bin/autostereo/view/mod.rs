@@ -99,8 +99,9 @@ pub struct ViewArgs {
     #[arg(long, value_parser = parse_move)]
     move_after: Option<(u32, [u32; 2])>,
     /// Scripted stress run for K frames: switch the method every 10 frames, the display every
-    /// 70, the window size every 35; prints the resident memory every 50 frames and the
-    /// period after which the run's state repeats.
+    /// 70, the window size every 35; prints (JSON) resident memory every 50 frames, the heap
+    /// in use every 10, the live GPU objects at each end of the period after which the run's
+    /// state repeats, and that period.
     #[arg(long)]
     exercise: Option<u32>,
     /// What the exercise run switches (default all).
