@@ -89,13 +89,13 @@ fn single_pass_matches_npass_rotated_with_focal_plane_in_front_inside_and_behind
 }
 
 /// Empty-space skipping is exact: every method gives the same image bit for bit with and
-/// without it: rotated, axis-aligned with an odd image size (centre rays along brick faces),
-/// focal plane in front and behind, volumes with partial bricks, on data with much empty space,
+/// without it: rotated, axis-aligned with an odd image size (centre rays along cell faces),
+/// focal plane in front and behind, volumes of odd sizes, on data with much empty space,
 /// little, and a small blob in a large empty box, and under a transfer function whose opacity
 /// steps from 0 to 0.9 (so a wrongly skipped segment cannot hide below 8-bit rounding).
 #[test]
 fn empty_space_skipping_changes_no_pixel() {
-    let head = phantom::ct_head(41).unwrap(); // 41×41×33: partial bricks
+    let head = phantom::ct_head(41).unwrap(); // 41×41×33: odd sizes
     let ml = phantom::marschner_lobb(32).unwrap();
     let dims = [47u32, 39, 35];
     let blob_data = (0..dims[0] * dims[1] * dims[2])
@@ -140,7 +140,7 @@ fn empty_space_skipping_changes_no_pixel() {
         let mut scene =
             VolumeScene::new(&ctx.device, &ctx.queue, volume, tf, None, rotate).unwrap();
         drop(ctx);
-        let share = scene.bricks().transparent_share(&scene.transfer);
+        let share = scene.cells().transparent_share(&scene.transfer);
         assert!(
             share > 0.2,
             "{name}: {share}: too little to skip for a test"

@@ -1,7 +1,7 @@
 //! Scalar volumes: loading (raw, NRRD, VolPack .den), built-in data sets, gradients, transfer
 //! functions with pre-integration, and their GPU textures.
 
-pub mod bricks;
+pub mod empty_space;
 mod gradient;
 pub mod load;
 pub mod passes;
@@ -9,9 +9,9 @@ pub mod phantom;
 mod scene;
 pub mod transfer;
 
-pub use bricks::BrickRanges;
+pub use empty_space::CellRanges;
 pub use scene::{
-    PreintegrationTexture, TransparentBrickTexture, VolumeScene, VolumeTexture, MAX_EMPTY_STRIDE,
+    EmptyDistanceTexture, PreintegrationTexture, VolumeScene, VolumeTexture, MAX_EMPTY_STRIDE,
     MAX_SAMPLES_PER_RAY, SUGGESTED_EMPTY_STRIDE, SUGGESTED_SHARE_SAMPLES,
 };
 pub use transfer::{PreintegrationTable, TransferFunction};

@@ -1,4 +1,4 @@
-//! The volume on the GPU: its texture, the pre-integration table and transparent-brick flags,
+//! The volume on the GPU: its texture, the pre-integration table and empty-space distances,
 //! and [`VolumeScene`], what every volume method renders.
 
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -8,7 +8,7 @@ use half::f16;
 use wgpu::util::DeviceExt;
 
 use super::transfer::{PreintegrationTable, TransferFunction, TABLE_SIZE};
-use super::{BrickRanges, Volume};
+use super::{CellRanges, Volume};
 use crate::error::{Error, Result};
 
 /// The volume as one RGBA16F 3D texture: Sobel gradient in RGB, scalar in A (paper §3.5.1).
@@ -98,22 +98,44 @@ impl PreintegrationTexture {
     }
 }
 
-/// Transparent-brick flags ([`super::BrickRanges::transparent`]) as an R8Uint 3D texture, one
-/// texel per brick.
-pub struct TransparentBrickTexture {
+/// Empty-space distances ([`super::CellRanges::distances`]) as an R8Uint 3D texture, one texel
+/// per voxel cell.
+pub struct EmptyDistanceTexture {
     /// The texture.
     pub texture: wgpu::Texture,
     /// Its view.
     pub view: wgpu::TextureView,
+    /// Its share of the memory budget (one byte per voxel, an eighth of the volume's).
+    _charge: crate::budget::GpuCharge,
 }
 
-impl TransparentBrickTexture {
-    /// Upload `flags` (x fastest) of a `grid` of bricks.
-    pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, grid: [u32; 3], flags: &[u8]) -> Self {
+impl EmptyDistanceTexture {
+    /// Upload `distances` (x fastest) of a `grid` of cells.
+    pub fn new(
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        grid: [u32; 3],
+        distances: &[u8],
+    ) -> Result<Self> {
+        let what = || format!("the {grid:?} empty-space distances (R8)");
+        let charge = crate::budget::charge_gpu(what, distances.len() as u64)?;
         let format = wgpu::TextureFormat::R8Uint;
         let size = (wgpu::TextureDimension::D3, grid);
-        let (texture, view) = upload(device, queue, "transparent bricks", size, format, flags);
-        Self { texture, view }
+        let (texture, view) = crate::gpu::checked(device, "uploading the distances", || {
+            upload(
+                device,
+                queue,
+                "empty-space distances",
+                size,
+                format,
+                distances,
+            )
+        })?;
+        Ok(Self {
+            texture,
+            view,
+            _charge: charge,
+        })
     }
 }
 
@@ -151,7 +173,7 @@ fn upload(
 
 /// A volume ready to render: GPU texture, box size, classification and sampling.
 pub struct VolumeScene {
-    /// Gradients + scalar (private: the brick ranges and the id describe this data).
+    /// Gradients + scalar (private: the cell ranges and the id describe this data).
     texture: VolumeTexture,
     /// World-space size of the box (centred at the origin before `model`).
     pub extent: Vec3,
@@ -165,8 +187,8 @@ pub struct VolumeScene {
     pub model: Mat4,
     /// Blinn-Phong shading from the gradients (off: emission-absorption only).
     pub shade: bool,
-    /// Jump over bricks the transfer function makes fully transparent (ray-marching path;
-    /// exact: the image is the same bit for bit, see `volume::bricks`).
+    /// Jump over space the transfer function makes fully transparent (ray-marching path;
+    /// exact: the image is the same bit for bit, see `volume::empty_space`).
     pub skip_empty: bool,
     /// Sample sharing among a pixel's K rays (single pass, ray marching): where every pair of
     /// the rays' samples on a plane lies within this many voxels, they take their mean ray's
@@ -184,8 +206,8 @@ pub struct VolumeScene {
     /// `empty_stride` steps long (opacity `1 − (1 − α)^P`, colour alike). 0 (the default): only
     /// transparent material.
     pub thin_alpha: f32,
-    /// Scalar ranges per brick of the uploaded volume.
-    pub(crate) bricks: BrickRanges,
+    /// Table entries per voxel cell of the uploaded volume (empty-space skipping).
+    pub(crate) cells: CellRanges,
     /// Identifies the uploaded volume for caches of data derived from it.
     pub(crate) id: u64,
 }
@@ -203,7 +225,7 @@ pub const SUGGESTED_SHARE_SAMPLES: f32 = 0.5;
 pub const SUGGESTED_EMPTY_STRIDE: u32 = 4;
 
 /// Largest probing stride through transparent material (`VolumeScene::empty_stride`): past a
-/// few voxels a probe only misses more, as bricks (4 voxels) already skip what is surely empty.
+/// few voxels a probe only misses more, as the distance map already skips what is surely empty.
 pub const MAX_EMPTY_STRIDE: u32 = 64;
 
 /// Most samples a ray may take (a guard, and the bound on `--step`).
@@ -243,7 +265,7 @@ impl VolumeScene {
             share_samples: 0.0,
             empty_stride: 1,
             thin_alpha: 0.0,
-            bricks: BrickRanges::new(volume),
+            cells: CellRanges::new(volume),
             id: NEXT_ID.fetch_add(1, Ordering::Relaxed),
         })
     }
@@ -294,9 +316,9 @@ impl VolumeScene {
         &self.texture
     }
 
-    /// Scalar ranges per brick (empty-space skipping).
-    pub fn bricks(&self) -> &BrickRanges {
-        &self.bricks
+    /// Table entries per voxel cell (empty-space skipping).
+    pub fn cells(&self) -> &CellRanges {
+        &self.cells
     }
 
     /// Identifies the uploaded volume: caches of data derived from it key on this.

@@ -15,7 +15,7 @@
 @group(1) @binding(2) var preintegration: texture_2d<f32>;
 @group(1) @binding(3) var<uniform> params: VolumeParams;
 
-@group(1) @binding(4) var transparent_bricks: texture_3d<u32>;
+@group(1) @binding(4) var empty_distance: texture_3d<u32>;
 @group(2) @binding(0) var output: texture_storage_2d<rgba8unorm, write>;
 
 // The K rays share samples near the focal plane (volume/shared/share.wgsl); compiled in only

@@ -14,7 +14,7 @@
 @group(1) @binding(2) var preintegration: texture_2d<f32>;
 @group(1) @binding(3) var<uniform> params: VolumeParams;
 
-@group(1) @binding(4) var transparent_bricks: texture_3d<u32>;
+@group(1) @binding(4) var empty_distance: texture_3d<u32>;
 @group(2) @binding(0) var colors: texture_storage_2d_array<rgba8unorm, write>;
 @group(2) @binding(1) var nearness: texture_storage_2d_array<r32uint, write>;
 

@@ -90,7 +90,7 @@ pub struct VolumeArgs {
     /// Voxel spacing X,Y,Z (overrides the file's).
     #[arg(long, value_parser = parse_f32_triple)]
     spacing: Option<[f32; 3]>,
-    /// Don't jump over bricks the transfer function makes transparent (compute path; for
+    /// Don't jump over space the transfer function makes transparent (compute path; for
     /// measuring what skipping saves: the image is the same).
     #[arg(long)]
     no_skip_empty: bool,
@@ -304,7 +304,7 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         "share_samples_active": share > 0.0 && frame.display.views_per_pixel() == 3,
         "empty_stride": stride,
         "thin_alpha": thin,
-        "transparent_bricks": scene.bricks().transparent_share(&scene.transfer),
+        "transparent_cells": scene.cells().transparent_share(&scene.transfer),
     });
     let mut extra = extra;
     if args.common.method == Method::Warp {

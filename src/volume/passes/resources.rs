@@ -1,6 +1,6 @@
 //! What every volume renderer binds at group 1: the volume texture, a linear sampler, the
 //! pre-integration table (cached per transfer function and sampling distance), the per-dispatch
-//! [`VolumeParams`] (dynamic offsets) and the transparent-brick flags (cached per volume and
+//! [`VolumeParams`] (dynamic offsets) and the empty-space distances (cached per volume and
 //! transfer function).
 
 use bytemuck::{Pod, Zeroable};
@@ -11,7 +11,7 @@ use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
 use crate::render::pass_params::PassParams;
 use crate::volume::VolumeScene;
 use crate::volume::{
-    PreintegrationTable, PreintegrationTexture, TransferFunction, TransparentBrickTexture,
+    EmptyDistanceTexture, PreintegrationTable, PreintegrationTexture, TransferFunction,
 };
 
 /// Per-dispatch constants. Keep in sync with `struct VolumeParams` in `wgsl/volume/shared/volume.wgsl`.
@@ -51,11 +51,11 @@ struct UploadedTable {
     texture: PreintegrationTexture,
 }
 
-/// The transparent-brick flags and what they were made for.
-struct UploadedBricks {
+/// The empty-space distances and what they were made for.
+struct UploadedDistances {
     scene_id: u64,
     transfer: TransferFunction,
-    texture: TransparentBrickTexture,
+    texture: EmptyDistanceTexture,
 }
 
 pub(crate) struct VolumeResources {
@@ -65,8 +65,8 @@ pub(crate) struct VolumeResources {
     sampler: wgpu::Sampler,
     pub params: PassParams<VolumeParams>,
     table: Option<UploadedTable>,
-    /// Transparent-brick flags for (scene id, transfer function).
-    bricks: Option<UploadedBricks>,
+    /// Empty-space distances for (scene id, transfer function).
+    distances: Option<UploadedDistances>,
 }
 
 impl VolumeResources {
@@ -116,7 +116,7 @@ impl VolumeResources {
             }),
             params: PassParams::new(device, "volume params"),
             table: None,
-            bricks: None,
+            distances: None,
         }
     }
 
@@ -164,7 +164,7 @@ impl VolumeResources {
     }
 
     /// Upload what `scene` needs: the pre-integration table (rebuilt only when the transfer
-    /// function or step changed) and the transparent-brick flags (per volume and transfer
+    /// function or step changed) and the empty-space distances (per volume and transfer
     /// function). Each upload goes into a new texture, never over one a frame may still use.
     /// The scene's public fields are checked first.
     pub fn upload(
@@ -183,13 +183,15 @@ impl VolumeResources {
                 texture: PreintegrationTexture::new(device, queue, &table),
             });
         }
-        if !self.bricks_fresh(scene) {
-            let bricks = scene.bricks();
-            let flags = bricks.transparent(&scene.transfer);
-            self.bricks = Some(UploadedBricks {
+        if !self.distances_fresh(scene) {
+            let cells = scene.cells();
+            let distances = cells.distances(&scene.transfer);
+            // The old texture's budget charge goes first (a frame still using it keeps it).
+            self.distances = None;
+            self.distances = Some(UploadedDistances {
                 scene_id: scene.id(),
                 transfer: scene.transfer.clone(),
-                texture: TransparentBrickTexture::new(device, queue, bricks.grid, &flags),
+                texture: EmptyDistanceTexture::new(device, queue, cells.grid, &distances)?,
             });
         }
         Ok(())
@@ -202,8 +204,8 @@ impl VolumeResources {
             .is_some_and(|t| t.transfer == scene.transfer && t.step_voxels == step_voxels)
     }
 
-    fn bricks_fresh(&self, scene: &VolumeScene) -> bool {
-        self.bricks
+    fn distances_fresh(&self, scene: &VolumeScene) -> bool {
+        self.distances
             .as_ref()
             .is_some_and(|b| b.scene_id == scene.id() && b.transfer == scene.transfer)
     }
@@ -211,7 +213,7 @@ impl VolumeResources {
     /// Whether [`VolumeResources::upload`] ran for `scene` as it is now (the same volume,
     /// transfer function and step).
     pub fn uploaded_for(&self, scene: &VolumeScene) -> bool {
-        self.table_fresh(scene) && self.bricks_fresh(scene)
+        self.table_fresh(scene) && self.distances_fresh(scene)
     }
 
     /// This frame's constants and the dispatches' (buffers of their own, no queue writes),
@@ -231,8 +233,8 @@ impl VolumeResources {
             .expect("uploaded by prepare")
             .texture
             .view;
-        let bricks = &self
-            .bricks
+        let distances = &self
+            .distances
             .as_ref()
             .expect("uploaded by prepare")
             .texture
@@ -259,7 +261,7 @@ impl VolumeResources {
                 },
                 wgpu::BindGroupEntry {
                     binding: 4,
-                    resource: wgpu::BindingResource::TextureView(bricks),
+                    resource: wgpu::BindingResource::TextureView(distances),
                 },
             ],
         })

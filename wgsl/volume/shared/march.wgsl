@@ -7,15 +7,13 @@
 // samples: the methods differ only in which views they evaluate per pixel and where they
 // write them.
 //
-// Empty-space skipping (exact): after a segment that added nothing, the ray looks up its
-// brick; when every segment inside the brick is transparent under the transfer function
-// (src/volume/bricks.rs), it jumps to its last sample plane inside the brick. The skipped
-// segments would each have added exactly zero, so the image is unchanged bit for bit.
+// Empty-space skipping (exact): after a segment that added nothing, the ray looks up the
+// distance D of its sample's voxel cell (src/volume/empty_space.rs): every cell within D − 1
+// of it is transparent under the transfer function, so the ray jumps to its last sample plane
+// within D − 1 voxels along every axis. The skipped segments would each have added exactly
+// zero, so the image is unchanged bit for bit.
 //
-// Reads `frame`, `volume`, `linear_clamp`, `preintegration`, `params`, `transparent_bricks`.
-
-// Brick edge in voxels; keep in sync with `BRICK` in src/volume/bricks.rs.
-const BRICK: f32 = 4.0;
+// Reads `frame`, `volume`, `linear_clamp`, `preintegration`, `params`, `empty_distance`.
 // Empty-space skipping compiled in (src/volume/passes/raycast.rs sets it per scene): without
 // it the march is the plain loop.
 override SKIP_EMPTY: bool = true;
@@ -70,30 +68,35 @@ fn plane_position(o: vec3<f32>, d: vec3<f32>, k: f32) -> vec3<f32> {
     return o + (depth / frame.camera.focal_distance) * d;
 }
 
-// The ray o + u·d in brick units (texture position × voxels / BRICK), set up once per ray.
-struct BrickRay {
-    origin: vec3<f32>,
-    inv_dir: vec3<f32>,
-    scale: vec3<f32>,
-    last: vec3<u32>,
+// The ray o + u·d against the voxel cells, set up once per ray: voxels per texture unit, the
+// last cell, and the most voxels the ray moves along any axis from one sample plane to the next.
+struct CellRay {
+    voxels: vec3<f32>,
+    last: vec3<f32>,
+    voxels_per_plane: f32,
 }
 
-fn brick_ray(o: vec3<f32>, d: vec3<f32>) -> BrickRay {
-    let scale = vec3<f32>(textureDimensions(volume)) / BRICK;
-    return BrickRay(o * scale, 1.0 / (d * scale), scale, textureDimensions(transparent_bricks) - 1u);
+fn cell_ray(d: vec3<f32>) -> CellRay {
+    let voxels = vec3<f32>(textureDimensions(volume));
+    let per_plane = abs(d * voxels) * (params.step / frame.camera.focal_distance);
+    return CellRay(
+        voxels,
+        vec3<f32>(textureDimensions(empty_distance) - 1u),
+        max(max(max(per_plane.x, per_plane.y), per_plane.z), 1e-6),
+    );
 }
 
-// At texture position p on the ray: the eye depth where the ray leaves p's brick (x) and
-// whether that brick is transparent (y = 1). A ray lying in a brick face can give NaN (no skip:
-// NaN fails the caller's comparisons) or, where min/max drop the NaN, the exit of the other
-// axes: still exact, as samples on the face read only voxels of that brick's span.
-fn brick_exit(ray: BrickRay, p: vec3<f32>) -> vec2<f32> {
-    let brick = min(vec3<u32>(max(floor(p * ray.scale), vec3<f32>(0.0))), ray.last);
-    let a = (vec3<f32>(brick) - ray.origin) * ray.inv_dir;
-    let b = (vec3<f32>(brick) + 1.0 - ray.origin) * ray.inv_dir;
-    let u_out = min(min(max(a.x, b.x), max(a.y, b.y)), max(a.z, b.z));
-    let transparent = textureLoad(transparent_bricks, brick, 0).x != 0u;
-    return vec2<f32>(u_out * frame.camera.focal_distance, select(0.0, 1.0, transparent));
+// Rounding slack, in voxels, between the planes' positions and the distance bound.
+const CELL_SLACK: f32 = 0.01;
+
+// At texture position p on the ray: how many sample planes on the ray may jump (x; the
+// segments up to there all add zero) and p's cell's distance D (y). Cell c holds the samples
+// whose voxel coordinate p·voxels − ½ has floor c (clamped, as the sampler clamps); moving at
+// most D − 1 voxels along every axis keeps that floor within D − 1 of c.
+fn empty_planes(ray: CellRay, p: vec3<f32>) -> vec2<f32> {
+    let cell = clamp(floor(p * ray.voxels - 0.5), vec3<f32>(0.0), ray.last);
+    let distance = f32(textureLoad(empty_distance, vec3<u32>(cell), 0).x);
+    return vec2<f32>(floor((distance - 1.0 - CELL_SLACK) / ray.voxels_per_plane), distance);
 }
 
 // The shaded segment between samples `front` and `back` (back on plane k) of the ray
@@ -163,11 +166,11 @@ fn march_planes(origin: vec3<f32>, dir: vec3<f32>, planes: vec2<f32>, opaque: f3
         }
         return acc;
     }
-    // Sample i sits on plane k0 + i; the front sample is i − 1. Bricks are looked up only
-    // after a transparent segment, and once per brick that turned out not to be transparent.
-    // A jump lands on the brick's last plane j and only re-samples there (`resume`): the one
-    // texture fetch per iteration stays on one code path for all lanes.
-    let bricks = brick_ray(o, d);
+    // Sample i sits on plane k0 + i; the front sample is i − 1. Distances are looked up only
+    // after a transparent segment, and not again before one could allow a jump. A jump lands
+    // on the last plane j within reach and only re-samples there (`resume`): the one texture
+    // fetch per iteration stays on one code path for all lanes.
+    let cells = cell_ray(d);
     var look_up = true;
     var resume = false;
     var next_look_up = 0u;
@@ -182,15 +185,14 @@ fn march_planes(origin: vec3<f32>, dir: vec3<f32>, planes: vec2<f32>, opaque: f3
         }
         if (look_up && i - 1u >= next_look_up) {
             look_up = false;
-            let exit = brick_exit(bricks, plane_position(o, d, k0 + f32(i - 1u)));
-            // Last plane inside the brick, relative to k0.
-            let last = floor(exit.x / params.step) - k0;
-            if (exit.y != 0.0 && last > f32(i - 1u)) {
-                i = u32(min(last, f32(count)));
+            let empty = empty_planes(cells, plane_position(o, d, k0 + f32(i - 1u)));
+            if (empty.x >= 1.0) {
+                i = u32(min(f32(i - 1u) + empty.x, f32(count)));
                 resume = true;
             } else {
-                // Not transparent (or no whole segment left in it): no look-up until past it.
-                next_look_up = select(i, u32(max(last, 0.0)) + 1u, last >= f32(i - 1u));
+                // D moves by at most one per voxel the ray moves: no jump before it has
+                // moved 2 − D voxels.
+                next_look_up = i - 1u + u32(ceil(max(2.0 - empty.y, 0.0) / cells.voxels_per_plane));
             }
         }
         // Segments this iteration spans: one, or a probe of EMPTY_STRIDE through clear space.

@@ -418,7 +418,7 @@ fn economy(md: &mut String, r: &Results) -> Result<()> {
         "\nMeasured here: a K = 1 display saves {} of a single pass (the per-fragment work is \
          per view per pixel; the per-primitive work is not); leaving out the volume lighting \
          saves {} (two texture fetches per sample dominate the Blinn-Phong arithmetic on a CPU); \
-         skipping the bricks the transfer function makes transparent saves {} (exact: the same \
+         skipping the space the transfer function makes transparent saves {} (exact: the same \
          image bit for bit). \
          Differences within ±10 % are noise on a software rasteriser. Not modelled separately: a \
          scene without colour (a vertex colour is 4 of 48 bytes per mesh vertex, 4 of 32 per \
@@ -434,7 +434,7 @@ fn economy(md: &mut String, r: &Results) -> Result<()> {
          override constants set when a pipeline is built for a display (`src/render/specialize.rs`), \
          so a lenticular (K = 1) scene compiles to one ray per fragment and the loops over K fold \
          away; pipelines are cached per (K, N). Volume shading is a uniform switch (`--no-shading`); \
-         the pre-integration table and the transparent-brick flags are rebuilt only when the \
+         the pre-integration table and the empty-space distances are rebuilt only when the \
          transfer function (or the step, or the volume) changes; \
          the splat renderer allocates per-subpixel group images only for exact depth on K = 3 \
          displays; the single-pass renderers allocate no per-view buffers at all (N-pass: N layers).\n"

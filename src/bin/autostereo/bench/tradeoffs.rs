@@ -274,7 +274,7 @@ fn mesh_studies(
 }
 
 /// What a scene saves by not using a feature: volume shading, and work in empty space (marching
-/// through transparent bricks vs skipping them). The K = 3 → 1 saving comes from the measured
+/// through transparent space vs skipping it). The K = 3 → 1 saving comes from the measured
 /// rows, in the report.
 pub fn economy(
     ctx: &Ctx,
@@ -300,7 +300,7 @@ pub fn economy(
                     true,
                 ),
                 (
-                    "marching through transparent bricks (no empty-space skipping), single pass \
+                    "marching through transparent space (no empty-space skipping), single pass \
                      (compute)",
                     |v| &mut v.skip_empty,
                     false,
