@@ -90,29 +90,18 @@ fn single_pass_matches_npass_rotated_with_focal_plane_in_front_inside_and_behind
 
 /// Empty-space skipping is exact: every method gives the same image bit for bit with and
 /// without it: rotated, axis-aligned with an odd image size (centre rays along cell faces),
-/// focal plane in front and behind, volumes of odd sizes, on data with much empty space,
+/// focal plane in front and behind, volumes of odd sizes and one or two voxels thin, steps
+/// longer than a voxel, on data with much empty space,
 /// little, and a small blob in a large empty box, and under a transfer function whose opacity
 /// steps from 0 to 0.9 (so a wrongly skipped segment cannot hide below 8-bit rounding).
 #[test]
 fn empty_space_skipping_changes_no_pixel() {
     let head = phantom::ct_head(41).unwrap(); // 41×41×33: odd sizes
     let ml = phantom::marschner_lobb(32).unwrap();
-    let dims = [47u32, 39, 35];
-    let blob_data = (0..dims[0] * dims[1] * dims[2])
-        .map(|i| {
-            let p = [
-                i % dims[0],
-                (i / dims[0]) % dims[1],
-                i / (dims[0] * dims[1]),
-            ];
-            let r2: f32 = [(p[0], 30.0), (p[1], 14.0), (p[2], 20.0)]
-                .iter()
-                .map(|&(v, c)| (v as f32 - c).powi(2))
-                .sum();
-            (1.0 - r2 / 40.0).max(0.0)
-        })
-        .collect();
-    let blob = Volume::new(dims, [1.0; 3], blob_data).unwrap();
+    let blob = blob_volume([47, 39, 35], [30.0, 14.0, 20.0], 40.0);
+    // One and two voxels thin along an axis: a single cell across it.
+    let flat = blob_volume([30, 26, 2], [20.0, 9.0, 0.5], 30.0);
+    let thin = blob_volume([1, 30, 26], [0.0, 20.0, 9.0], 30.0);
     let step = TransferFunction::new(vec![
         (0.0, [0.0; 4]),
         (0.28, [1.0, 0.8, 0.6, 0.0]),
@@ -123,22 +112,36 @@ fn empty_space_skipping_changes_no_pixel() {
     let preset = |name| TransferFunction::preset(name).unwrap();
     let rotated = Mat4::from_rotation_y(0.6) * Mat4::from_rotation_x(0.35);
     let odd = [97, 81];
-    for (name, volume, tf, rotate, size) in [
-        ("head", &head, preset("ct-skin"), rotated, SIZE),
-        ("head step", &head, step.clone(), rotated, SIZE),
+    // (name, volume, transfer function, rotation, image size, sample step in voxels: 1.5
+    // moves a ray more than a cell per plane, so jumps need D ≥ 3)
+    for (name, volume, tf, rotate, size, step_voxels) in [
+        ("head", &head, preset("ct-skin"), rotated, SIZE, None),
+        ("head step", &head, step.clone(), rotated, SIZE, None),
         (
             "head axis-aligned",
             &head,
             preset("ct-skin"),
             Mat4::IDENTITY,
             odd,
+            None,
         ),
-        ("ml", &ml, preset("ml"), rotated, SIZE),
-        ("blob step", &blob, step, rotated, SIZE),
+        (
+            "head long steps",
+            &head,
+            preset("ct-skin"),
+            rotated,
+            SIZE,
+            Some(1.5),
+        ),
+        ("ml", &ml, preset("ml"), rotated, SIZE, None),
+        ("blob step", &blob, step.clone(), rotated, SIZE, None),
+        ("flat blob", &flat, step.clone(), rotated, SIZE, None),
+        ("thin blob", &thin, step, rotated, SIZE, None),
     ] {
         let ctx = common::gpu();
+        let step_world = step_voxels.map(|s: f32| s * volume.min_spacing());
         let mut scene =
-            VolumeScene::new(&ctx.device, &ctx.queue, volume, tf, None, rotate).unwrap();
+            VolumeScene::new(&ctx.device, &ctx.queue, volume, tf, step_world, rotate).unwrap();
         drop(ctx);
         let share = scene.cells().transparent_share(&scene.transfer);
         assert!(
@@ -164,6 +167,23 @@ fn empty_space_skipping_changes_no_pixel() {
             }
         }
     }
+}
+
+/// A `dims` volume holding a blob: 1 at `centre` (voxel coordinates) falling to 0 at squared
+/// distance `radius2`.
+fn blob_volume(dims: [u32; 3], centre: [f32; 3], radius2: f32) -> Volume {
+    let data = (0..dims[0] * dims[1] * dims[2])
+        .map(|i| {
+            let p = [
+                i % dims[0],
+                (i / dims[0]) % dims[1],
+                i / (dims[0] * dims[1]),
+            ];
+            let r2: f32 = (0..3).map(|a| (p[a] as f32 - centre[a]).powi(2)).sum();
+            (1.0 - r2 / radius2).max(0.0)
+        })
+        .collect();
+    Volume::new(dims, [1.0; 3], data).unwrap()
 }
 
 #[test]

@@ -10,8 +10,12 @@
 //! adds exactly zero. So a ray at a sample in cell c may jump as far as it moves at most D − 1
 //! voxels along every axis and resume on the same sample planes (wgsl/volume/shared/march.wgsl):
 //! the image is the one without skipping, bit for bit (tests/volume.rs). Unlike fixed bricks, a
-//! ray in air next to a surface still skips all but the last voxel, and one look-up crosses up
-//! to 254 voxels of open space.
+//! ray in air next to a surface still skips all but the voxel or two before it, and one look-up
+//! crosses up to 254 voxels of open space.
+//!
+//! Memory: the ranges take 2 bytes per cell for the scene's lifetime (the distances are
+//! rebuilt from them when the transfer function changes); building them holds 2 more per voxel
+//! at a time; the distance texture takes 1 byte per cell on the GPU.
 
 use half::f16;
 
@@ -30,9 +34,6 @@ pub struct CellRanges {
     /// index) a filtered look-up at any scalar inside the cell reads.
     entries: Vec<[u8; 2]>,
 }
-
-/// CPU bytes per voxel the cell ranges keep, and the transient bytes of the distance map.
-pub const CELL_BYTES_PER_VOXEL: u64 = 2 + 2;
 
 impl CellRanges {
     /// Entry ranges of `volume` (validated: see [`Volume::validate`]), reduced one axis at a
@@ -68,6 +69,7 @@ impl CellRanges {
                 }
             }
         }
+        drop(along_x);
         // Along z: per cell.
         let layer = g[0] * g[1];
         let mut entries = vec![[0u8; 2]; layer * g[2]];

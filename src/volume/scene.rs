@@ -105,7 +105,7 @@ pub struct EmptyDistanceTexture {
     pub texture: wgpu::Texture,
     /// Its view.
     pub view: wgpu::TextureView,
-    /// Its share of the memory budget (one byte per voxel, an eighth of the volume's).
+    /// Its share of the memory budget (one byte per cell, about an eighth of the volume's).
     _charge: crate::budget::GpuCharge,
 }
 

@@ -279,7 +279,9 @@ impl VolumeEncode<'_> {
     pub fn check(&self, scene: &VolumeScene, frame: &Frame, target: &SpatialTarget) -> Result<()> {
         scene.validate()?;
         check_target(frame, target)?;
-        let current = self.prepared.filter(|_| self.resources.uploaded_for(scene));
+        let current = self
+            .prepared
+            .filter(|_| self.resources.uploaded_for(scene, scene.skip_empty));
         check_prepared(self.renderer, &current, &self.wanted)
     }
 }
@@ -315,7 +317,8 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         }
         let frame = &self.own_frame(frame)?;
         let key = PreparedFor::of(scene, frame, self.method);
-        self.resources.upload(device, queue, scene)?;
+        self.resources
+            .upload(device, queue, scene, scene.skip_empty)?;
         if let Some(npass) = &mut self.npass {
             npass.prepare(device, frame)?;
         }

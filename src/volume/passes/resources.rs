@@ -51,10 +51,11 @@ struct UploadedTable {
     texture: PreintegrationTexture,
 }
 
-/// The empty-space distances and what they were made for.
+/// The empty-space distances and what they were made for: (scene id, transfer function), or
+/// `None` for the one-texel stand-in of a march that does not skip (a slice pass, or
+/// `--no-skip-empty`), which binds the texture but never reads it.
 struct UploadedDistances {
-    scene_id: u64,
-    transfer: TransferFunction,
+    made_for: Option<(u64, TransferFunction)>,
     texture: EmptyDistanceTexture,
 }
 
@@ -165,13 +166,15 @@ impl VolumeResources {
 
     /// Upload what `scene` needs: the pre-integration table (rebuilt only when the transfer
     /// function or step changed) and the empty-space distances (per volume and transfer
-    /// function). Each upload goes into a new texture, never over one a frame may still use.
-    /// The scene's public fields are checked first.
+    /// function; where the pass does not `skip`, a one-texel stand-in). Each upload goes into a
+    /// new texture, never over one a frame may still use. The scene's public fields are checked
+    /// first.
     pub fn upload(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         scene: &VolumeScene,
+        skip: bool,
     ) -> Result<()> {
         scene.validate()?;
         if !self.table_fresh(scene) {
@@ -183,15 +186,17 @@ impl VolumeResources {
                 texture: PreintegrationTexture::new(device, queue, &table),
             });
         }
-        if !self.distances_fresh(scene) {
-            let cells = scene.cells();
-            let distances = cells.distances(&scene.transfer);
+        if !self.distances_fresh(scene, skip) {
+            let made_for = skip.then(|| (scene.id(), scene.transfer.clone()));
+            let (grid, distances) = match skip {
+                true => (scene.cells().grid, scene.cells().distances(&scene.transfer)),
+                false => ([1; 3], vec![0]),
+            };
             // The old texture's budget charge goes first (a frame still using it keeps it).
             self.distances = None;
             self.distances = Some(UploadedDistances {
-                scene_id: scene.id(),
-                transfer: scene.transfer.clone(),
-                texture: EmptyDistanceTexture::new(device, queue, cells.grid, &distances)?,
+                made_for,
+                texture: EmptyDistanceTexture::new(device, queue, grid, &distances)?,
             });
         }
         Ok(())
@@ -204,16 +209,17 @@ impl VolumeResources {
             .is_some_and(|t| t.transfer == scene.transfer && t.step_voxels == step_voxels)
     }
 
-    fn distances_fresh(&self, scene: &VolumeScene) -> bool {
-        self.distances
-            .as_ref()
-            .is_some_and(|b| b.scene_id == scene.id() && b.transfer == scene.transfer)
+    fn distances_fresh(&self, scene: &VolumeScene, skip: bool) -> bool {
+        self.distances.as_ref().is_some_and(|d| match &d.made_for {
+            Some((id, transfer)) => skip && *id == scene.id() && *transfer == scene.transfer,
+            None => !skip,
+        })
     }
 
     /// Whether [`VolumeResources::upload`] ran for `scene` as it is now (the same volume,
-    /// transfer function and step).
-    pub fn uploaded_for(&self, scene: &VolumeScene) -> bool {
-        self.table_fresh(scene) && self.distances_fresh(scene)
+    /// transfer function and step) and `skip`.
+    pub fn uploaded_for(&self, scene: &VolumeScene, skip: bool) -> bool {
+        self.table_fresh(scene) && self.distances_fresh(scene, skip)
     }
 
     /// This frame's constants and the dispatches' (buffers of their own, no queue writes),

@@ -277,7 +277,8 @@ impl Renderer<VolumeScene> for VolumeSlicer {
         begin_prepare(device, frame, &mut self.prepared)?;
         frame.check_full_views("slice-based")?;
         let key = PreparedFor::for_slices(scene, frame);
-        self.resources.upload(device, queue, scene)?;
+        // Proxy slices are rasterised whole: nothing to skip.
+        self.resources.upload(device, queue, scene, false)?;
         self.ensure_pipeline(device, key.spec)?;
         cached_texture_2d(
             &mut self.accumulation,

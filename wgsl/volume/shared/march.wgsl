@@ -86,17 +86,32 @@ fn cell_ray(d: vec3<f32>) -> CellRay {
     );
 }
 
-// Rounding slack, in voxels, between the planes' positions and the distance bound.
+// Slack, in voxels, between the voxel coordinates computed here and the sampler's own.
 const CELL_SLACK: f32 = 0.01;
 
-// At texture position p on the ray: how many sample planes on the ray may jump (x; the
-// segments up to there all add zero) and p's cell's distance D (y). Cell c holds the samples
-// whose voxel coordinate p·voxels − ½ has floor c (clamped, as the sampler clamps); moving at
-// most D − 1 voxels along every axis keeps that floor within D − 1 of c.
-fn empty_planes(ray: CellRay, p: vec3<f32>) -> vec2<f32> {
-    let cell = clamp(floor(p * ray.voxels - 0.5), vec3<f32>(0.0), ray.last);
+// The voxel coordinate q = p·voxels − ½ of sample plane k of the ray o + u·d.
+fn plane_voxel(ray: CellRay, o: vec3<f32>, d: vec3<f32>, k: f32) -> vec3<f32> {
+    return plane_position(o, d, k) * ray.voxels - 0.5;
+}
+
+// From sample plane k of the ray o + u·d: how many planes on the ray may jump (x: every
+// segment up to there adds zero; 0: none) and the distance D of the sample's cell (y). Cell c
+// holds the samples whose q has floor c (clamped, as the sampler clamps); a sample whose q is
+// within D − 1 of this one along every axis lies in a cell within D − 1 of c. The planes'
+// computed positions are monotone in k, so checking the landing plane's own position bounds
+// every sample between, whatever the rounding (a far camera's positions round coarsely).
+fn empty_planes(ray: CellRay, o: vec3<f32>, d: vec3<f32>, k: f32) -> vec2<f32> {
+    let q = plane_voxel(ray, o, d, k);
+    let cell = clamp(floor(q), vec3<f32>(0.0), ray.last);
     let distance = f32(textureLoad(empty_distance, vec3<u32>(cell), 0).x);
-    return vec2<f32>(floor((distance - 1.0 - CELL_SLACK) / ray.voxels_per_plane), distance);
+    let reach = distance - 1.0 - CELL_SLACK;
+    let planes = floor(reach / ray.voxels_per_plane);
+    if (planes < 1.0) {
+        return vec2<f32>(0.0, distance);
+    }
+    let moved = abs(plane_voxel(ray, o, d, k + planes) - q);
+    let within = max(max(moved.x, moved.y), moved.z) <= reach;
+    return vec2<f32>(select(0.0, planes, within), distance);
 }
 
 // The shaded segment between samples `front` and `back` (back on plane k) of the ray
@@ -185,14 +200,17 @@ fn march_planes(origin: vec3<f32>, dir: vec3<f32>, planes: vec2<f32>, opaque: f3
         }
         if (look_up && i - 1u >= next_look_up) {
             look_up = false;
-            let empty = empty_planes(cells, plane_position(o, d, k0 + f32(i - 1u)));
+            let empty = empty_planes(cells, o, d, k0 + f32(i - 1u));
             if (empty.x >= 1.0) {
                 i = u32(min(f32(i - 1u) + empty.x, f32(count)));
                 resume = true;
             } else {
-                // D moves by at most one per voxel the ray moves: no jump before it has
-                // moved 2 − D voxels.
-                next_look_up = i - 1u + u32(ceil(max(2.0 - empty.y, 0.0) / cells.voxels_per_plane));
+                // A jump needs D ≥ `need`. D changes by at most one per cell boundary crossed,
+                // and a move of δ voxels crosses at most ⌈δ⌉ along an axis: no jump before
+                // the ray has moved more than need − D − 1 voxels.
+                let need = ceil(1.0 + CELL_SLACK + cells.voxels_per_plane);
+                let wait = floor((need - empty.y - 1.0) / cells.voxels_per_plane) + 1.0;
+                next_look_up = i - 1u + u32(max(wait, 1.0));
             }
         }
         // Segments this iteration spans: one, or a probe of EMPTY_STRIDE through clear space.

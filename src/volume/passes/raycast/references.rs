@@ -23,7 +23,8 @@ impl ReferenceRenderer<VolumeScene> for VolumeRaycaster {
         begin_prepare(device, frame, &mut self.prepared)?;
         check_reference_method("VolumeRaycaster", self.method)?;
         let key = PreparedFor::of(scene, frame, Method::Warp);
-        self.resources.upload(device, queue, scene)?;
+        self.resources
+            .upload(device, queue, scene, scene.skip_empty)?;
         self.finish_prepare(device, key)
     }
 
@@ -44,7 +45,7 @@ impl ReferenceRenderer<VolumeScene> for VolumeRaycaster {
         };
         let current = encode
             .prepared
-            .filter(|_| encode.resources.uploaded_for(scene));
+            .filter(|_| encode.resources.uploaded_for(scene, scene.skip_empty));
         crate::render::check_prepared(encode.renderer, &current, &encode.wanted)?;
         let params = VolumeResources::params(scene, frame, false, 0.0);
         let volume_group = self.resources.bind(device, scene, frame, &[params]);
