@@ -281,7 +281,7 @@ impl VolumeEncode<'_> {
         check_target(frame, target)?;
         let current = self
             .prepared
-            .filter(|_| self.resources.uploaded_for(scene, scene.skip_empty));
+            .filter(|_| self.resources.uploaded_for(scene, self.wanted.skip_empty));
         check_prepared(self.renderer, &current, &self.wanted)
     }
 }
@@ -318,7 +318,7 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         let frame = &self.own_frame(frame)?;
         let key = PreparedFor::of(scene, frame, self.method);
         self.resources
-            .upload(device, queue, scene, scene.skip_empty)?;
+            .upload(device, queue, scene, key.skip_empty)?;
         if let Some(npass) = &mut self.npass {
             npass.prepare(device, frame)?;
         }

@@ -277,8 +277,9 @@ impl Renderer<VolumeScene> for VolumeSlicer {
         begin_prepare(device, frame, &mut self.prepared)?;
         frame.check_full_views("slice-based")?;
         let key = PreparedFor::for_slices(scene, frame);
-        // Proxy slices are rasterised whole: nothing to skip.
-        self.resources.upload(device, queue, scene, false)?;
+        // Proxy slices are rasterised whole: nothing to skip (`key.skip_empty` is false).
+        self.resources
+            .upload(device, queue, scene, key.skip_empty)?;
         self.ensure_pipeline(device, key.spec)?;
         cached_texture_2d(
             &mut self.accumulation,

@@ -24,7 +24,7 @@ impl ReferenceRenderer<VolumeScene> for VolumeRaycaster {
         check_reference_method("VolumeRaycaster", self.method)?;
         let key = PreparedFor::of(scene, frame, Method::Warp);
         self.resources
-            .upload(device, queue, scene, scene.skip_empty)?;
+            .upload(device, queue, scene, key.skip_empty)?;
         self.finish_prepare(device, key)
     }
 
@@ -43,9 +43,11 @@ impl ReferenceRenderer<VolumeScene> for VolumeRaycaster {
             resources: &self.resources,
             wanted: PreparedFor::of(scene, frame, Method::Warp),
         };
-        let current = encode
-            .prepared
-            .filter(|_| encode.resources.uploaded_for(scene, scene.skip_empty));
+        let current = encode.prepared.filter(|_| {
+            encode
+                .resources
+                .uploaded_for(scene, encode.wanted.skip_empty)
+        });
         crate::render::check_prepared(encode.renderer, &current, &encode.wanted)?;
         let params = VolumeResources::params(scene, frame, false, 0.0);
         let volume_group = self.resources.bind(device, scene, frame, &[params]);
