@@ -47,14 +47,19 @@ impl CellRanges {
         let widen = |r: [u8; 2], s: [u8; 2]| [r[0].min(s[0]), r[1].max(s[1])];
         let pair = |c: usize, n: usize| [c, (c + 1).min(n - 1)];
         // Along x: per (cell x, y, z). The GPU holds the scalars as f16.
+        // Each voxel's entries once (a row at a time), then widened over the cell's pair.
         let mut along_x = vec![[0u8; 2]; g[0] * dims[1] * dims[2]];
+        let mut row_entries = vec![[0u8; 2]; dims[0]];
         for (row, out) in volume
             .data
             .chunks_exact(dims[0])
             .zip(along_x.chunks_exact_mut(g[0]))
         {
+            for (e, &v) in row_entries.iter_mut().zip(row) {
+                *e = entries_of(v);
+            }
             for (cx, range) in out.iter_mut().enumerate() {
-                let [a, b] = pair(cx, dims[0]).map(|x| entries_of(row[x]));
+                let [a, b] = pair(cx, dims[0]).map(|x| row_entries[x]);
                 *range = widen(a, b);
             }
         }

@@ -1,6 +1,6 @@
 //! What the viewer's exercise run records of its memory: resident memory every 50 frames, the
-//! heap in use every 10, and at the end of each period of its schedule (after a GPU wait) those
-//! two and the live GPU objects. tests/viewer.rs reads the report for leaks.
+//! heap in use every 10, and at the end of each period of its schedule (after a GPU wait) the
+//! live GPU objects. tests/viewer.rs reads the report for leaks.
 
 /// Frames between two samples of the heap in use. On GL llvmpipe the heap swings by up to
 /// 100 MiB from frame to frame (frames in flight, the window system's images), so a leak is
@@ -16,10 +16,6 @@ pub(super) struct MemoryLog {
     rss: Vec<f64>,
     /// Heap in use every `HEAP_EVERY` frames, MiB.
     heap: Vec<f64>,
-    /// Resident memory at the end of each period, MiB.
-    rss_each_period: Vec<f64>,
-    /// Heap in use at the end of each period, MiB.
-    heap_each_period: Vec<f64>,
     /// Live GPU objects and bytes at the end of each period.
     gpu_each_period: Vec<serde_json::Value>,
 }
@@ -38,8 +34,6 @@ impl MemoryLog {
     /// A sample at the end of a period: waits for the GPU first (see `live_gpu_objects`).
     pub fn end_period(&mut self, device: &wgpu::Device) {
         self.gpu_each_period.push(live_gpu_objects(device));
-        self.rss_each_period.extend(resident_mib());
-        self.heap_each_period.extend(heap_in_use_mib());
     }
 
     /// The report's memory fields.
@@ -47,10 +41,8 @@ impl MemoryLog {
         serde_json::json!({
             "rss_mib_samples": self.rss,
             "rss_sample_every_frames": RSS_EVERY,
-            "rss_mib_each_period": self.rss_each_period,
             "heap_mib_samples": self.heap,
             "heap_sample_every_frames": HEAP_EVERY,
-            "heap_mib_each_period": self.heap_each_period,
             "gpu_objects_each_period": self.gpu_each_period,
         })
     }
