@@ -247,7 +247,7 @@ pub fn write(dir: &Path, r: &Results) -> Result<()> {
              - per-view resolution (`--view-scale`), time and PSNR per scale: \
              [view_scale/BENCHMARKS.md](view_scale/BENCHMARKS.md) (`bench --view-scale`)\n\
              - volumes at N = 8 and 64 with the volume march's approximations \
-             (`--empty-stride`, `--thin-alpha`, `--share-samples`) and the volume targets at a \
+             (`--empty-stride`, `--thin-alpha`, `--step`, `--share-samples`) and the volume targets at a \
              setting ≥ 40 dB: [volumes/BENCHMARKS.md](volumes/BENCHMARKS.md) \
              (`bench --volumes`)\n\
              - the full matrix: [full/BENCHMARKS.md](full/BENCHMARKS.md) (`bench`)\n"
