@@ -2,7 +2,8 @@
 //! sampled every half voxel): pre-integration keeps the image close to the exact one, with an
 //! error within what was measured here and in the benchmark (docs/volumes/BENCHMARKS.md) that
 //! grows with the step, alone and with the probes; the single pass equals the N-pass at every
-//! step, as the views share the sample planes.
+//! step, as the views share the sample planes; the command line's `--step` counts voxels of the
+//! smallest spacing and `--compare` measures a coarser step against the default one.
 
 mod common;
 
@@ -62,7 +63,7 @@ struct Bound {
 
 /// The error against the exact single pass (half-voxel steps) on these small phantoms stays
 /// within the bound measured here (lavapipe, 96×80, rotated, worst of the two displays; PSNR /
-/// share of subpixels off by > 2/255), with a margin of about 1.5 dB and a fifth:
+/// share of subpixels off by > 2/255), with a margin of about 1.5 dB and a sixth:
 ///
 /// | setting | head 48³ | Marschner–Lobb 40³ |
 /// |---|---|---|
@@ -71,8 +72,8 @@ struct Bound {
 /// | step 1.5 | 34.9 dB / 9.1 % | 32.9 dB / 14.4 % |
 /// | step 1.5, P = 4 | 31.6 dB / 9.4 % | 32.6 dB / 14.6 % |
 ///
-/// The probed settings are the fastest ≥ 40 dB of the benchmark on the 512² head (41.9 dB) and
-/// brainsmall (42.5 dB); these phantoms' shells are one or two voxels thin and their features
+/// The probed settings are the fastest ≥ 40 dB of the benchmark on the 96×96×77 head (41.9 dB)
+/// and brainsmall (42.5 dB) at 512²; these phantoms' shells are one or two voxels thin and their features
 /// a few voxels wide, so a coarse step costs them more: the bound says what it costs on small
 /// features, not on typical data. The error grows with the step.
 #[test]
@@ -119,6 +120,10 @@ fn the_error_of_a_coarser_step_stays_within_its_measured_bound() {
                 let d = compare(&render(&scene, &frame, Method::SinglePass), &exact).unwrap();
                 eprintln!("{name} {spec} step {step} P {stride}: {d:?}");
                 assert!(
+                    d.max_abs_err > 0,
+                    "{name} {spec}: step {step} changed nothing"
+                );
+                assert!(
                     d.psnr_db >= min_db && d.frac_off_2 <= max_off,
                     "{name} {spec} step {step} P {stride}: {d:?}"
                 );
@@ -132,4 +137,38 @@ fn the_error_of_a_coarser_step_stays_within_its_measured_bound() {
             );
         }
     }
+}
+
+/// `autostereo volume ARGS --json` on a 32³ head with voxels 2 × 2 × 3 units: the JSON.
+fn volume_json(args: &[&str]) -> serde_json::Value {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_autostereo"))
+        .arg("volume")
+        .args(["--builtin-size", "32", "--spacing", "2,2,3"])
+        .args(["--size", "64x48", "--frames", "1", "--json"])
+        .args(args)
+        .env("RUST_LOG", "off")
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{args:?}: {stderr}");
+    serde_json::from_str(String::from_utf8_lossy(&out.stdout).trim()).unwrap()
+}
+
+/// `--step 1` is one voxel of the smallest spacing (2 units here), and `--compare` measures it
+/// against the exact N-pass at the default half voxel (1 unit), not at its own step, where the
+/// single pass and the N-pass agree exactly.
+#[test]
+fn the_command_line_step_counts_voxels_and_compare_measures_it_against_the_default() {
+    let exact = volume_json(&["--compare"]);
+    assert_eq!(exact["step"], 1.0, "{exact}");
+    assert!(exact["psnr_db"].as_f64().unwrap() >= 999.0, "{exact}");
+    let coarse = volume_json(&["--step", "1", "--compare"]);
+    assert_eq!(coarse["step"], 2.0, "{coarse}");
+    assert_eq!(coarse["compare_step"], 1.0, "{coarse}");
+    let psnr = coarse["psnr_db"].as_f64().unwrap();
+    assert!((20.0..999.0).contains(&psnr), "{coarse}");
+    // A finer step than the default is its own reference.
+    let fine = volume_json(&["--step", "0.25", "--compare"]);
+    assert_eq!(fine["compare_step"], 0.5, "{fine}");
+    assert!(fine["psnr_db"].as_f64().unwrap() >= 999.0, "{fine}");
 }

@@ -247,11 +247,7 @@ impl VolumeScene {
         // Everything is checked before the upload.
         volume.validate()?;
         let voxel = volume.min_spacing();
-        // Half a voxel, or what keeps a ray within MAX_SAMPLES_PER_RAY on a very long volume
-        // (a 16384×1×1 volume must not fail on a step the user never set).
-        let step = step.unwrap_or_else(|| {
-            (0.5 * voxel).max(volume.extent().length() / (MAX_SAMPLES_PER_RAY - 1.0))
-        });
+        let step = step.unwrap_or_else(|| Self::default_step(volume));
         check_scene(volume.extent(), &transfer, step, model)?;
         let texture = VolumeTexture::new_validated(device, queue, volume)?;
         static NEXT_ID: AtomicU64 = AtomicU64::new(0);
@@ -326,6 +322,13 @@ impl VolumeScene {
     /// Identifies the uploaded volume: caches of data derived from it key on this.
     pub(crate) fn id(&self) -> u64 {
         self.id
+    }
+
+    /// The sampling distance of the exact image (world units): half the smallest voxel spacing,
+    /// or what keeps a ray within [`MAX_SAMPLES_PER_RAY`] on a very long volume (a 16384×1×1
+    /// volume must not fail on a step the user never set).
+    pub fn default_step(volume: &Volume) -> f32 {
+        (0.5 * volume.min_spacing()).max(volume.extent().length() / (MAX_SAMPLES_PER_RAY - 1.0))
     }
 
     /// Sampling distance for `slices` samples across the box diagonal.

@@ -277,11 +277,14 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         write_views(&ctx, &scene, &frame, dir)?;
     }
     let (share, stride, thin) = (scene.share_samples, scene.empty_stride, scene.thin_alpha);
+    let step = scene.step;
     let diff = if args.common.compare {
-        // Against the exact N-pass: the probes would otherwise thin out the oracle's samples too.
+        // Against the exact N-pass: the probes would otherwise thin out the oracle's samples too,
+        // and a coarser step than the default is an approximation of the default's image.
         scene.share_samples = 0.0;
         scene.empty_stride = 1;
         scene.thin_alpha = 0.0;
+        scene.step = step.min(VolumeScene::default_step(&volume));
         let mut npass = raycaster(&ctx.device, Method::NPass)?;
         Some(compare_with(&ctx, &mut npass, &scene, &frame, &run.image)?)
     } else {
@@ -296,8 +299,9 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         },
         "volume_dims": volume.dims,
         "spacing": volume.spacing,
-        "step": scene.step,
-        "samples_per_ray_max": (scene.extent.length() / scene.step).ceil(),
+        "step": step,
+        "compare_step": args.common.compare.then_some(scene.step),
+        "samples_per_ray_max": (scene.extent.length() / step).ceil(),
         "skip_empty": scene.skip_empty && matches!(args.path, PathArg::Compute),
         // Sharing needs K = 3 rays per pixel (subpixel displays).
         "share_samples": share,
