@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use autostereo::display::{Calibration, Display, DisplayKind};
 use autostereo::mesh::Mesh;
-use autostereo::volume::load::{parse_den, parse_nrrd, parse_raw, RawSpec, SampleType};
+use autostereo::volume::load::{parse_den, parse_nrrd, parse_raw, RawSpec};
 use autostereo::volume::TransferFunction;
 
 /// What each fuzz target does with one input (the same calls as `fuzz/fuzz_targets/*.rs`).
@@ -23,7 +23,7 @@ fn run(target: &str, data: &[u8]) {
             drop(parse_nrrd(data, &dir.join("fuzz.nrrd")));
         }
         "raw" => {
-            if let Some((spec, file)) = raw_spec(data) {
+            if let Some((spec, file)) = RawSpec::from_fuzz_input(data) {
                 drop(parse_raw(file, "fuzz.raw".as_ref(), &spec));
             }
         }
@@ -84,32 +84,6 @@ fn run(target: &str, data: &[u8]) {
     }
 }
 
-/// The raw target's description from the first 12 bytes, and the file bytes after them.
-fn raw_spec(data: &[u8]) -> Option<(RawSpec, &[u8])> {
-    const KINDS: [SampleType; 8] = [
-        SampleType::U8,
-        SampleType::I8,
-        SampleType::U16,
-        SampleType::I16,
-        SampleType::U32,
-        SampleType::I32,
-        SampleType::F32,
-        SampleType::F64,
-    ];
-    if data.len() < 12 {
-        return None;
-    }
-    let half = |i: usize| u16::from_le_bytes([data[i], data[i + 1]]);
-    let spec = RawSpec {
-        dims: [half(0), half(2), half(4)].map(u32::from),
-        kind: KINDS[data[6] as usize % KINDS.len()],
-        big_endian: data[7] & 1 == 1,
-        spacing: [1.0, 1.0, 1.0 + f32::from(data[8])],
-        header_bytes: u64::from(half(10)),
-    };
-    Some((spec, &data[12..]))
-}
-
 fn inputs(kind: &str, target: &str) -> Vec<PathBuf> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("fuzz")
@@ -165,7 +139,7 @@ fn seeds_are_valid_inputs() {
     }
     for file in inputs("seeds", "raw") {
         let data = std::fs::read(&file).unwrap();
-        let (spec, bytes) = raw_spec(&data).unwrap();
+        let (spec, bytes) = RawSpec::from_fuzz_input(&data).unwrap();
         parse_raw(bytes, &file, &spec).unwrap();
     }
     for file in inputs("seeds", "den") {

@@ -21,6 +21,36 @@ pub struct RawSpec {
     pub header_bytes: u64,
 }
 
+impl RawSpec {
+    /// A raw volume as the fuzzer feeds it (fuzz/fuzz_targets/raw.rs, replayed on stable by
+    /// tests/fuzz_regressions.rs): the description from the first 12 bytes (dimensions as three
+    /// little-endian u16, the sample type and byte order, the z spacing, the header length),
+    /// the file's bytes after them; `None` for fewer than 12 bytes.
+    #[doc(hidden)]
+    pub fn from_fuzz_input(data: &[u8]) -> Option<(Self, &[u8])> {
+        const KINDS: [SampleType; 8] = [
+            SampleType::U8,
+            SampleType::I8,
+            SampleType::U16,
+            SampleType::I16,
+            SampleType::U32,
+            SampleType::I32,
+            SampleType::F32,
+            SampleType::F64,
+        ];
+        let (head, file) = data.split_at_checked(12)?;
+        let half = |i: usize| u16::from_le_bytes([head[i], head[i + 1]]);
+        let spec = Self {
+            dims: [half(0), half(2), half(4)].map(u32::from),
+            kind: KINDS[usize::from(head[6]) % KINDS.len()],
+            big_endian: head[7] & 1 == 1,
+            spacing: [1.0, 1.0, 1.0 + f32::from(head[8])],
+            header_bytes: u64::from(half(10)),
+        };
+        Some((spec, file))
+    }
+}
+
 /// Load a raw volume; the file must hold exactly `header_bytes` + the samples (its size is
 /// checked before it is read).
 pub fn load_raw(path: &Path, spec: &RawSpec) -> Result<Volume> {

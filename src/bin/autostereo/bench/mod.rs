@@ -80,7 +80,7 @@ pub struct Plan {
     pub warp: bool,
     /// `--view-scale`: N = 8 at 512², the view-scale study only.
     pub view_scale: bool,
-    /// `--volumes`: volumes only, N = 8 and 64 at 512², the sample-sharing study only.
+    /// `--volumes`: volumes only, N = 8 and 64 at 512², the approximations' studies only.
     pub volumes: bool,
     pub size: [u32; 2],
     pub views: Vec<u32>,
