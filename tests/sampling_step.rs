@@ -73,9 +73,9 @@ struct Bound {
 /// | step 1.5, P = 4 | 31.6 dB / 9.4 % | 32.6 dB / 14.6 % |
 ///
 /// The probed settings are the fastest ≥ 40 dB of the benchmark on the 96×96×77 head (41.9 dB)
-/// and brainsmall (42.5 dB) at 512²; these phantoms' shells are one or two voxels thin and their features
-/// a few voxels wide, so a coarse step costs them more: the bound says what it costs on small
-/// features, not on typical data. The error grows with the step.
+/// and brainsmall (42.5 dB) at 512²; these phantoms' shells are one or two voxels thin and
+/// their features a few voxels wide, so a coarse step costs them more: the bound says what it
+/// costs on small features, not on typical data. The error grows with the step.
 #[test]
 fn the_error_of_a_coarser_step_stays_within_its_measured_bound() {
     let head = phantom::ct_head(48).unwrap();

@@ -446,9 +446,9 @@ fn targets(md: &mut String, r: &Results) -> Result<()> {
         md,
         "Per volume, the fastest setting of the probes (`--empty-stride`, with or without \
          `--thin-alpha`, at the default or a coarser `--step`) whose single pass keeps ≥ 40 dB \
-         against the exact image at N = 8 and at N = 64, against the *exact* N-pass and single view (the issue's targets), and, for \
-         comparison, against the N-pass and single view at the same setting (the probes speed \
-         every method up).\n"
+         against the exact image at N = 8 and at N = 64, against the *exact* N-pass and single \
+         view (the issue's targets), and, for comparison, against the N-pass and single view at \
+         the same setting (the probes speed every method up).\n"
     )?;
     writeln!(
         md,
