@@ -279,6 +279,12 @@ impl VolumeEncode<'_> {
     pub fn check(&self, scene: &VolumeScene, frame: &Frame, target: &SpatialTarget) -> Result<()> {
         scene.validate()?;
         check_target(frame, target)?;
+        self.check_current(scene)
+    }
+
+    /// `Err(NotPrepared)` unless `prepared` is `wanted` and the scene's uploads are current
+    /// (the reference views' encode, which has no spatial target, checks this alone).
+    pub fn check_current(&self, scene: &VolumeScene) -> Result<()> {
         let current = self
             .prepared
             .filter(|_| self.resources.uploaded_for(scene, self.wanted.skip_empty));

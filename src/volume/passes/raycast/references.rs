@@ -43,12 +43,7 @@ impl ReferenceRenderer<VolumeScene> for VolumeRaycaster {
             resources: &self.resources,
             wanted: PreparedFor::of(scene, frame, Method::Warp),
         };
-        let current = encode.prepared.filter(|_| {
-            encode
-                .resources
-                .uploaded_for(scene, encode.wanted.skip_empty)
-        });
-        crate::render::check_prepared(encode.renderer, &current, &encode.wanted)?;
+        encode.check_current(scene)?;
         let params = VolumeResources::params(scene, frame, false, 0.0);
         let volume_group = self.resources.bind(device, scene, frame, &[params]);
         let output_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
