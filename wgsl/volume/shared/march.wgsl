@@ -69,25 +69,29 @@ fn plane_position(o: vec3<f32>, d: vec3<f32>, k: f32) -> vec3<f32> {
 }
 
 // The ray o + u·d against the voxel cells, set up once per ray: voxels per texture unit, the
-// last cell, and the most voxels the ray moves along any axis from one sample plane to the next.
+// last cell, the most voxels the ray moves along any axis from one sample plane to the next,
+// and the least distance D that allows a jump of one plane (`empty_planes`).
 struct CellRay {
     voxels: vec3<f32>,
     last: vec3<f32>,
     voxels_per_plane: f32,
-}
-
-fn cell_ray(d: vec3<f32>) -> CellRay {
-    let voxels = vec3<f32>(textureDimensions(volume));
-    let per_plane = abs(d * voxels) * (params.step / frame.camera.focal_distance);
-    return CellRay(
-        voxels,
-        vec3<f32>(textureDimensions(empty_distance) - 1u),
-        max(max(max(per_plane.x, per_plane.y), per_plane.z), 1e-6),
-    );
+    need: f32,
 }
 
 // Slack, in voxels, between the voxel coordinates computed here and the sampler's own.
 const CELL_SLACK: f32 = 0.01;
+
+fn cell_ray(d: vec3<f32>) -> CellRay {
+    let voxels = vec3<f32>(textureDimensions(volume));
+    let per_plane = abs(d * voxels) * (params.step / frame.camera.focal_distance);
+    let voxels_per_plane = max(max(max(per_plane.x, per_plane.y), per_plane.z), 1e-6);
+    return CellRay(
+        voxels,
+        vec3<f32>(textureDimensions(empty_distance) - 1u),
+        voxels_per_plane,
+        ceil(1.0 + CELL_SLACK + voxels_per_plane),
+    );
+}
 
 // The voxel coordinate q = p·voxels − ½ of sample plane k of the ray o + u·d.
 fn plane_voxel(ray: CellRay, o: vec3<f32>, d: vec3<f32>, k: f32) -> vec3<f32> {
@@ -208,8 +212,7 @@ fn march_planes(origin: vec3<f32>, dir: vec3<f32>, planes: vec2<f32>, opaque: f3
                 // A jump needs D ≥ `need`. D changes by at most one per cell boundary crossed,
                 // and a move of δ voxels crosses at most ⌈δ⌉ along an axis: no jump before
                 // the ray has moved more than need − D − 1 voxels.
-                let need = ceil(1.0 + CELL_SLACK + cells.voxels_per_plane);
-                let wait = floor((need - empty.y - 1.0) / cells.voxels_per_plane) + 1.0;
+                let wait = floor((cells.need - empty.y - 1.0) / cells.voxels_per_plane) + 1.0;
                 next_look_up = i - 1u + u32(max(wait, 1.0));
             }
         }
