@@ -14,10 +14,11 @@ use autostereo::display::Display;
 use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::mesh::{Mesh, MeshBuffers};
-use autostereo::render::{
-    MeshLayered, MeshMrt, MeshNPass, MeshSinglePass, MeshSinglePassOptions, MeshTiled, Method,
-    Renderer, TileClip, Visibility,
+use autostereo::mesh::{
+    MeshLayered, MeshMrt, MeshNPass, MeshSinglePass, MeshSinglePassOptions, MeshTiled, TileClip,
+    Visibility,
 };
+use autostereo::render::{Method, Renderer};
 use autostereo::target::SpatialTarget;
 use autostereo::timing::FrameTimer;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};

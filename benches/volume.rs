@@ -13,13 +13,16 @@ use autostereo::camera::MultiViewCamera;
 use autostereo::display::Display;
 use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
-use autostereo::render::{AlphaMode, Method, Renderer, VolumeRaycaster, VolumeScene, VolumeSlicer};
+use autostereo::render::{Method, Renderer};
 use autostereo::target::SpatialTarget;
 use autostereo::timing::FrameTimer;
 use autostereo::volume::{load, phantom, TransferFunction, Volume};
+use autostereo::volume::{AlphaMode, VolumeScene};
 use criterion::{criterion_group, criterion_main, Criterion};
 use glam::Mat4;
 
+use autostereo::volume::VolumeSettings;
+use autostereo::{RendererOptions, VolumeOptions, VolumePath};
 use common::{configure, gpu_iter, SIZE};
 
 fn data_sets() -> Vec<(&'static str, Volume, &'static str)> {
@@ -38,36 +41,51 @@ fn bench(c: &mut Criterion) {
     let (device, queue) = (&ctx.device, &ctx.queue);
     let target = SpatialTarget::new(device, SIZE).unwrap();
     let timer = FrameTimer::new(device, queue);
-    let raycaster = |method| -> Box<dyn Renderer<VolumeScene>> {
-        Box::new(VolumeRaycaster::new(device, method).unwrap())
+    let of = |method, path, skip_empty| -> Box<dyn Renderer<VolumeScene>> {
+        let options = RendererOptions {
+            volume: VolumeOptions {
+                path,
+                settings: VolumeSettings {
+                    skip_empty,
+                    ..Default::default()
+                },
+            },
+            ..RendererOptions::new(method)
+        };
+        options.volume_renderer(device).unwrap()
     };
-    // (name, renderer, empty-space skipping)
-    let mut methods: Vec<(&str, Box<dyn Renderer<VolumeScene>>, bool)> = vec![
-        ("single-pass (compute)", raycaster(Method::SinglePass), true),
+    let ray = VolumePath::RayMarch;
+    let mut methods: Vec<(&str, Box<dyn Renderer<VolumeScene>>)> = vec![
+        ("single-pass (compute)", of(Method::SinglePass, ray, true)),
         (
             "single-pass (compute, no skipping)",
-            raycaster(Method::SinglePass),
-            false,
+            of(Method::SinglePass, ray, false),
         ),
         (
             "single-pass (slices, exact α)",
-            Box::new(VolumeSlicer::new(device, AlphaMode::Exact).unwrap()),
-            true,
+            of(
+                Method::SinglePass,
+                VolumePath::Slices(AlphaMode::Exact),
+                true,
+            ),
         ),
         (
             "single-pass (slices, paper α)",
-            Box::new(VolumeSlicer::new(device, AlphaMode::Paper).unwrap()),
-            true,
+            of(
+                Method::SinglePass,
+                VolumePath::Slices(AlphaMode::Paper),
+                true,
+            ),
         ),
-        ("n-pass", raycaster(Method::NPass), true),
-        ("single-view", raycaster(Method::SingleView), true),
-        ("tiled", raycaster(Method::Tiled), true),
-        ("layered", raycaster(Method::Layered), true),
+        ("n-pass", of(Method::NPass, ray, true)),
+        ("single-view", of(Method::SingleView, ray, true)),
+        ("tiled", of(Method::Tiled, ray, true)),
+        ("layered", of(Method::Layered, ray, true)),
     ];
     for (name, volume, tf) in data_sets() {
         let transfer = TransferFunction::preset(tf).unwrap();
         let rotation = Mat4::from_rotation_x(-90f32.to_radians());
-        let mut scene = VolumeScene::new(device, queue, &volume, transfer, None, rotation).unwrap();
+        let scene = VolumeScene::new(device, queue, &volume, transfer, rotation).unwrap();
         for views in [8u32, 64] {
             let display = Display::parse(&format!("slanted:{views},8,2/3,7/6")).unwrap();
             // The views span a fixed baseline (that of the default 8-view camera), as a display's
@@ -79,8 +97,7 @@ fn bench(c: &mut Criterion) {
             let frame = Frame::new(camera, display, SIZE).unwrap();
             let mut group = c.benchmark_group(format!("volume/{name}/N{views}"));
             configure(&mut group);
-            for (method, renderer, skip_empty) in &mut methods {
-                scene.skip_empty = *skip_empty;
+            for (method, renderer) in &mut methods {
                 group.bench_function(*method, |b| {
                     renderer.prepare(device, queue, &scene, &frame).unwrap();
                     gpu_iter(b, &timer, device, queue, |e| {

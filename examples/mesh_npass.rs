@@ -11,9 +11,8 @@ use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::image_io::compare;
 use autostereo::mesh::{Mesh, MeshBuffers};
-use autostereo::render::{
-    MeshNPass, MeshSinglePass, MeshSinglePassOptions, Method, Renderer, Visibility,
-};
+use autostereo::mesh::{MeshNPass, MeshSinglePass, MeshSinglePassOptions, Visibility};
+use autostereo::render::{Method, Renderer};
 use autostereo::target::SpatialTarget;
 use autostereo::views::extract_view;
 

@@ -12,9 +12,11 @@ use autostereo::camera::MultiViewCamera;
 use autostereo::display::Display;
 use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
-use autostereo::render::{Method, OutputBlit, Renderer, VolumeRaycaster, VolumeScene};
+use autostereo::render::{Method, OutputBlit, Renderer};
 use autostereo::target::SpatialTarget;
+use autostereo::volume::VolumeSettings;
 use autostereo::volume::{phantom, TransferFunction};
+use autostereo::volume::{VolumeRaycaster, VolumeScene};
 use glam::Mat4;
 use winit::application::ApplicationHandler;
 use winit::event::WindowEvent;
@@ -57,17 +59,14 @@ impl Viewer {
         surface.configure(&ctx.device, &config);
         let volume = phantom::ct_head(64)?;
         let transfer = TransferFunction::preset("ct-skin")?;
-        let scene = VolumeScene::new(
-            &ctx.device,
-            &ctx.queue,
-            &volume,
-            transfer,
-            None,
-            Mat4::IDENTITY,
-        )?;
+        let scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, transfer, Mat4::IDENTITY)?;
         Ok(Self {
             blit: OutputBlit::new(&ctx.device, config.format)?,
-            renderer: VolumeRaycaster::new(&ctx.device, Method::SinglePass)?,
+            renderer: VolumeRaycaster::new(
+                &ctx.device,
+                Method::SinglePass,
+                VolumeSettings::default(),
+            )?,
             bounds: volume.bounds(),
             window,
             surface,

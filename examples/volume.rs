@@ -9,9 +9,11 @@ use autostereo::display::Display;
 use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::image_io::compare;
-use autostereo::render::{Method, Renderer, VolumeRaycaster, VolumeScene};
+use autostereo::render::{Method, Renderer};
 use autostereo::target::SpatialTarget;
+use autostereo::volume::VolumeSettings;
 use autostereo::volume::{load, phantom, TransferFunction};
+use autostereo::volume::{VolumeRaycaster, VolumeScene};
 use glam::Mat4;
 
 fn main() -> Result<()> {
@@ -41,11 +43,12 @@ fn main() -> Result<()> {
     // The scene on the GPU: gradients + scalar in one 3D texture, sampled every half voxel,
     // rotated 30° about y.
     let rotation = Mat4::from_rotation_y(30f32.to_radians());
-    let scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, transfer, None, rotation)?;
+    let scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, transfer, rotation)?;
 
     // One single-pass frame, straight into the spatial image.
     let target = SpatialTarget::new(&ctx.device, size)?;
-    let mut single_pass = VolumeRaycaster::new(&ctx.device, Method::SinglePass)?;
+    let mut single_pass =
+        VolumeRaycaster::new(&ctx.device, Method::SinglePass, VolumeSettings::default())?;
     single_pass.render(&ctx.device, &ctx.queue, &scene, &frame, &target)?;
     let image = target.read(&ctx.device, &ctx.queue)?;
     let out = args.get(1).map(String::as_str).unwrap_or("volume.png");
@@ -53,7 +56,7 @@ fn main() -> Result<()> {
 
     // The N-pass oracle: one render per view, composited with the same mask.
     let reference = SpatialTarget::new(&ctx.device, size)?;
-    VolumeRaycaster::new(&ctx.device, Method::NPass)?.render(
+    VolumeRaycaster::new(&ctx.device, Method::NPass, VolumeSettings::default())?.render(
         &ctx.device,
         &ctx.queue,
         &scene,

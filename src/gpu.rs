@@ -13,7 +13,7 @@ pub struct GpuOptions {
 }
 
 /// Optional features the renderers use when the adapter has them; never required up front.
-/// Renderers that need one check [`GpuContext::require`] and fail with a typed error.
+/// Renderers that need one check [`require_features`] and fail with a typed error.
 const OPTIONAL_FEATURES: wgpu::Features = wgpu::Features::TIMESTAMP_QUERY
     .union(wgpu::Features::TIMESTAMP_QUERY_INSIDE_ENCODERS)
     .union(wgpu::Features::DUAL_SOURCE_BLENDING)

@@ -13,6 +13,7 @@
 
 #![warn(missing_docs)]
 
+mod any;
 pub mod budget;
 pub mod camera;
 pub mod display;
@@ -22,6 +23,7 @@ pub mod frame;
 pub mod gpu;
 pub mod image_io;
 pub mod mesh;
+mod options;
 pub mod points;
 pub mod readback;
 pub mod render;
@@ -33,4 +35,6 @@ pub mod views;
 pub mod volume;
 pub mod warp;
 
+pub use any::{AnyRenderer, AnyScene};
 pub use error::{Error, Result};
+pub use options::{MeshOptions, PointOptions, RendererOptions, VolumeOptions, VolumePath};

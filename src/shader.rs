@@ -294,7 +294,7 @@ mod tests {
             ),
             (
                 "volume/raycast.wgsl",
-                crate::render::VolumeParams::GPU_LAYOUT,
+                crate::volume::passes::VolumeParams::GPU_LAYOUT,
             ),
             (
                 "volume/slices.wgsl",

@@ -8,15 +8,17 @@ use autostereo::camera::Bounds;
 use autostereo::frame::Frame;
 use autostereo::image_io::RgbImage;
 use autostereo::mesh::{Mesh, MeshBuffers};
+use autostereo::mesh::{MeshNPass, MeshSinglePass, MeshSinglePassOptions, Visibility};
 use autostereo::points::{GroupCount, PointCloud, SplatScene};
+use autostereo::points::{PointSplatter, SplatOptions};
 use autostereo::readback::read_texture_rgba8;
-use autostereo::render::{
-    AnyRenderer, AnyScene, MeshNPass, MeshSinglePass, MeshSinglePassOptions, Method, OutputBlit,
-    PointSplatter, Renderer, SplatOptions, Visibility, VolumeRaycaster, VolumeScene,
-};
+use autostereo::render::{Method, OutputBlit, Renderer};
 use autostereo::target::SpatialTarget;
+use autostereo::volume::VolumeSettings;
 use autostereo::volume::{phantom, TransferFunction};
+use autostereo::volume::{VolumeRaycaster, VolumeScene};
 use autostereo::Error;
+use autostereo::{AnyRenderer, AnyScene, RendererOptions};
 use glam::{Mat4, Vec3};
 
 const SIZE: [u32; 2] = [96, 80];
@@ -101,10 +103,11 @@ fn two_frames_with_different_cameras_in_one_encoder_before_one_submit() {
     let scene = {
         let ctx = common::gpu();
         let tf = TransferFunction::preset("ct-skin").unwrap();
-        VolumeScene::new(&ctx.device, &ctx.queue, &head, tf, None, Mat4::IDENTITY).unwrap()
+        VolumeScene::new(&ctx.device, &ctx.queue, &head, tf, Mat4::IDENTITY).unwrap()
     };
     for method in [Method::SinglePass, Method::NPass] {
-        let mut raycaster = VolumeRaycaster::new(&common::gpu().device, method).unwrap();
+        let mut raycaster =
+            VolumeRaycaster::new(&common::gpu().device, method, VolumeSettings::default()).unwrap();
         let name = format!("volume-{method}");
         assert_two_frames_in_one_encoder(&name, &mut raycaster, &scene, head.bounds());
     }
@@ -312,7 +315,12 @@ fn what_a_caller_can_get_wrong_is_a_clear_error() {
     let (splats, _) = cloud.complete(1.0).unwrap();
     let points = AnyScene::Points(SplatScene::new(device, &splats, GroupCount::Auto).unwrap());
     let mesh_scene = AnyScene::Mesh(buffers);
-    let mut any = AnyRenderer::new(device, &mesh_scene, Method::SinglePass).unwrap();
+    let mut any = AnyRenderer::new(
+        device,
+        &mesh_scene,
+        &RendererOptions::new(Method::SinglePass),
+    )
+    .unwrap();
     any.render(device, &ctx.queue, &mesh_scene, &frame, &spatial)
         .unwrap();
     let e = any

@@ -8,9 +8,11 @@ use autostereo::display::{Display, DisplayKind};
 use autostereo::frame::Frame;
 use autostereo::gpu::{GpuContext, GpuOptions};
 use autostereo::image_io::{compare, RgbImage};
+use autostereo::mesh::MeshNPass;
 use autostereo::mesh::{Mesh, MeshBuffers};
-use autostereo::render::{MaskImageRenderer, MeshNPass, Method, Renderer};
+use autostereo::render::{MaskImageRenderer, Method, Renderer};
 use autostereo::target::SpatialTarget;
+use autostereo::volume::VolumeSettings;
 
 /// One GL context per process, shared by the tests (docs/DESIGN.md §7: a second device from the same
 /// GL adapter makes the first render zeros).
@@ -86,11 +88,10 @@ fn gl_backend_renders_masks_and_meshes() {
 /// matches its N-pass oracle on the same adapter.
 #[test]
 fn gl_backend_runs_the_single_pass_renderers() {
-    use autostereo::render::{
-        AlphaMode, MeshSinglePass, MeshSinglePassOptions, Method, Visibility, VolumeRaycaster,
-        VolumeScene, VolumeSlicer,
-    };
+    use autostereo::mesh::{MeshSinglePass, MeshSinglePassOptions, Visibility};
+    use autostereo::render::Method;
     use autostereo::volume::{phantom, TransferFunction};
+    use autostereo::volume::{AlphaMode, VolumeRaycaster, VolumeScene, VolumeSlicer};
 
     let gl = gl();
     let (device, queue) = (&gl.device, &gl.queue);
@@ -117,15 +118,8 @@ fn gl_backend_runs_the_single_pass_renderers() {
 
     let volume = phantom::ct_head(32).unwrap();
     let tf = TransferFunction::preset("ct-skin").unwrap();
-    let scene = VolumeScene::new(
-        device,
-        queue,
-        &volume,
-        tf,
-        None,
-        glam::Mat4::from_rotation_y(0.5),
-    )
-    .unwrap();
+    let scene =
+        VolumeScene::new(device, queue, &volume, tf, glam::Mat4::from_rotation_y(0.5)).unwrap();
     let camera = MultiViewCamera::framing(volume.bounds(), 8, None, 0.5, 1.0).unwrap();
     let frame = Frame::new(camera, Display::parse("hubner8").unwrap(), [96, 96]).unwrap();
     let render = |renderer: &mut dyn Renderer<VolumeScene>| {
@@ -135,9 +129,15 @@ fn gl_backend_runs_the_single_pass_renderers() {
             .unwrap();
         read(&target)
     };
-    let npass = render(&mut VolumeRaycaster::new(device, Method::NPass).unwrap());
-    let compute = render(&mut VolumeRaycaster::new(device, Method::SinglePass).unwrap());
-    let slices = render(&mut VolumeSlicer::new(device, AlphaMode::Exact).unwrap());
+    let npass = render(
+        &mut VolumeRaycaster::new(device, Method::NPass, VolumeSettings::default()).unwrap(),
+    );
+    let compute = render(
+        &mut VolumeRaycaster::new(device, Method::SinglePass, VolumeSettings::default()).unwrap(),
+    );
+    let slices = render(
+        &mut VolumeSlicer::new(device, AlphaMode::Exact, VolumeSettings::default()).unwrap(),
+    );
     assert!(
         npass.data.iter().filter(|&&v| v > 8).count() > 1000,
         "GL volume is empty"
@@ -153,7 +153,8 @@ fn gl_backend_runs_the_single_pass_renderers() {
 #[test]
 fn gl_backend_splats_points() {
     use autostereo::points::{GroupCount, PointCloud, SplatScene};
-    use autostereo::render::{Method, PointSplatter, SplatDepth, SplatOptions};
+    use autostereo::points::{PointSplatter, SplatDepth, SplatOptions};
+    use autostereo::render::Method;
 
     let gl = gl();
     let (device, queue) = (&gl.device, &gl.queue);

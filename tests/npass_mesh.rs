@@ -7,9 +7,10 @@ use autostereo::camera::MultiViewCamera;
 use autostereo::display::{Display, DisplayKind};
 use autostereo::frame::Frame;
 use autostereo::image_io::RgbImage;
+use autostereo::mesh::MeshNPass;
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::readback::read_texture_rgba8;
-use autostereo::render::{MeshNPass, Method, Renderer};
+use autostereo::render::{Method, Renderer};
 use autostereo::target::SpatialTarget;
 use glam::{Mat4, Vec3};
 

@@ -7,7 +7,8 @@ mod common;
 use autostereo::frame::Frame;
 use autostereo::image_io::{compare, RgbImage};
 use autostereo::points::{GroupCount, PointCloud, SplatScene, Splats};
-use autostereo::render::{Method, PointSplatter, Renderer, SplatDepth, SplatOptions};
+use autostereo::points::{PointSplatter, SplatDepth, SplatOptions};
+use autostereo::render::{Method, Renderer};
 use autostereo::target::SpatialTarget;
 use glam::Vec3;
 

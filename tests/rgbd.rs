@@ -321,3 +321,52 @@ fn the_callers_textures_are_checked() {
         .unwrap_err();
     assert!(err.to_string().contains("focus"), "{err}");
 }
+
+/// Encode checks what prepare got ready against everything the frame can change: a frame with
+/// a new size, view count or display, encoded without a new prepare, is `NotPrepared` (the
+/// per-view path would otherwise draw into stale per-view layers of the old frame).
+#[test]
+fn a_frame_that_changed_since_prepare_is_not_prepared() {
+    let ctx = common::gpu();
+    let (device, queue) = (&ctx.device, &ctx.queue);
+    let image = RgbdImage::flat(pattern(64, 48), 0.3).unwrap();
+    let scene = RgbdScene::new(device, queue, &image).unwrap();
+    let options = WarpOptions {
+        path: WarpPath::PerView,
+        ..WarpOptions::default()
+    };
+    let mut warp = RgbdWarp::new(device, options).unwrap();
+    let prepared = Frame::for_display(Display::parse("hubner8").unwrap(), [64, 48]).unwrap();
+    warp.prepare(device, queue, &scene, &prepared).unwrap();
+    let changed = [
+        (
+            "size",
+            Frame::for_display(Display::parse("hubner8").unwrap(), [32, 24]),
+        ),
+        (
+            "views",
+            Frame::for_display(Display::parse("lenticular:5").unwrap(), [64, 48]),
+        ),
+        (
+            "display",
+            Frame::for_display(Display::parse("slanted:8,7.5,1/6,0.2").unwrap(), [64, 48]),
+        ),
+    ];
+    for (what, frame) in changed {
+        let frame = frame.unwrap();
+        let target = SpatialTarget::new(device, frame.size).unwrap();
+        let mut encoder = device.create_command_encoder(&Default::default());
+        let error = warp
+            .encode(device, &mut encoder, &scene, &frame, &target)
+            .expect_err(what);
+        assert!(
+            matches!(error, autostereo::Error::NotPrepared { .. }),
+            "{what}: {error}"
+        );
+    }
+    // The frame it was prepared for still encodes.
+    let target = SpatialTarget::new(device, prepared.size).unwrap();
+    let mut encoder = device.create_command_encoder(&Default::default());
+    warp.encode(device, &mut encoder, &scene, &prepared, &target)
+        .unwrap();
+}

@@ -1,28 +1,24 @@
-//! Sample sharing among a pixel's K rays (`VolumeScene::share_samples`, `--share-samples`):
+//! Sample sharing among a pixel's K rays (`VolumeSettings::share_samples`, `--share-samples`):
 //! 0 is the exact single pass bit for bit; above 0 it is an approximation whose error against
 //! the exact path stays within what the benchmark measured (docs/volumes/BENCHMARKS.md).
 
 mod common;
 
-use autostereo::frame::Frame;
-use autostereo::image_io::{compare, RgbImage};
-use autostereo::render::{Method, Renderer, VolumeRaycaster, VolumeScene};
-use autostereo::target::SpatialTarget;
-use autostereo::volume::{phantom, TransferFunction, Volume};
-use glam::Mat4;
+use autostereo::image_io::compare;
+use autostereo::render::Method;
+use autostereo::volume::phantom;
+use autostereo::volume::VolumeRaycaster;
+use autostereo::volume::VolumeSettings;
 
 const SIZE: [u32; 2] = [96, 80];
 
-fn scene(volume: &Volume, tf: &str) -> VolumeScene {
-    let ctx = common::gpu();
-    let rotate = Mat4::from_rotation_y(0.5) * Mat4::from_rotation_x(0.3);
-    let tf = TransferFunction::preset(tf).unwrap();
-    VolumeScene::new(&ctx.device, &ctx.queue, volume, tf, None, rotate).unwrap()
-}
-
-fn render(scene: &VolumeScene, frame: &Frame, method: Method) -> RgbImage {
-    let mut renderer = VolumeRaycaster::new(&common::gpu().device, method).unwrap();
-    common::render(&mut renderer, scene, frame)
+/// Sharing samples within `tau` voxels, skipping empty space or not.
+fn sharing(tau: f32, skip_empty: bool) -> VolumeSettings {
+    VolumeSettings {
+        share_samples: tau,
+        skip_empty,
+        ..VolumeSettings::default()
+    }
 }
 
 /// Two K = 3 displays: the paper's and a slanted lens of 45 views.
@@ -31,20 +27,24 @@ const DISPLAYS: [&str; 2] = ["hubner8", "slanted:45,7.5,1/6,0.2"];
 #[test]
 fn tau_zero_is_the_exact_single_pass_bit_for_bit() {
     let head = phantom::ct_head(40).unwrap();
-    let mut scene = scene(&head, "ct-skin");
+    let scene = common::turned_volume(&head, "ct-skin");
     for spec in DISPLAYS {
         let frame = common::frame(head.bounds(), spec, 0.06, 1.0, SIZE);
         for skip in [true, false] {
-            scene.skip_empty = skip;
-            scene.share_samples = 0.0;
-            let exact = render(&scene, &frame, Method::SinglePass);
-            let oracle = render(&scene, &frame, Method::NPass);
+            let exact =
+                common::render_volume(&scene, &frame, Method::SinglePass, sharing(0.0, skip));
+            let oracle = common::render_volume(&scene, &frame, Method::NPass, sharing(0.0, skip));
             assert!(exact == oracle, "{spec} skip {skip}: TAU = 0 is not exact");
-            // The tolerance is the single pass's alone: the N-pass ignores it.
-            scene.share_samples = 2.0;
-            assert!(render(&scene, &frame, Method::NPass) == oracle, "{spec}");
+            // The tolerance is the single pass's alone: the N-pass refuses it.
+            let npass = {
+                let device = &common::gpu().device;
+                VolumeRaycaster::new(device, Method::NPass, sharing(2.0, skip)).err()
+            };
+            let refused = npass.expect("the N-pass has no sharing").to_string();
+            assert!(refused.contains("single pass"), "{spec}: {refused}");
             assert!(
-                render(&scene, &frame, Method::SinglePass) != exact,
+                common::render_volume(&scene, &frame, Method::SinglePass, sharing(2.0, skip))
+                    != exact,
                 "{spec} skip {skip}: TAU = 2 voxels shared nothing"
             );
         }
@@ -56,11 +56,10 @@ fn tau_zero_is_the_exact_single_pass_bit_for_bit() {
 #[test]
 fn coinciding_rays_share_everything_and_change_nothing_visible() {
     let head = phantom::ct_head(40).unwrap();
-    let mut scene = scene(&head, "ct-skin");
+    let scene = common::turned_volume(&head, "ct-skin");
     let frame = common::frame(head.bounds(), "hubner8", 0.0, 1.0, SIZE);
-    let exact = render(&scene, &frame, Method::SinglePass);
-    scene.share_samples = 0.01;
-    let shared = render(&scene, &frame, Method::SinglePass);
+    let exact = common::render_volume(&scene, &frame, Method::SinglePass, sharing(0.0, true));
+    let shared = common::render_volume(&scene, &frame, Method::SinglePass, sharing(0.01, true));
     let d = compare(&shared, &exact).unwrap();
     assert!(d.max_abs_err <= 1, "{d:?}");
 }
@@ -77,14 +76,19 @@ fn the_error_at_the_default_tolerance_stays_within_its_measured_bound() {
         ("head", &head, "ct-skin", 43.5, 0.04),
         ("ml", &ml, "ml", 39.5, 0.06),
     ] {
-        let mut scene = scene(volume, tf);
+        let scene = common::turned_volume(volume, tf);
         for spec in DISPLAYS {
             let frame = common::frame(volume.bounds(), spec, 0.06, 1.0, SIZE);
-            let exact = render(&scene, &frame, Method::SinglePass);
+            let exact =
+                common::render_volume(&scene, &frame, Method::SinglePass, sharing(0.0, true));
             let mut last_db = f64::INFINITY;
             for tau in [DEFAULT_TAU, 4.0 * DEFAULT_TAU] {
-                scene.share_samples = tau;
-                let d = compare(&render(&scene, &frame, Method::SinglePass), &exact).unwrap();
+                let settings = sharing(tau, true);
+                let d = compare(
+                    &common::render_volume(&scene, &frame, Method::SinglePass, settings),
+                    &exact,
+                )
+                .unwrap();
                 eprintln!("{name} {spec} TAU {tau}: {d:?}");
                 if tau == DEFAULT_TAU {
                     assert!(
@@ -95,7 +99,6 @@ fn the_error_at_the_default_tolerance_stays_within_its_measured_bound() {
                 assert!(d.psnr_db < last_db, "{name} {spec} TAU {tau}: {d:?}");
                 last_db = d.psnr_db;
             }
-            scene.share_samples = 0.0;
         }
     }
 }
@@ -105,18 +108,12 @@ const DEFAULT_TAU: f32 = autostereo::volume::SUGGESTED_SHARE_SAMPLES;
 
 #[test]
 fn a_negative_or_non_finite_tolerance_is_a_clear_error() {
-    let head = phantom::ct_head(16).unwrap();
-    let mut scene = scene(&head, "ct-skin");
-    let frame = common::frame(head.bounds(), "hubner8", 0.06, 1.0, [32, 32]);
     for tau in [-0.5, f32::NAN, f32::INFINITY] {
-        scene.share_samples = tau;
-        let ctx = common::gpu();
-        let target = SpatialTarget::new(&ctx.device, frame.size).unwrap();
-        let err = VolumeRaycaster::new(&ctx.device, Method::SinglePass)
-            .unwrap()
-            .render(&ctx.device, &ctx.queue, &scene, &frame, &target)
-            .unwrap_err()
+        let device = &common::gpu().device;
+        let err = VolumeRaycaster::new(device, Method::SinglePass, sharing(tau, true))
+            .err()
+            .expect("refused")
             .to_string();
-        assert!(err.contains("--share-samples"), "{tau}: {err}");
+        assert!(err.contains("sample sharing tolerance"), "{tau}: {err}");
     }
 }

@@ -8,10 +8,9 @@ use autostereo::camera::MultiViewCamera;
 use autostereo::display::Display;
 use autostereo::frame::Frame;
 use autostereo::image_io::{compare, ImageDiff, RgbImage};
+use autostereo::mesh::{CoverBounds, MeshNPass, MeshSinglePassOptions, Visibility};
 use autostereo::mesh::{Mesh, MeshBuffers};
-use autostereo::render::{
-    CoverBounds, MeshNPass, MeshSinglePassOptions, Method, Renderer, Visibility,
-};
+use autostereo::render::{Method, Renderer};
 use autostereo::target::SpatialTarget;
 use glam::{Mat4, Vec3};
 

@@ -14,9 +14,11 @@ use autostereo::frame::Frame;
 use autostereo::image_io::{compare, ImageDiff, RgbImage};
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::points::{GroupCount, PointCloud, SplatScene};
-use autostereo::render::{AnyRenderer, AnyScene, Method, Renderer, VolumeScene};
+use autostereo::render::{Method, Renderer};
 use autostereo::target::SpatialTarget;
+use autostereo::volume::VolumeScene;
 use autostereo::volume::{phantom, TransferFunction, Volume};
+use autostereo::{AnyRenderer, AnyScene, RendererOptions};
 use glam::{Mat4, Vec3};
 
 const SIZE: [u32; 2] = [48, 40];
@@ -26,9 +28,9 @@ const BACKGROUND: [f32; 4] = [0.2, 0.4, 0.6, 1.0];
 struct Primitive {
     name: &'static str,
     scene: AnyScene,
-    /// What the N-pass oracle renders when it differs from `scene`: the volume's single pass
-    /// skips empty space, its oracle marches every segment, so the extremes test skipping too.
-    oracle_scene: Option<AnyScene>,
+    /// How the N-pass oracle renders: the volume's single pass skips empty space, its oracle
+    /// marches every segment, so the extremes test skipping too.
+    oracle: RendererOptions,
     bounds: Bounds,
 }
 
@@ -66,7 +68,7 @@ fn mesh(offset: Vec3, degenerate: bool) -> Primitive {
         name: "mesh",
         bounds: mesh.bounds().unwrap(),
         scene: AnyScene::Mesh(MeshBuffers::new(&ctx.device, &mesh).unwrap()),
-        oracle_scene: None,
+        oracle: RendererOptions::new(Method::NPass),
     }
 }
 
@@ -87,18 +89,15 @@ fn volume(offset: Vec3, degenerate: bool) -> Primitive {
         ))
     });
     let ctx = common::gpu();
-    let scene = |skip_empty| {
-        let tf = TransferFunction::preset("ct-skin").unwrap();
-        let mut scene =
-            VolumeScene::new(&ctx.device, &ctx.queue, &volume, tf, None, model).unwrap();
-        scene.skip_empty = skip_empty;
-        AnyScene::Volume(Box::new(scene))
-    };
+    let tf = TransferFunction::preset("ct-skin").unwrap();
+    let scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, tf, model).unwrap();
+    let mut oracle = RendererOptions::new(Method::NPass);
+    oracle.volume.settings.skip_empty = false;
     Primitive {
         name: "volume",
         bounds: Bounds::of_points(corners).unwrap(),
-        scene: scene(true),
-        oracle_scene: Some(scene(false)),
+        scene: AnyScene::Volume(Box::new(scene)),
+        oracle,
     }
 }
 
@@ -129,7 +128,7 @@ fn points(offset: Vec3, degenerate: bool) -> Primitive {
         name: "points",
         bounds: splats.bounds().unwrap(),
         scene: AnyScene::Points(SplatScene::new(&ctx.device, &splats, GroupCount::Auto).unwrap()),
-        oracle_scene: None,
+        oracle: RendererOptions::new(Method::NPass),
     }
 }
 
@@ -138,17 +137,16 @@ fn render_pair(p: &Primitive, frame: &Frame) -> (RgbImage, RgbImage) {
     let ctx = common::gpu();
     let (device, queue) = (&ctx.device, &ctx.queue);
     let target = SpatialTarget::new(device, frame.size).unwrap();
-    let run = |method: Method, scene: &AnyScene| -> RgbImage {
-        AnyRenderer::new(device, scene, method)
+    let run = |options: &RendererOptions| -> RgbImage {
+        AnyRenderer::new(device, &p.scene, options)
             .unwrap()
-            .render(device, queue, scene, frame, &target)
+            .render(device, queue, &p.scene, frame, &target)
             .unwrap();
         target.read(device, queue).unwrap()
     };
-    let oracle = p.oracle_scene.as_ref().unwrap_or(&p.scene);
     (
-        run(Method::SinglePass, &p.scene),
-        run(Method::NPass, oracle),
+        run(&RendererOptions::new(Method::SinglePass)),
+        run(&p.oracle),
     )
 }
 

@@ -6,9 +6,11 @@ mod common;
 
 use autostereo::frame::Frame;
 use autostereo::image_io::{compare, RgbImage};
-use autostereo::render::{AlphaMode, Method, Renderer, VolumeRaycaster, VolumeScene, VolumeSlicer};
+use autostereo::render::{Method, Renderer};
 use autostereo::target::SpatialTarget;
+use autostereo::volume::VolumeSettings;
 use autostereo::volume::{phantom, TransferFunction, Volume};
+use autostereo::volume::{AlphaMode, VolumeRaycaster, VolumeScene, VolumeSlicer};
 use glam::Mat4;
 
 const SIZE: [u32; 2] = [96, 80];
@@ -20,7 +22,6 @@ fn scene(volume: &Volume, tf: &str, rotate: Mat4) -> VolumeScene {
         &ctx.queue,
         volume,
         TransferFunction::preset(tf).unwrap(),
-        None,
         rotate,
     )
     .unwrap()
@@ -31,9 +32,18 @@ fn frame(volume: &Volume, spec: &str, separation_share: f32, focal_scale: f32) -
 }
 
 fn render(scene: &VolumeScene, frame: &Frame, method: Method) -> RgbImage {
+    render_with(scene, frame, method, VolumeSettings::default())
+}
+
+fn render_with(
+    scene: &VolumeScene,
+    frame: &Frame,
+    method: Method,
+    settings: VolumeSettings,
+) -> RgbImage {
     let ctx = common::gpu();
     let target = SpatialTarget::new(&ctx.device, frame.size).unwrap();
-    VolumeRaycaster::new(&ctx.device, method)
+    VolumeRaycaster::new(&ctx.device, method, settings)
         .unwrap()
         .render(&ctx.device, &ctx.queue, scene, frame, &target)
         .unwrap();
@@ -43,7 +53,7 @@ fn render(scene: &VolumeScene, frame: &Frame, method: Method) -> RgbImage {
 fn render_slices(scene: &VolumeScene, frame: &Frame, alpha: AlphaMode) -> RgbImage {
     let ctx = common::gpu();
     let target = SpatialTarget::new(&ctx.device, frame.size).unwrap();
-    VolumeSlicer::new(&ctx.device, alpha)
+    VolumeSlicer::new(&ctx.device, alpha, VolumeSettings::default())
         .unwrap()
         .render(&ctx.device, &ctx.queue, scene, frame, &target)
         .unwrap();
@@ -139,9 +149,7 @@ fn empty_space_skipping_changes_no_pixel() {
         ("thin blob", &thin, step, rotated, SIZE, None),
     ] {
         let ctx = common::gpu();
-        let step_world = step_voxels.map(|s: f32| s * volume.min_spacing());
-        let mut scene =
-            VolumeScene::new(&ctx.device, &ctx.queue, volume, tf, step_world, rotate).unwrap();
+        let scene = VolumeScene::new(&ctx.device, &ctx.queue, volume, tf, rotate).unwrap();
         drop(ctx);
         let share = scene.cells().transparent_share(&scene.transfer);
         assert!(
@@ -151,10 +159,13 @@ fn empty_space_skipping_changes_no_pixel() {
         for (spec, scale) in [("hubner8", 0.75), ("lenticular:5", 1.3)] {
             let frame = common::frame(volume.bounds(), spec, 0.06, scale, size);
             for method in [Method::SinglePass, Method::NPass, Method::SingleView] {
-                scene.skip_empty = true;
-                let skipped = render(&scene, &frame, method);
-                scene.skip_empty = false;
-                let marched = render(&scene, &frame, method);
+                let skip = |skip_empty| VolumeSettings {
+                    step: step_voxels,
+                    skip_empty,
+                    ..VolumeSettings::default()
+                };
+                let skipped = render_with(&scene, &frame, method, skip(true));
+                let marched = render_with(&scene, &frame, method, skip(false));
                 assert!(lit(&marched) > 0, "{name}: nothing visible");
                 if skipped != marched {
                     let path =

@@ -7,11 +7,13 @@ mod common;
 
 use autostereo::frame::Frame;
 use autostereo::image_io::compare;
+use autostereo::mesh::MeshNPass;
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::points::{GroupCount, PointCloud, SplatScene};
-use autostereo::render::{
-    MeshNPass, Method, PointSplatter, Renderer, SplatOptions, VolumeRaycaster,
-};
+use autostereo::points::{PointSplatter, SplatOptions};
+use autostereo::render::{Method, Renderer};
+use autostereo::volume::VolumeRaycaster;
+use autostereo::volume::VolumeSettings;
 use autostereo::warp::{ReferenceRenderer, SceneWarp, SceneWarpOptions, WarpPath};
 use glam::Vec3;
 
@@ -105,13 +107,18 @@ fn points_warp_with_every_view_a_reference_is_the_npass() {
 fn volume_warp_with_every_view_a_reference_is_the_npass() {
     let (scene, bounds) = common::head_scene();
     let device = common::gpu().device.clone();
-    let mut npass = VolumeRaycaster::new(&device, Method::NPass).unwrap();
+    let mut npass =
+        VolumeRaycaster::new(&device, Method::NPass, VolumeSettings::default()).unwrap();
     assert_exact_with_every_view(
         "volume",
         &scene,
         |spec, size| common::frame(bounds, spec, 0.15, 1.0, size),
         &mut npass,
-        || Box::new(VolumeRaycaster::new(&device, Method::Warp).unwrap()),
+        || {
+            Box::new(
+                VolumeRaycaster::new(&device, Method::Warp, VolumeSettings::default()).unwrap(),
+            )
+        },
     );
 }
 

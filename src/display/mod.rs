@@ -231,7 +231,7 @@ fn check_slanted(pitch: f64, slant: f64, phase: f64) -> Result<()> {
 }
 
 /// Smallest lens pitch in subpixels: the step per subpixel, 1 / pitch lens periods, stays within
-/// [`MAX_PERIODS`].
+/// 2³² periods (what the fixed-point phase resolves).
 pub const MIN_PITCH: f64 = 1.0 / MAX_PERIODS;
 
 /// Check a view count: 1 ..= [`MAX_VIEWS`].

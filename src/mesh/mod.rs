@@ -3,9 +3,13 @@
 mod generate;
 mod obj;
 mod order;
-pub mod passes;
+pub(crate) mod passes;
 mod scene;
 
+pub use passes::{
+    CoverBounds, MeshLayered, MeshMrt, MeshNPass, MeshSinglePass, MeshSinglePassOptions, MeshTiled,
+    TileClip, Visibility,
+};
 pub use scene::{GpuVertex, MeshBuffers};
 
 use glam::Vec3;

@@ -8,7 +8,7 @@ pub mod estimate;
 mod generate;
 mod grid;
 pub mod groups;
-pub mod passes;
+pub(crate) mod passes;
 pub mod ply;
 mod scene;
 
@@ -18,6 +18,7 @@ use std::time::Instant;
 use glam::Vec3;
 
 pub use groups::{GroupCount, Grouping};
+pub use passes::{PointSplatter, SplatDepth, SplatOptions, DEFAULT_EPSILON_FRACTION};
 pub use scene::{GpuSplat, SplatScene};
 
 use crate::camera::Bounds;

@@ -2,13 +2,17 @@
 
 use crate::error::{Error, Result};
 
-/// How a multi-view frame is made. Every primitive has every method; options that only one
-/// primitive has (mesh visibility, splat depth, volume path) sit in that renderer's options.
-/// New methods are new variants (deliberately not `#[non_exhaustive]`: the tools match every
-/// method, so the compiler lists each place a new one must be handled).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+/// How a multi-view frame is made. Not every primitive has every method: MRT (one depth
+/// buffer shared by the views of a draw) is the meshes' alone, and an RGB-D image is only
+/// warped; the others are refused with the reason when the renderer is built
+/// ([`crate::RendererOptions`]). Options that only one primitive has (mesh visibility, splat
+/// depth, volume path) sit in that primitive's options. New methods are new variants
+/// (deliberately not `#[non_exhaustive]`: the tools match every method, so the compiler lists
+/// each place a new one must be handled).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Method {
     /// One pass: each (sub)pixel evaluates its own view(s) straight into the spatial image.
+    #[default]
     SinglePass,
     /// One ordinary render per view into its own layer, then mask compositing: the accuracy
     /// oracle and the speed baseline.

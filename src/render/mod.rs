@@ -1,7 +1,7 @@
 //! The renderer kit every primitive's passes share, and the one interface they implement.
 //!
-//! - [`Renderer`]: one frame of a scene into a spatial target; [`AnyRenderer`] / [`AnyScene`]
-//!   hide the primitive.
+//! - [`Renderer`]: one frame of a scene into a spatial target ([`crate::AnyRenderer`] /
+//!   [`crate::AnyScene`] hide the primitive; [`crate::RendererOptions`] builds them).
 //! - [`mask_image`]: the display mask as a view-index image (GPU side of the mask oracle).
 //! - [`composite`]: N per-view layers → spatial image (every N-pass method).
 //! - [`output`]: the spatial image into a caller's texture or surface (BGRA8, sRGB…).
@@ -13,11 +13,10 @@
 //!   `dispatch`: the one compute dispatch splitter.
 //! - pipeline, texture, pass-parameter and specialisation helpers (crate-internal).
 //!
-//! The passes themselves live with their primitive: [`crate::mesh::passes`],
-//! [`crate::points::passes`], [`crate::volume::passes`]; they are re-exported here so that one
-//! `use autostereo::render::…` reaches every renderer.
+//! The renderers themselves live with their primitive ([`crate::mesh`], [`crate::points`],
+//! [`crate::volume`], [`crate::rgbd`], [`crate::warp`]); [`crate::RendererOptions`] builds any
+//! of them.
 
-mod any;
 pub mod atlas;
 pub mod batches;
 pub(crate) mod camera_crop;
@@ -40,7 +39,6 @@ pub(crate) mod storage_fence;
 pub(crate) mod texture;
 pub(crate) mod view_layers;
 
-pub use any::{AnyRenderer, AnyScene};
 pub use composite::Compositor;
 pub use mask_image::MaskImageRenderer;
 pub use method::Method;
@@ -49,11 +47,3 @@ pub use renderer::Renderer;
 pub(crate) use renderer::{begin_prepare, check_prepared, check_target};
 pub use stereo::{StereoCompositor, StereoFormat};
 pub use view_layers::ViewLayers;
-
-pub use crate::mesh::passes::{
-    CoverBounds, MeshLayered, MeshMrt, MeshNPass, MeshSinglePass, MeshSinglePassOptions, MeshTiled,
-    TileClip, Visibility,
-};
-pub use crate::points::passes::{PointSplatter, SplatDepth, SplatOptions};
-pub use crate::volume::passes::{AlphaMode, VolumeParams, VolumeRaycaster, VolumeSlicer};
-pub use crate::volume::VolumeScene;

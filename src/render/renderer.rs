@@ -42,6 +42,12 @@ pub trait Renderer<S: ?Sized> {
         None
     }
 
+    /// One line on how an approximating renderer makes its frames, for reports (the warp: its
+    /// references and what their depth means); `None` for the others.
+    fn describe(&self) -> Option<String> {
+        None
+    }
+
     /// Prepare, encode one frame, submit it and wait for the GPU.
     fn render(
         &mut self,

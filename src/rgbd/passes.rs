@@ -160,7 +160,35 @@ pub struct RgbdWarp {
     frame: FrameBinding,
     /// The per-view path's images and compositing.
     npass: NPassHarness,
-    prepared: Option<[u32; 2]>,
+    prepared: Option<PreparedFor>,
+}
+
+/// What an [`RgbdWarp`] was prepared for: everything a frame or scene can change that the
+/// prepared state depends on (the per-view path's layers follow the frame's size, views and
+/// view size; the checks follow the display and camera model).
+#[derive(Clone, Debug, PartialEq)]
+struct PreparedFor {
+    image: [u32; 2],
+    size: [u32; 2],
+    views: u32,
+    view_size: [u32; 2],
+    display: crate::display::Display,
+    camera: crate::camera::CameraModel,
+    options: WarpOptions,
+}
+
+impl PreparedFor {
+    fn of(scene: &RgbdScene, frame: &Frame, options: WarpOptions) -> Self {
+        Self {
+            image: scene.size,
+            size: frame.size,
+            views: frame.camera.views,
+            view_size: frame.view_size(),
+            display: frame.display.clone(),
+            camera: frame.camera.model,
+            options,
+        }
+    }
 }
 
 impl RgbdWarp {
@@ -230,7 +258,7 @@ impl Renderer<RgbdScene> for RgbdWarp {
         if self.options.path == WarpPath::PerView {
             self.npass.prepare(device, frame)?;
         }
-        self.prepared = Some(scene.size);
+        self.prepared = Some(PreparedFor::of(scene, frame, self.options));
         Ok(())
     }
 
@@ -243,7 +271,8 @@ impl Renderer<RgbdScene> for RgbdWarp {
         target: &SpatialTarget,
     ) -> Result<()> {
         check_target(frame, target)?;
-        check_prepared("RgbdWarp", &self.prepared, &scene.size)?;
+        let wanted = PreparedFor::of(scene, frame, self.options);
+        check_prepared("RgbdWarp", &self.prepared, &wanted)?;
         self.frame.write(device, frame);
         if self.options.path == WarpPath::Direct {
             let group = self.bind_group(device, scene, &self.options);

@@ -4,16 +4,19 @@
 pub mod empty_space;
 mod gradient;
 pub mod load;
-pub mod passes;
+pub(crate) mod passes;
 pub mod phantom;
 mod scene;
+mod settings;
 pub mod transfer;
 
 pub use empty_space::CellRanges;
+pub use passes::{AlphaMode, VolumeRaycaster, VolumeSlicer};
 pub use scene::{
     EmptyDistanceTexture, PreintegrationTexture, VolumeScene, VolumeTexture, MAX_EMPTY_STRIDE,
     MAX_SAMPLES_PER_RAY, SUGGESTED_EMPTY_STRIDE, SUGGESTED_SHARE_SAMPLES,
 };
+pub use settings::VolumeSettings;
 pub use transfer::{PreintegrationTable, TransferFunction};
 
 use glam::Vec3;

@@ -171,43 +171,21 @@ fn upload(
     (texture, view)
 }
 
-/// A volume ready to render: GPU texture, box size, classification and sampling.
+/// A volume ready to render: GPU texture, box size, classification and placement. How it is
+/// sampled and shaded is the renderer's ([`super::VolumeSettings`]).
 pub struct VolumeScene {
     /// Gradients + scalar (private: the cell ranges and the id describe this data).
     texture: VolumeTexture,
     /// World-space size of the box (centred at the origin before `model`).
     pub extent: Vec3,
-    /// Smallest voxel spacing (the unit of transfer-function opacity).
+    /// Smallest voxel spacing (the unit of transfer-function opacity and of sampling steps).
     pub voxel: f32,
     /// Transfer function.
     pub transfer: TransferFunction,
-    /// Distance Δ between samples along the eye depth, world units (default half the smallest
-    /// voxel spacing). Coarser is faster and an approximation: pre-integration keeps one voxel
-    /// within ≈ 44–47 dB of the default on the head and brainsmall (docs/VOLUMES.md, `--step`).
-    pub step: f32,
     /// Volume → world transform (rotation of the volume).
     pub model: Mat4,
-    /// Blinn-Phong shading from the gradients (off: emission-absorption only).
-    pub shade: bool,
-    /// Jump over space the transfer function makes fully transparent (ray-marching path;
-    /// exact: the image is the same bit for bit, see `volume::empty_space`).
-    pub skip_empty: bool,
-    /// Sample sharing among a pixel's K rays (single pass, ray marching): where every pair of
-    /// the rays' samples on a plane lies within this many voxels, they take their mean ray's
-    /// samples (`wgsl/volume/shared/share.wgsl`). 0 (the default): every ray exact.
-    pub share_samples: f32,
-    /// Probing stride through transparent material (ray marching, every method; needs
-    /// `skip_empty`): after a segment that added nothing, a ray probes this many sample planes
-    /// ahead and takes the planes between as transparent where the pre-integrated segment
-    /// between the two samples is exactly zero; where it is not, it marches them one by one
-    /// (`wgsl/volume/shared/march.wgsl`). An approximation: it misses material thinner than
-    /// `empty_stride` samples whose scalars lie outside both ends'. 1 (the default): exact.
-    pub empty_stride: u32,
-    /// With `empty_stride` > 1, probes also go on through thin material: a probe whose
-    /// pre-integrated segment adds at most this opacity per sample step becomes one segment
-    /// `empty_stride` steps long (opacity `1 − (1 − α)^P`, colour alike). 0 (the default): only
-    /// transparent material.
-    pub thin_alpha: f32,
+    /// The exact image's sampling distance ([`VolumeScene::default_step`]), world units.
+    default_step: f32,
     /// Table entries per voxel cell of the uploaded volume (empty-space skipping).
     pub(crate) cells: CellRanges,
     /// Identifies the uploaded volume for caches of data derived from it.
@@ -226,7 +204,7 @@ pub const SUGGESTED_SHARE_SAMPLES: f32 = 0.5;
 /// brainsmall at 512² (docs/volumes/BENCHMARKS.md).
 pub const SUGGESTED_EMPTY_STRIDE: u32 = 4;
 
-/// Largest probing stride through transparent material (`VolumeScene::empty_stride`): past a
+/// Largest probing stride through transparent material (`VolumeSettings::empty_stride`): past a
 /// few voxels a probe only misses more, as the distance map already skips what is surely empty.
 pub const MAX_EMPTY_STRIDE: u32 = 64;
 
@@ -234,21 +212,19 @@ pub const MAX_EMPTY_STRIDE: u32 = 64;
 pub const MAX_SAMPLES_PER_RAY: f32 = 16384.0;
 
 impl VolumeScene {
-    /// Upload `volume`; sampling distance `step` world units (default: half the smallest voxel
-    /// spacing).
+    /// Upload `volume`, classified by `transfer` and placed by `model`.
     pub fn new(
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         volume: &Volume,
         transfer: TransferFunction,
-        step: Option<f32>,
         model: Mat4,
     ) -> Result<Self> {
         // Everything is checked before the upload.
         volume.validate()?;
         let voxel = volume.min_spacing();
-        let step = step.unwrap_or_else(|| Self::default_step(volume));
-        check_scene(volume.extent(), &transfer, step, model)?;
+        let default_step = Self::default_step(volume);
+        check_scene(&transfer, model)?;
         let texture = VolumeTexture::new_validated(device, queue, volume)?;
         static NEXT_ID: AtomicU64 = AtomicU64::new(0);
         Ok(Self {
@@ -256,13 +232,8 @@ impl VolumeScene {
             extent: volume.extent(),
             voxel,
             transfer,
-            step,
             model,
-            shade: true,
-            skip_empty: true,
-            share_samples: 0.0,
-            empty_stride: 1,
-            thin_alpha: 0.0,
+            default_step,
             cells: CellRanges::new(volume),
             id: NEXT_ID.fetch_add(1, Ordering::Relaxed),
         })
@@ -271,42 +242,12 @@ impl VolumeScene {
     /// Check the public fields a caller may have changed since [`VolumeScene::new`]: the
     /// renderers call this before every frame.
     pub fn validate(&self) -> Result<()> {
-        check_scene(self.extent, &self.transfer, self.step, self.model)?;
-        if !(self.share_samples.is_finite() && self.share_samples >= 0.0) {
-            return Err(Error::invalid(
-                "sample sharing tolerance (--share-samples)",
-                format!(
-                    "{}: must be a finite number of voxels, 0 or more",
-                    self.share_samples
-                ),
-            ));
-        }
-        if !(1..=MAX_EMPTY_STRIDE).contains(&self.empty_stride) {
-            return Err(Error::invalid(
-                "probing stride through transparent material (--empty-stride)",
-                format!(
-                    "{}: must be 1 (exact) to {MAX_EMPTY_STRIDE} sample planes",
-                    self.empty_stride
-                ),
-            ));
-        }
-        if !(0.0..1.0).contains(&self.thin_alpha) {
-            return Err(Error::invalid(
-                "thin-material opacity (--thin-alpha)",
-                format!("{}: must be at least 0 and below 1", self.thin_alpha),
-            ));
-        }
-        if self.empty_stride > 1 && !self.skip_empty {
-            return Err(Error::invalid(
-                "probing stride through transparent material (--empty-stride)",
-                format!(
-                    "{}: probing is part of empty-space skipping, which is off \
-                     (--no-skip-empty); use stride 1 or turn skipping on",
-                    self.empty_stride
-                ),
-            ));
-        }
-        Ok(())
+        check_scene(&self.transfer, self.model)
+    }
+
+    /// The exact image's sampling distance for this volume, world units.
+    pub fn default_step_length(&self) -> f32 {
+        self.default_step
     }
 
     /// The uploaded volume (gradients + scalar).
@@ -331,28 +272,35 @@ impl VolumeScene {
         (0.5 * volume.min_spacing()).max(volume.extent().length() / (MAX_SAMPLES_PER_RAY - 1.0))
     }
 
-    /// Sampling distance for `slices` samples across the box diagonal.
+    /// The sampling distance of `slices` samples across the box diagonal, in voxels of the
+    /// smallest spacing (a [`super::VolumeSettings::step`]).
     pub fn step_for_slices(volume: &Volume, slices: u32) -> f32 {
-        volume.extent().length() / slices.max(1) as f32
+        volume.extent().length() / slices.max(1) as f32 / volume.min_spacing()
     }
 }
 
-/// Transfer function, sampling step (positive, at most [`MAX_SAMPLES_PER_RAY`] samples across the
-/// box diagonal) and volume rotation (finite) of a scene whose box is `extent`.
-fn check_scene(extent: Vec3, transfer: &TransferFunction, step: f32, model: Mat4) -> Result<()> {
+/// Transfer function and volume rotation (finite).
+fn check_scene(transfer: &TransferFunction, model: Mat4) -> Result<()> {
     transfer.validate()?;
+    if !model.is_finite() {
+        return Err(Error::invalid("volume rotation", "not finite"));
+    }
+    Ok(())
+}
+
+/// A sampling distance `step` (world units) for a box of `extent`: positive, at most
+/// [`MAX_SAMPLES_PER_RAY`] samples across the box diagonal.
+pub(super) fn check_step(extent: Vec3, step: f32) -> Result<()> {
     let diagonal = extent.length();
     if !(step.is_finite() && step > 0.0 && diagonal / step <= MAX_SAMPLES_PER_RAY) {
         return Err(Error::invalid(
-            "sampling step (--step, --slices)",
+            "sampling step",
             format!(
-                "{step}: must be positive and at least {} (the box diagonal / {MAX_SAMPLES_PER_RAY})",
+                "{step} world units: must be positive and at least {} (the box diagonal / \
+                 {MAX_SAMPLES_PER_RAY})",
                 diagonal / MAX_SAMPLES_PER_RAY
             ),
         ));
-    }
-    if !model.is_finite() {
-        return Err(Error::invalid("volume rotation", "not finite"));
     }
     Ok(())
 }

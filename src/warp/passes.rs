@@ -264,7 +264,7 @@ impl<S: ?Sized> SceneWarp<S> {
     }
 
     /// One line on what the warp does, for reports.
-    pub fn describe(&self) -> String {
+    fn line(&self) -> String {
         format!(
             "{} references ({}), {:?} path",
             self.options.references,
@@ -370,6 +370,10 @@ impl<S: ?Sized> SceneWarp<S> {
 const ROW_BOUNDS_WORKGROUP: u32 = 64;
 
 impl<S: ?Sized> Renderer<S> for SceneWarp<S> {
+    fn describe(&self) -> Option<String> {
+        Some(self.line())
+    }
+
     fn prepare(
         &mut self,
         device: &wgpu::Device,

@@ -24,7 +24,8 @@ pub fn gpu() -> MutexGuard<'static, GpuContext> {
 
 /// Where tests write diagnostic images (git-ignored).
 pub fn out_dir() -> PathBuf {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/test-output");
+    // CARGO_TARGET_TMPDIR is target/tmp of the workspace, for the library's and the CLI's tests.
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("../test-output");
     std::fs::create_dir_all(&dir).expect("create target/test-output");
     dir
 }
@@ -71,9 +72,9 @@ pub fn frame(
 /// instead) and returns `None`.
 pub fn mesh_single_pass(
     device: &wgpu::Device,
-    options: autostereo::render::MeshSinglePassOptions,
-) -> Option<autostereo::render::MeshSinglePass> {
-    let result = autostereo::render::MeshSinglePass::new(device, options);
+    options: autostereo::mesh::MeshSinglePassOptions,
+) -> Option<autostereo::mesh::MeshSinglePass> {
+    let result = autostereo::mesh::MeshSinglePass::new(device, options);
     if device
         .features()
         .contains(options.visibility.required_features())
@@ -105,31 +106,17 @@ pub fn assert_missing_feature(device: &wgpu::Device, error: &autostereo::Error, 
     );
 }
 
-/// Run the CLI with logging off; return (success, stderr).
-pub fn cli(args: &[&str]) -> (bool, String) {
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_autostereo"))
-        .args(args)
-        .env("RUST_LOG", "off")
-        .output()
-        .unwrap();
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
 /// The built-in CT head (24³, ct-skin) on the GPU and its bounds: the small volume the method
 /// tests compare on.
-pub fn head_scene() -> (autostereo::render::VolumeScene, autostereo::camera::Bounds) {
+pub fn head_scene() -> (autostereo::volume::VolumeScene, autostereo::camera::Bounds) {
     let ctx = gpu();
     let head = autostereo::volume::phantom::ct_head(24).unwrap();
     let tf = autostereo::volume::TransferFunction::preset("ct-skin").unwrap();
-    let scene = autostereo::render::VolumeScene::new(
+    let scene = autostereo::volume::VolumeScene::new(
         &ctx.device,
         &ctx.queue,
         &head,
         tf,
-        None,
         glam::Mat4::IDENTITY,
     )
     .unwrap();
@@ -148,4 +135,28 @@ pub fn render<S: ?Sized>(
         .render(&ctx.device, &ctx.queue, scene, frame, &target)
         .unwrap();
     target.read(&ctx.device, &ctx.queue).unwrap()
+}
+
+/// `volume` on the GPU, classified by the preset `tf` and turned 0.5 rad about y and 0.3 rad
+/// about x: the view the volume approximations' tests compare at.
+pub fn turned_volume(
+    volume: &autostereo::volume::Volume,
+    tf: &str,
+) -> autostereo::volume::VolumeScene {
+    let ctx = gpu();
+    let rotate = glam::Mat4::from_rotation_y(0.5) * glam::Mat4::from_rotation_x(0.3);
+    let tf = autostereo::volume::TransferFunction::preset(tf).unwrap();
+    autostereo::volume::VolumeScene::new(&ctx.device, &ctx.queue, volume, tf, rotate).unwrap()
+}
+
+/// One frame of `scene` by the ray caster of `method` with `settings`.
+pub fn render_volume(
+    scene: &autostereo::volume::VolumeScene,
+    frame: &autostereo::frame::Frame,
+    method: autostereo::render::Method,
+    settings: autostereo::volume::VolumeSettings,
+) -> RgbImage {
+    let device = gpu().device.clone();
+    let mut renderer = autostereo::volume::VolumeRaycaster::new(&device, method, settings).unwrap();
+    render(&mut renderer, scene, frame)
 }

@@ -36,7 +36,7 @@ pub struct MeshNPass {
 
 impl MeshNPass {
     /// Build the pipelines for `method`: [`Method::NPass`] or [`Method::SingleView`] (the mesh
-    /// single pass is [`crate::mesh::passes::MeshSinglePass`]).
+    /// single pass is [`crate::mesh::MeshSinglePass`]).
     pub fn new(device: &wgpu::Device, method: Method) -> Result<Self> {
         if !matches!(method, Method::NPass | Method::SingleView | Method::Warp) {
             return Err(crate::Error::invalid(

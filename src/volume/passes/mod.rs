@@ -7,5 +7,6 @@ pub(crate) mod resources;
 pub mod slices;
 
 pub use raycast::VolumeRaycaster;
-pub use resources::VolumeParams;
+#[cfg(test)]
+pub(crate) use resources::VolumeParams;
 pub use slices::{AlphaMode, VolumeSlicer};

@@ -20,11 +20,12 @@ use crate::render::Method;
 use crate::render::ViewLayers;
 use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
 use crate::target::SpatialTarget;
-use crate::volume::VolumeScene;
+use crate::volume::{VolumeScene, VolumeSettings};
 
 /// Ray-marching volume renderer for one [`Method`].
 pub struct VolumeRaycaster {
     method: Method,
+    settings: VolumeSettings,
     resources: VolumeResources,
     output_layout: wgpu::BindGroupLayout,
     pipelines: PipelineCache<RaycastPipelineKey, wgpu::ComputePipeline>,
@@ -121,8 +122,20 @@ impl Output {
 
 impl VolumeRaycaster {
     /// Prepare layouts and the sampler; pipelines are built per display specialisation.
-    pub fn new(device: &wgpu::Device, method: Method) -> Result<Self> {
+    /// `settings` are checked here; sample sharing is the single pass's alone.
+    pub fn new(device: &wgpu::Device, method: Method, settings: VolumeSettings) -> Result<Self> {
         let output = Output::of(method)?;
+        settings.validate()?;
+        if settings.share_samples > 0.0 && method != Method::SinglePass {
+            return Err(Error::invalid(
+                "sample sharing tolerance",
+                format!(
+                    "{}: sharing samples among a pixel's rays is part of the single pass, not of \
+                     the {method} method",
+                    settings.share_samples
+                ),
+            ));
+        }
         let resources = VolumeResources::new(device, wgpu::ShaderStages::COMPUTE);
         let output_layout = output.layout(device);
         let npass = match method {
@@ -140,6 +153,7 @@ impl VolumeRaycaster {
         };
         Ok(Self {
             method,
+            settings,
             resources,
             output_layout,
             pipelines: PipelineCache::new("volume ray-marching"),
@@ -188,6 +202,11 @@ impl VolumeRaycaster {
         Ok(())
     }
 
+    /// The sampling and shading settings frames are rendered with.
+    pub fn settings(&self) -> &VolumeSettings {
+        &self.settings
+    }
+
     /// Per-view images of the last N-pass render, if any.
     pub fn view_layers(&self) -> Option<&ViewLayers> {
         self.npass.as_ref()?.view_layers()
@@ -229,25 +248,25 @@ pub(crate) struct PreparedFor {
     pub skip_empty: bool,
     /// The single pass shares samples among a pixel's K rays.
     pub share_samples: bool,
-    /// Probing stride through transparent material (`VolumeScene::empty_stride`).
+    /// Probing stride through transparent material (`VolumeSettings::empty_stride`).
     pub empty_stride: u32,
-    /// Thin-material threshold of the probes (`VolumeScene::thin_alpha`, as bits).
+    /// Thin-material threshold of the probes (`VolumeSettings::thin_alpha`, as bits).
     pub thin_alpha_bits: u32,
     pub size: [u32; 2],
     pub views: u32,
 }
 
 impl PreparedFor {
-    pub fn of(scene: &VolumeScene, frame: &Frame, method: Method) -> Self {
+    pub fn of(settings: &VolumeSettings, frame: &Frame, method: Method) -> Self {
         let spec = Specialization::of(frame);
         Self {
             spec,
-            skip_empty: scene.skip_empty,
+            skip_empty: settings.skip_empty,
             share_samples: method == Method::SinglePass
                 && spec.views_per_pixel == 3
-                && scene.share_samples > 0.0,
-            empty_stride: scene.empty_stride,
-            thin_alpha_bits: scene.thin_alpha.to_bits(),
+                && settings.share_samples > 0.0,
+            empty_stride: settings.empty_stride,
+            thin_alpha_bits: settings.thin_alpha.to_bits(),
             size: frame.size,
             views: frame.camera.views,
         }
@@ -255,13 +274,13 @@ impl PreparedFor {
 
     /// The proxy slices have no empty-space skipping, sample sharing or probing stride:
     /// toggling them needs no new prepare.
-    pub fn for_slices(scene: &VolumeScene, frame: &Frame) -> Self {
+    pub fn for_slices(settings: &VolumeSettings, frame: &Frame) -> Self {
         Self {
             skip_empty: false,
             share_samples: false,
             empty_stride: 1,
             thin_alpha_bits: 0,
-            ..Self::of(scene, frame, Method::SinglePass)
+            ..Self::of(settings, frame, Method::SinglePass)
         }
     }
 }
@@ -272,12 +291,14 @@ pub(crate) struct VolumeEncode<'a> {
     pub renderer: &'static str,
     pub prepared: &'a Option<PreparedFor>,
     pub resources: &'a VolumeResources,
+    pub settings: &'a VolumeSettings,
     pub wanted: PreparedFor,
 }
 
 impl VolumeEncode<'_> {
     pub fn check(&self, scene: &VolumeScene, frame: &Frame, target: &SpatialTarget) -> Result<()> {
         scene.validate()?;
+        self.settings.validate_for(scene)?;
         check_target(frame, target)?;
         self.check_current(scene)
     }
@@ -285,9 +306,10 @@ impl VolumeEncode<'_> {
     /// `Err(NotPrepared)` unless `prepared` is `wanted` and the scene's uploads are current
     /// (the reference views' encode, which has no spatial target, checks this alone).
     pub fn check_current(&self, scene: &VolumeScene) -> Result<()> {
-        let current = self
-            .prepared
-            .filter(|_| self.resources.uploaded_for(scene, self.wanted.skip_empty));
+        let current = self.prepared.filter(|_| {
+            self.resources
+                .uploaded_for(scene, self.settings, self.wanted.skip_empty)
+        });
         check_prepared(self.renderer, &current, &self.wanted)
     }
 }
@@ -322,9 +344,9 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
             ));
         }
         let frame = &self.own_frame(frame)?;
-        let key = PreparedFor::of(scene, frame, self.method);
+        let key = PreparedFor::of(&self.settings, frame, self.method);
         self.resources
-            .upload(device, queue, scene, key.skip_empty)?;
+            .upload(device, queue, scene, &self.settings, key.skip_empty)?;
         if let Some(npass) = &mut self.npass {
             npass.prepare(device, frame)?;
         }
@@ -351,7 +373,8 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
             renderer: "VolumeRaycaster",
             prepared: &self.prepared,
             resources: &self.resources,
-            wanted: PreparedFor::of(scene, &own, self.method),
+            settings: &self.settings,
+            wanted: PreparedFor::of(&self.settings, &own, self.method),
         }
         .check(scene, frame, target)?;
         let full = frame;
@@ -359,7 +382,9 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         let camera = &frame.camera;
         // One dispatch per camera: all K views per pixel, or one fixed camera per view /
         // centre; the duplication methods one dispatch for every view.
-        let params = |use_mask, offset| VolumeResources::params(scene, frame, use_mask, offset);
+        let settings = &self.settings;
+        let params =
+            |use_mask, offset| VolumeResources::params(scene, settings, frame, use_mask, offset);
         let dispatches: Vec<VolumeParams> = match self.method {
             Method::SinglePass => vec![params(true, 0.0)],
             Method::SingleView | Method::Tiled | Method::Layered | Method::Mrt | Method::Warp => {
@@ -370,7 +395,7 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
                 .collect(),
         };
         let volume_group = self.resources.bind(device, scene, frame, &dispatches);
-        let key = RaycastPipelineKey::from(PreparedFor::of(scene, frame, self.method));
+        let key = RaycastPipelineKey::from(PreparedFor::of(&self.settings, frame, self.method));
         let output = |resources: &[wgpu::BindingResource]| {
             let entries: Vec<_> = resources
                 .iter()
@@ -452,6 +477,7 @@ mod tests {
     use crate::gpu::{GpuContext, GpuOptions};
     use crate::volume::phantom;
     use crate::volume::TransferFunction;
+    use crate::volume::VolumeSettings;
     use glam::Mat4;
 
     /// The ray caster really skips what the distances call empty: with cell ranges falsified
@@ -463,14 +489,16 @@ mod tests {
         let head = phantom::ct_head(24).unwrap();
         let tf = TransferFunction::preset("ct-skin").unwrap();
         let mut scene =
-            VolumeScene::new(&ctx.device, &ctx.queue, &head, tf, None, Mat4::IDENTITY).unwrap();
+            VolumeScene::new(&ctx.device, &ctx.queue, &head, tf, Mat4::IDENTITY).unwrap();
         let display = crate::display::Display::parse("hubner8").unwrap();
         let camera =
             crate::camera::MultiViewCamera::framing(head.bounds(), 8, None, 0.6, 1.0).unwrap();
         let frame = Frame::new(camera, display, [48, 48]).unwrap();
         let target = SpatialTarget::new(&ctx.device, frame.size).unwrap();
         let render = |scene: &VolumeScene| {
-            let mut renderer = VolumeRaycaster::new(&ctx.device, Method::SinglePass).unwrap();
+            let mut renderer =
+                VolumeRaycaster::new(&ctx.device, Method::SinglePass, VolumeSettings::default())
+                    .unwrap();
             renderer
                 .render(&ctx.device, &ctx.queue, scene, &frame, &target)
                 .unwrap();

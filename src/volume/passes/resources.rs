@@ -9,10 +9,10 @@ use glam::{Mat3, Mat4, Vec3};
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
 use crate::render::pass_params::PassParams;
-use crate::volume::VolumeScene;
 use crate::volume::{
     EmptyDistanceTexture, PreintegrationTable, PreintegrationTexture, TransferFunction,
 };
+use crate::volume::{VolumeScene, VolumeSettings};
 
 /// Per-dispatch constants. Keep in sync with `struct VolumeParams` in `wgsl/volume/shared/volume.wgsl`.
 #[repr(C)]
@@ -143,6 +143,7 @@ impl VolumeResources {
     /// Constants for one dispatch: all K views per pixel (`use_mask`) or one camera at `offset`.
     pub fn params(
         scene: &VolumeScene,
+        settings: &VolumeSettings,
         frame: &Frame,
         use_mask: bool,
         fixed_offset: f32,
@@ -151,15 +152,16 @@ impl VolumeResources {
         let tex_from_model =
             Mat4::from_translation(Vec3::splat(0.5)) * Mat4::from_scale(scene.extent.recip());
         let normal = Mat3::from_mat4(eye_from_model).inverse().transpose();
+        let step = settings.step_length(scene);
         VolumeParams {
             tex_from_eye: (tex_from_model * eye_from_model.inverse()).to_cols_array_2d(),
             normal_from_tex: Mat4::from_mat3(normal).to_cols_array_2d(),
-            step: scene.step,
+            step,
             fixed_offset,
             use_mask: use_mask as u32,
-            max_samples: (scene.extent.length() / scene.step).ceil() as u32 + 2,
-            shade: scene.shade as u32,
-            share_tolerance: scene.share_samples,
+            max_samples: (scene.extent.length() / step).ceil() as u32 + 2,
+            shade: settings.shade as u32,
+            share_tolerance: settings.share_samples,
             _pad: [0; 2],
         }
     }
@@ -167,18 +169,20 @@ impl VolumeResources {
     /// Upload what `scene` needs: the pre-integration table (rebuilt only when the transfer
     /// function or step changed) and the empty-space distances (per volume and transfer
     /// function; where the pass does not `skip`, a one-texel stand-in). Each upload goes into a
-    /// new texture, never over one a frame may still use. The scene's public fields are checked
-    /// first.
+    /// new texture, never over one a frame may still use. The scene's public fields and the
+    /// settings are checked first.
     pub fn upload(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         scene: &VolumeScene,
+        settings: &VolumeSettings,
         skip: bool,
     ) -> Result<()> {
         scene.validate()?;
-        if !self.table_fresh(scene) {
-            let step_voxels = scene.step / scene.voxel;
+        settings.validate_for(scene)?;
+        if !self.table_fresh(scene, settings) {
+            let step_voxels = settings.step_length(scene) / scene.voxel;
             let table = PreintegrationTable::new(&scene.transfer, step_voxels)?;
             self.table = Some(UploadedTable {
                 transfer: scene.transfer.clone(),
@@ -202,8 +206,8 @@ impl VolumeResources {
         Ok(())
     }
 
-    fn table_fresh(&self, scene: &VolumeScene) -> bool {
-        let step_voxels = scene.step / scene.voxel;
+    fn table_fresh(&self, scene: &VolumeScene, settings: &VolumeSettings) -> bool {
+        let step_voxels = settings.step_length(scene) / scene.voxel;
         self.table
             .as_ref()
             .is_some_and(|t| t.transfer == scene.transfer && t.step_voxels == step_voxels)
@@ -218,8 +222,8 @@ impl VolumeResources {
 
     /// Whether [`VolumeResources::upload`] ran for `scene` as it is now (the same volume,
     /// transfer function and step) and `skip`.
-    pub fn uploaded_for(&self, scene: &VolumeScene, skip: bool) -> bool {
-        self.table_fresh(scene) && self.distances_fresh(scene, skip)
+    pub fn uploaded_for(&self, scene: &VolumeScene, settings: &VolumeSettings, skip: bool) -> bool {
+        self.table_fresh(scene, settings) && self.distances_fresh(scene, skip)
     }
 
     /// This frame's constants and the dispatches' (buffers of their own, no queue writes),

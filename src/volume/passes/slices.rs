@@ -8,7 +8,7 @@ use glam::{Vec3, Vec4Swizzles};
 
 use super::raycast::{PreparedFor, VolumeEncode};
 use super::resources::VolumeResources;
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::frame::Frame;
 use crate::render::begin_prepare;
 use crate::render::pipeline::{
@@ -19,7 +19,7 @@ use crate::render::specialize::Specialization;
 use crate::render::texture::{cached_texture_2d, Texture2d};
 use crate::render::Renderer;
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
-use crate::volume::VolumeScene;
+use crate::volume::{VolumeScene, VolumeSettings};
 
 /// How the K views' opacities of one fragment are blended.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -48,6 +48,7 @@ pub(crate) const SLICE_LAYOUT: crate::shader::GpuLayout = SliceRect::GPU_LAYOUT;
 /// Single-pass volume rendering with proxy slices.
 pub struct VolumeSlicer {
     alpha: AlphaMode,
+    settings: VolumeSettings,
     resources: VolumeResources,
     slices_layout: wgpu::BindGroupLayout,
     accumulated_layout: wgpu::BindGroupLayout,
@@ -60,8 +61,18 @@ pub struct VolumeSlicer {
 }
 
 impl VolumeSlicer {
-    /// Needs `DUAL_SOURCE_BLENDING` (per-channel blend factors).
-    pub fn new(device: &wgpu::Device, alpha: AlphaMode) -> Result<Self> {
+    /// Needs `DUAL_SOURCE_BLENDING` (per-channel blend factors). Of `settings`, the slices use
+    /// the step and shading; the ray-marching approximations (sample sharing, probes) are
+    /// refused, and empty-space skipping does not apply (slices are rasterised whole).
+    pub fn new(device: &wgpu::Device, alpha: AlphaMode, settings: VolumeSettings) -> Result<Self> {
+        settings.validate()?;
+        if settings.share_samples > 0.0 || settings.empty_stride > 1 {
+            return Err(Error::invalid(
+                "volume settings",
+                "sample sharing and the probing stride are ray-marching approximations; the \
+                 proxy slices have neither",
+            ));
+        }
         crate::gpu::require_features(
             device,
             wgpu::Features::DUAL_SOURCE_BLENDING,
@@ -108,6 +119,7 @@ impl VolumeSlicer {
         })?;
         Ok(Self {
             alpha,
+            settings,
             resources,
             slices_layout,
             accumulated_layout,
@@ -169,7 +181,7 @@ impl VolumeSlicer {
 
 /// Back-to-front proxy slices: for each segment [kΔ, (k+1)Δ] inside the box and [near, far],
 /// the NDC rectangle covering the box's cross-sections at both depths in every view.
-fn slices(scene: &VolumeScene, frame: &Frame) -> Vec<SliceRect> {
+fn slices(scene: &VolumeScene, step: f32, frame: &Frame) -> Vec<SliceRect> {
     let camera = &frame.camera;
     let eye_from_model = camera.eye_from_world * scene.model;
     let half = scene.extent * 0.5;
@@ -217,7 +229,6 @@ fn slices(scene: &VolumeScene, frame: &Frame) -> Vec<SliceRect> {
         .copied()
         .fold(f32::NEG_INFINITY, f32::max)
         .min(camera.far);
-    let step = scene.step;
     let (fd, spread) = (camera.focal_distance, camera.max_offset());
     let window = camera.focal_window();
     let pad = window / glam::Vec2::new(frame.size[0] as f32, frame.size[1] as f32) / 16.0;
@@ -276,10 +287,10 @@ impl Renderer<VolumeScene> for VolumeSlicer {
     ) -> Result<()> {
         begin_prepare(device, frame, &mut self.prepared)?;
         frame.check_full_views("slice-based")?;
-        let key = PreparedFor::for_slices(scene, frame);
+        let key = PreparedFor::for_slices(&self.settings, frame);
         // Proxy slices are rasterised whole: nothing to skip (`key.skip_empty` is false).
         self.resources
-            .upload(device, queue, scene, key.skip_empty)?;
+            .upload(device, queue, scene, &self.settings, key.skip_empty)?;
         self.ensure_pipeline(device, key.spec)?;
         cached_texture_2d(
             &mut self.accumulation,
@@ -305,13 +316,14 @@ impl Renderer<VolumeScene> for VolumeSlicer {
             renderer: "VolumeSlicer",
             prepared: &self.prepared,
             resources: &self.resources,
-            wanted: PreparedFor::for_slices(scene, frame),
+            settings: &self.settings,
+            wanted: PreparedFor::for_slices(&self.settings, frame),
         }
         .check(scene, frame, target)?;
         let spec = Specialization::of(frame);
-        let params = VolumeResources::params(scene, frame, true, 0.0);
+        let params = VolumeResources::params(scene, &self.settings, frame, true, 0.0);
         let volume_group = self.resources.bind(device, scene, frame, &[params]);
-        let rects = slices(scene, frame);
+        let rects = slices(scene, self.settings.step_length(scene), frame);
         // A buffer of this frame's own (src/render/pass_params.rs), never empty.
         let mut bytes = bytemuck::cast_slice::<_, u8>(&rects).to_vec();
         bytes.resize(bytes.len().max(std::mem::size_of::<SliceRect>()), 0);

@@ -31,20 +31,20 @@ enum Path {
 impl MeshLayered {
     /// Multiview if `device` has it (and at least 2 views per pass), else one pass per layer.
     pub fn new(device: &wgpu::Device) -> Result<Self> {
-        let max = device.limits().max_multiview_view_count;
-        let path = if device.features().contains(wgpu::Features::MULTIVIEW) && max >= 2 {
-            Path::Multiview(Multiview::new(device, max)?)
-        } else {
-            Path::PerLayer(MeshNPass::new(device, Method::NPass)?)
+        let path = match Self::views_per_pass_on(device) {
+            1 => Path::PerLayer(MeshNPass::new(device, Method::NPass)?),
+            max => Path::Multiview(Multiview::new(device, max)?),
         };
         Ok(Self { path })
     }
 
-    /// Layers one pass renders: the adapter's multiview limit, or 1 without multiview.
-    pub fn views_per_pass(&self) -> u32 {
-        match &self.path {
-            Path::Multiview(m) => m.views.max_per_pass,
-            Path::PerLayer(_) => 1,
+    /// Layers one pass renders on `device`: the adapter's multiview limit, or 1 without
+    /// multiview (or with a limit below 2).
+    pub fn views_per_pass_on(device: &wgpu::Device) -> u32 {
+        let max = device.limits().max_multiview_view_count;
+        match device.features().contains(wgpu::Features::MULTIVIEW) && max >= 2 {
+            true => max,
+            false => 1,
         }
     }
 

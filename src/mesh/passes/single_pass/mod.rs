@@ -85,9 +85,10 @@ impl Visibility {
 }
 
 /// Horizontal extent of the covering rectangles.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum CoverBounds {
     /// docs/DESIGN.md §3: `x ± vd·|1 − fd/d|` per vertex. Always covers.
+    #[default]
     Exact,
     /// The paper's printed `(x ∓ vd)·fd/d`: under-covers geometry beyond 2·fd (kept to measure).
     Paper,

@@ -22,9 +22,9 @@ impl ReferenceRenderer<VolumeScene> for VolumeRaycaster {
     ) -> Result<()> {
         begin_prepare(device, frame, &mut self.prepared)?;
         check_reference_method("VolumeRaycaster", self.method)?;
-        let key = PreparedFor::of(scene, frame, Method::Warp);
+        let key = PreparedFor::of(&self.settings, frame, Method::Warp);
         self.resources
-            .upload(device, queue, scene, key.skip_empty)?;
+            .upload(device, queue, scene, &self.settings, key.skip_empty)?;
         self.finish_prepare(device, key)
     }
 
@@ -37,14 +37,16 @@ impl ReferenceRenderer<VolumeScene> for VolumeRaycaster {
         images: &ReferenceImages,
     ) -> Result<()> {
         scene.validate()?;
+        self.settings.validate_for(scene)?;
         let encode = VolumeEncode {
             renderer: "VolumeRaycaster",
             prepared: &self.prepared,
             resources: &self.resources,
-            wanted: PreparedFor::of(scene, frame, Method::Warp),
+            settings: &self.settings,
+            wanted: PreparedFor::of(&self.settings, frame, Method::Warp),
         };
         encode.check_current(scene)?;
-        let params = VolumeResources::params(scene, frame, false, 0.0);
+        let params = VolumeResources::params(scene, &self.settings, frame, false, 0.0);
         let volume_group = self.resources.bind(device, scene, frame, &[params]);
         let output_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("volume reference views"),
@@ -60,7 +62,7 @@ impl ReferenceRenderer<VolumeScene> for VolumeRaycaster {
                 },
             ],
         });
-        let key = RaycastPipelineKey::from(PreparedFor::of(scene, frame, Method::Warp));
+        let key = RaycastPipelineKey::from(PreparedFor::of(&self.settings, frame, Method::Warp));
         let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
             label: Some("volume reference views"),
             timestamp_writes: None,

@@ -1,0 +1,308 @@
+//! Flags shared by several subcommands, and their parsers.
+
+use anyhow::{bail, Context, Result};
+use autostereo::render::Method;
+use clap::builder::TypedValueParser;
+use std::path::PathBuf;
+
+use autostereo::camera::MultiViewCamera;
+use autostereo::display::Display;
+use autostereo::frame::Frame;
+
+/// `WxH` → [w, h], both ≥ 1.
+pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
+    let (w, h) = s
+        .split_once(['x', 'X'])
+        .ok_or_else(|| format!("'{s}' is not WIDTHxHEIGHT"))?;
+    let parse = |v: &str| {
+        v.trim()
+            .parse::<u32>()
+            .map_err(|_| format!("'{s}' is not WIDTHxHEIGHT"))
+    };
+    let size = [parse(w)?, parse(h)?];
+    if size[0] == 0 || size[1] == 0 {
+        return Err(format!("size {s}: width and height must be at least 1"));
+    }
+    Ok(size)
+}
+
+/// Most timed frames a command accepts: enough for any median, never an overflow.
+pub const MAX_FRAMES: u32 = 100_000;
+
+/// `--frames`: 1 ..= [`MAX_FRAMES`].
+pub fn frames_parser() -> clap::builder::RangedI64ValueParser<u32> {
+    clap::value_parser!(u32).range(1..=i64::from(MAX_FRAMES))
+}
+
+/// `--view-scale`: a number in (0, 1].
+pub fn parse_view_scale(s: &str) -> Result<f32, String> {
+    match s.trim().parse::<f32>() {
+        Ok(v) if v > 0.0 && v <= 1.0 => Ok(v),
+        _ => Err(format!("'{s}' is not a number in (0, 1]")),
+    }
+}
+
+/// `A,B` → [a, b].
+pub fn parse_pair(s: &str) -> Result<[u32; 2], String> {
+    let (a, b) = s
+        .split_once(',')
+        .ok_or_else(|| format!("'{s}' is not A,B"))?;
+    let parse = |v: &str| {
+        v.trim()
+            .parse::<u32>()
+            .map_err(|_| format!("'{s}' is not two whole numbers A,B"))
+    };
+    Ok([parse(a)?, parse(b)?])
+}
+
+/// Display selection flags.
+#[derive(clap::Args, Clone, Debug)]
+pub struct DisplayArgs {
+    /// Display: hubner8 | lenticular:N | slanted:N,PITCH,SLANT,PHASE | lkg:PATH.json | view:N,V
+    /// (view V of N on every pixel: one full-resolution view by any method)
+    #[arg(long, default_value = "hubner8")]
+    pub display: String,
+    /// Number of views (Looking Glass: the quilt's view count; others: must match the display).
+    #[arg(long)]
+    pub views: Option<u32>,
+    /// Window origin on the panel in pixels, X,Y.
+    #[arg(long, value_parser = parse_pair, default_value = "0,0")]
+    pub origin: [u32; 2],
+    /// Reverse the view order.
+    #[arg(long)]
+    pub flip_views: bool,
+    /// The panel's subpixels are ordered BGR.
+    #[arg(long)]
+    pub bgr: bool,
+}
+
+impl DisplayArgs {
+    /// Build the display these flags describe.
+    pub fn display(&self) -> Result<Display> {
+        let mut display = Display::parse(&self.display)?;
+        if let Some(n) = self.views {
+            display = display.with_views(n)?;
+        }
+        display.origin = self.origin;
+        display.flip_views ^= self.flip_views;
+        display.bgr ^= self.bgr;
+        Ok(display)
+    }
+}
+
+/// Create the GPU context (adapter from WGPU_BACKEND / WGPU_ADAPTER_NAME) and log it.
+pub fn gpu() -> Result<autostereo::gpu::GpuContext> {
+    let ctx =
+        autostereo::gpu::GpuContext::new(&Default::default()).context("setting up the GPU")?;
+    Ok(ctx)
+}
+
+/// Fail unless `path` is a `.png` in an existing directory (so errors come before minutes of
+/// rendering, and no empty file is left behind).
+pub fn check_output(path: &std::path::Path) -> Result<()> {
+    let png = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("png"));
+    if !png {
+        bail!("{}: only PNG is written (name it .png)", path.display());
+    }
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        if !dir.is_dir() {
+            bail!("output directory {} does not exist", dir.display());
+        }
+    }
+    Ok(())
+}
+
+/// Camera flags shared by the renderers.
+#[derive(clap::Args, Clone, Debug)]
+pub struct CameraArgs {
+    /// Separation of adjacent views, scene units (default: 5 % of the bounding radius).
+    #[arg(long, conflicts_with = "baseline")]
+    separation: Option<f32>,
+    /// Distance between the outermost views instead (separation = B / (N − 1)): keeps the
+    /// views' span fixed when N changes, as on a display whose views share one viewing cone.
+    #[arg(long)]
+    baseline: Option<f32>,
+    /// Focal distance (default: camera to the bounding-box centre).
+    #[arg(long, conflicts_with = "focal_scale")]
+    focal: Option<f32>,
+    /// Focal distance as a multiple of the default.
+    #[arg(long)]
+    focal_scale: Option<f32>,
+    /// Vertical field of view, degrees.
+    #[arg(long, default_value_t = 30.0)]
+    fov: f32,
+    /// Camera model: skewed (sheared frusta sharing the focal window; what displays expect) |
+    /// parallel (unsheared, images shifted to converge on the focal plane, the uncovered
+    /// strips background) | toe-in (cameras turned to the focal point: keystone and vertical
+    /// parallax). docs/USAGE.md "Cameras".
+    #[arg(long, default_value = "skewed", value_parser = camera_model_parser())]
+    camera: autostereo::camera::CameraModel,
+}
+
+/// `--camera NAME`.
+fn camera_model_parser(
+) -> impl clap::builder::TypedValueParser<Value = autostereo::camera::CameraModel> {
+    use autostereo::camera::CameraModel;
+    clap::builder::PossibleValuesParser::new(CameraModel::ALL.map(|m| m.name())).map(|name| {
+        name.parse::<CameraModel>()
+            .expect("one of the possible values")
+    })
+}
+
+impl CameraArgs {
+    /// Frame `bounds` with these settings.
+    pub fn camera(
+        &self,
+        bounds: autostereo::camera::Bounds,
+        views: u32,
+        size: [u32; 2],
+    ) -> Result<MultiViewCamera> {
+        let aspect = size[0] as f32 / size[1] as f32;
+        let separation = match self.baseline {
+            Some(b) if views > 1 => Some(b / (views - 1) as f32),
+            Some(_) => Some(0.0),
+            None => self.separation,
+        };
+        let mut camera =
+            MultiViewCamera::framing(bounds, views, separation, self.fov.to_radians(), aspect)?;
+        if let Some(fd) = self.focal {
+            camera.focal_distance = fd;
+        }
+        if let Some(s) = self.focal_scale {
+            camera.focal_distance *= s;
+        }
+        camera.model = self.camera;
+        camera.validate()?;
+        Ok(camera)
+    }
+}
+
+/// `--method NAME`: one of the library's [`Method`] names.
+pub fn method_parser() -> impl clap::builder::TypedValueParser<Value = Method> {
+    clap::builder::PossibleValuesParser::new(Method::ALL.map(|m| m.name()))
+        .map(|name| name.parse::<Method>().expect("one of the possible values"))
+}
+
+/// Flags every render command shares (extend, don't break: tools and benchmarks use them).
+#[derive(clap::Args)]
+pub struct RenderArgs {
+    #[command(flatten)]
+    pub display: DisplayArgs,
+    #[command(flatten)]
+    pub camera: CameraArgs,
+    /// Image size WxH in pixels.
+    #[arg(long, value_parser = parse_size, default_value = "512x512")]
+    pub size: [u32; 2],
+    /// Rendering method: single-pass | n-pass | single-view | tiled | layered | mrt | warp
+    /// (tiled, layered and mrt duplicate the geometry per view in one draw; warp renders
+    /// --references views and synthesises the others; docs/USAGE.md compares them).
+    #[arg(long, value_parser = method_parser(), default_value = "single-pass")]
+    pub method: Method,
+    /// With --method tiled: also write the atlas as a Looking Glass quilt (PNG; the name gets
+    /// the `_qs{cols}x{rows}a{aspect}` suffix Looking Glass software reads).
+    #[arg(long)]
+    pub quilt_out: Option<PathBuf>,
+    /// Also render N-pass and report psnr_db, max_abs_err, frac_off_2 against it.
+    #[arg(long)]
+    pub compare: bool,
+    /// Timed frames (after two warm-up frames); the median is reported.
+    #[arg(long, default_value_t = 1, value_parser = frames_parser())]
+    pub frames: u32,
+    /// Output PNG (of the spatial image, or of --output's format).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// What --out holds: spatial | quilt | views | anaglyph | anaglyph-half | anaglyph-dubois |
+    /// side-by-side | side-by-side-half | top-bottom | top-bottom-half | rows | columns |
+    /// checkerboard (every format but spatial renders each view it needs with the --method).
+    #[arg(long, value_enum, default_value = "spatial")]
+    pub output: crate::output::OutputArg,
+    /// With --output quilt: the quilt's grid COLSxROWS (default: chosen for the view count;
+    /// Looking Glass software also reads e.g. 8x6 for 48 views, the last tiles empty).
+    #[arg(long = "quilt", value_name = "COLSxROWS", value_parser = parse_size)]
+    pub quilt_grid: Option<[u32; 2]>,
+    /// The left and right views of the stereo outputs (default: the two nearest the middle).
+    #[arg(long, value_parser = parse_pair)]
+    pub eyes: Option<[u32; 2]>,
+    /// Per-view resolution: the n-pass, tiled, layered and mrt methods render their view
+    /// images at S × --size (each side rounded up) and up-sample them bilinearly when
+    /// compositing; 1 = full size. In (0, 1].
+    #[arg(long, value_name = "S", default_value_t = 1.0, value_parser = parse_view_scale)]
+    pub view_scale: f32,
+    /// Print one JSON object with the run's parameters and timing on stdout.
+    #[arg(long)]
+    pub json: bool,
+    #[command(flatten)]
+    pub warp: crate::warp_cmd::WarpArgs,
+    #[command(flatten)]
+    pub turntable: crate::turntable::TurntableArgs,
+    /// CPU memory budget for loading (bytes, or with K/M/G/T; default 8G): inputs that would
+    /// need more are refused before anything is allocated.
+    #[arg(long, value_parser = autostereo::budget::parse_bytes)]
+    pub max_memory: Option<u64>,
+}
+
+impl RenderArgs {
+    /// Fail early on what can be checked before loading anything.
+    pub fn check(&self) -> Result<()> {
+        if let Some(out) = &self.out {
+            check_output(out)?;
+        } else if self.output != crate::output::OutputArg::Spatial {
+            bail!(
+                "--output {} writes to --out, which is missing",
+                self.output.name()
+            );
+        }
+        if self.quilt_grid.is_some() && self.output != crate::output::OutputArg::Quilt {
+            bail!(
+                "--quilt sets the grid of --output quilt, not of --output {}",
+                self.output.name()
+            );
+        }
+        if let Some(quilt) = &self.quilt_out {
+            check_output(quilt)?;
+            if self.method != Method::Tiled {
+                bail!(
+                    "--quilt-out: the {} method renders no quilt atlas; use --method tiled",
+                    self.method
+                );
+            }
+        }
+        let scaled = [Method::NPass, Method::Tiled, Method::Layered, Method::Mrt];
+        if self.view_scale != 1.0 && !scaled.contains(&self.method) {
+            bail!(
+                "--view-scale {}: the {} method renders no view images to scale (only n-pass, \
+                 tiled, layered and mrt do)",
+                self.view_scale,
+                self.method
+            );
+        }
+        self.warp.check(self.method)?;
+        self.turntable.check(self.out.as_deref())?;
+        if let Some(bytes) = self.max_memory {
+            autostereo::budget::set_max_memory(bytes);
+        }
+        Ok(())
+    }
+
+    /// The renderer options the shared flags say (method, warp); each command adds its
+    /// primitive's.
+    pub fn options(&self) -> autostereo::RendererOptions {
+        autostereo::RendererOptions {
+            method: self.method,
+            warp: self.warp.options(),
+            ..Default::default()
+        }
+    }
+
+    /// The frame for a scene within `bounds`: display, camera framing, size.
+    pub fn frame(&self, bounds: autostereo::camera::Bounds) -> Result<Frame> {
+        let display = self.display.display()?;
+        let camera = self.camera.camera(bounds, display.views(), self.size)?;
+        let mut frame = Frame::new(camera, display, self.size)?;
+        frame.view_scale = self.view_scale;
+        frame.validate()?;
+        Ok(frame)
+    }
+}

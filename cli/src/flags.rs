@@ -1,0 +1,69 @@
+//! Library errors in the command line's words: the library names a parameter in its own terms
+//! ("sampling step"); here the message also names the flag that sets it (`--step`).
+
+/// (library parameter name, the flag that sets it).
+const FLAGS: &[(&str, &str)] = &[
+    ("sampling step", "--step"),
+    ("sample sharing tolerance", "--share-samples"),
+    (
+        "probing stride through transparent material",
+        "--empty-stride",
+    ),
+    ("thin-material opacity", "--thin-alpha"),
+    ("volume path", "--path"),
+    ("hole gap", "--hole-gap"),
+    ("references", "--references"),
+    ("epsilon", "--epsilon"),
+    ("radius scale", "--radius-scale"),
+    ("view scale", "--view-scale"),
+    ("focus", "--focus"),
+    ("depthiness", "--depthiness"),
+    ("separation", "--separation"),
+    ("downsample factor", "--downsample"),
+    ("method", "--method"),
+];
+
+/// The flag that sets the library parameter `name`, where one does.
+pub fn flag_of(name: &str) -> Option<&'static str> {
+    FLAGS
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map(|(_, flag)| *flag)
+}
+
+/// `error` and its causes as `{:#}` prints them, each invalid library parameter prefixed with
+/// its flag.
+pub fn describe(error: &anyhow::Error) -> String {
+    let parts: Vec<String> = error
+        .chain()
+        .map(|cause| match cause.downcast_ref::<autostereo::Error>() {
+            Some(autostereo::Error::InvalidParameter { name, .. }) => match flag_of(name) {
+                Some(flag) => format!("{flag}: {cause}"),
+                None => cause.to_string(),
+            },
+            _ => cause.to_string(),
+        })
+        .collect();
+    parts.join(": ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_invalid_parameter_is_named_by_its_flag() {
+        let settings = autostereo::volume::VolumeSettings {
+            empty_stride: 0,
+            ..Default::default()
+        };
+        let error = anyhow::Error::from(settings.validate().unwrap_err()).context("volume");
+        let text = describe(&error);
+        assert!(
+            text.starts_with("volume: --empty-stride: invalid probing stride"),
+            "{text}"
+        );
+        let plain = anyhow::anyhow!("no such file");
+        assert_eq!(describe(&plain), "no such file");
+    }
+}

@@ -1,0 +1,160 @@
+//! `autostereo mesh`: render a triangle mesh for a multi-view display.
+
+use std::path::PathBuf;
+
+use anyhow::{Context, Result};
+use autostereo::mesh::{CoverBounds, TileClip, Visibility};
+use autostereo::mesh::{Mesh, MeshBuffers};
+use autostereo::render::Method;
+use autostereo::{MeshOptions, RendererOptions};
+
+use crate::args::{gpu, RenderArgs};
+use crate::run::{compare_with, merge, report, run_fields, run_summary, timed};
+use crate::warp_cmd::hole_report;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum VisibilityArg {
+    /// The fastest exact mode the adapter supports (compute, else exact).
+    Auto,
+    /// Per-subpixel depth by subpixel-resolution rasterisation (any adapter).
+    Exact,
+    /// Per-subpixel depth with 64-bit atomics.
+    Atomic,
+    /// Software (compute-pass) rasterisation of the covering rectangles, 64-bit atomics.
+    Compute,
+    /// The paper's one depth per pixel (approximate).
+    Fast,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum TileClipArg {
+    /// Clip distances where the adapter has them, else discard.
+    Auto,
+    /// Four clip distances per vertex (needs CLIP_DISTANCES).
+    ClipDistances,
+    /// Discard fragments outside the tile (any adapter).
+    Discard,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum BoundsArg {
+    Exact,
+    Paper,
+}
+
+#[derive(clap::Args)]
+pub struct MeshArgs {
+    /// OBJ file; a generated torus scene when omitted.
+    obj: Option<PathBuf>,
+    #[command(flatten)]
+    common: RenderArgs,
+    /// Single-pass visibility: auto | compute | atomic | exact (per-subpixel depth) | fast (the
+    /// paper's one depth per pixel); auto = compute where 64-bit atomics exist, else exact.
+    #[arg(long, value_enum, default_value = "auto")]
+    visibility: VisibilityArg,
+    /// Single-pass covering-quad bounds: exact (vd·|1 − fd/d| per vertex) or the paper's printed
+    /// formula.
+    #[arg(long, value_enum, default_value = "exact")]
+    bounds: BoundsArg,
+    /// Tiled method: how each view's copy is kept inside its tile.
+    #[arg(long, value_enum, default_value = "auto")]
+    tile_clip: TileClipArg,
+    /// Reorder triangles along a Morton curve before rendering (locality; every method).
+    #[arg(long)]
+    sort_triangles: bool,
+}
+
+pub fn run(args: MeshArgs) -> Result<()> {
+    args.common.check()?;
+    let mut mesh = match &args.obj {
+        Some(path) => Mesh::load_obj(path)?,
+        None => Mesh::torus_scene(),
+    };
+    if args.sort_triangles {
+        mesh.sort_triangles_spatially();
+    }
+    let bounds = mesh.bounds().context("the mesh has no vertices")?;
+    let frame = args.common.frame(bounds)?;
+    let ctx = gpu()?;
+    let device = &ctx.device;
+    let buffers = MeshBuffers::new(device, &mesh)?;
+    let options = options(&args);
+    let mut renderer = options.mesh_renderer(device)?;
+    let run = timed(
+        &ctx,
+        renderer.as_mut(),
+        &buffers,
+        &frame,
+        args.common.frames,
+    )?;
+    let turntable = crate::output::save_all(
+        &ctx,
+        renderer.as_mut(),
+        &buffers,
+        &frame,
+        bounds,
+        &args.common,
+        &run.image,
+    )?;
+    let diff = if args.common.compare {
+        let mut npass = RendererOptions::new(Method::NPass).mesh_renderer(device)?;
+        Some(compare_with(
+            &ctx,
+            npass.as_mut(),
+            &buffers,
+            &frame,
+            &run.image,
+        )?)
+    } else {
+        None
+    };
+    let method_name = args.common.method.name();
+    let mut extra = serde_json::json!({ "triangles": mesh.triangle_count() });
+    if args.common.method == Method::Warp {
+        let build = |o: &RendererOptions| o.mesh_renderer(device);
+        merge(
+            &mut extra,
+            hole_report(&ctx, &args.common.warp, &options, build, &buffers, &frame)?,
+        );
+    }
+    if let Some(t) = &turntable {
+        merge(&mut extra, t.fields());
+    }
+    let mut fields = run_fields(&ctx, &args.common, &frame, &run, extra);
+    if args.common.method == Method::SinglePass {
+        fields["visibility"] = options.mesh_single_pass(device).visibility.name().into();
+        fields["bounds"] = format!("{:?}", args.bounds).to_lowercase().into();
+    }
+    let summary = format!(
+        "{method_name}: {} triangles, {}",
+        mesh.triangle_count(),
+        run_summary(&ctx, &args.common, &frame, &run)
+    );
+    report(args.common.json, fields, diff, &summary);
+    Ok(())
+}
+
+/// The renderer options the flags say.
+fn options(args: &MeshArgs) -> RendererOptions {
+    RendererOptions {
+        mesh: MeshOptions {
+            visibility: match args.visibility {
+                VisibilityArg::Auto => None,
+                VisibilityArg::Exact => Some(Visibility::Exact),
+                VisibilityArg::Atomic => Some(Visibility::Atomic),
+                VisibilityArg::Compute => Some(Visibility::Compute),
+                VisibilityArg::Fast => Some(Visibility::Fast),
+            },
+            bounds: match args.bounds {
+                BoundsArg::Exact => CoverBounds::Exact,
+                BoundsArg::Paper => CoverBounds::Paper,
+            },
+            tile_clip: match args.tile_clip {
+                TileClipArg::Auto => TileClip::Auto,
+                TileClipArg::ClipDistances => TileClip::ClipDistances,
+                TileClipArg::Discard => TileClip::Discard,
+            },
+        },
+        ..args.common.options()
+    }
+}

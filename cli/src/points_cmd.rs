@@ -1,0 +1,164 @@
+//! `autostereo points`: render a point cloud as splats (a generated torus scene when no file is
+//! given).
+
+use std::path::PathBuf;
+use std::time::Instant;
+
+use anyhow::{bail, Result};
+use autostereo::points::SplatDepth;
+use autostereo::points::{GroupCount, PointCloud, SplatScene};
+use autostereo::render::Method;
+use autostereo::{PointOptions, RendererOptions};
+
+use crate::args::{gpu, RenderArgs};
+use crate::run::{compare_with, merge, report, run_fields, run_summary, timed};
+use crate::warp_cmd::hole_report;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum DepthArg {
+    /// One depth per subpixel (subpixel-resolution geometry pass).
+    Exact,
+    /// The paper's mean depth per pixel.
+    Paper,
+}
+
+#[derive(clap::Args)]
+pub struct PointsArgs {
+    /// PLY (ASCII or binary) or OBJ (its vertices); a generated torus scene when omitted.
+    file: Option<PathBuf>,
+    #[command(flatten)]
+    common: RenderArgs,
+    /// ε of the ε-z compositing, as a fraction of the scene's depth extent (bounding diameter).
+    #[arg(long, default_value_t = autostereo::points::DEFAULT_EPSILON_FRACTION)]
+    epsilon: f32,
+    /// Splat groups: `auto` (no overlap inside a group) or a fixed count K.
+    #[arg(long, default_value = "auto", value_parser = parse_groups)]
+    groups: GroupCount,
+    /// Multiply every splat radius (given or estimated) by S.
+    #[arg(long, default_value_t = 1.0)]
+    radius_scale: f32,
+    /// Single-pass depth per group image: exact (per subpixel) or the paper's (per pixel).
+    #[arg(long, value_enum, default_value = "exact")]
+    depth: DepthArg,
+}
+
+fn parse_groups(s: &str) -> Result<GroupCount, String> {
+    if s == "auto" {
+        return Ok(GroupCount::Auto);
+    }
+    match s.parse::<u32>() {
+        Ok(k) if k >= 1 => Ok(GroupCount::Fixed(k)),
+        _ => Err(format!("'{s}' is neither 'auto' nor a group count ≥ 1")),
+    }
+}
+
+pub fn run(args: PointsArgs) -> Result<()> {
+    args.common.check()?;
+    if !(args.epsilon.is_finite() && args.epsilon >= 0.0) {
+        bail!("--epsilon {}: must be finite and ≥ 0", args.epsilon);
+    }
+    let start = Instant::now();
+    let cloud = match &args.file {
+        Some(path) => PointCloud::load(path)?,
+        None => PointCloud::torus_scene(),
+    };
+    let load_ms = start.elapsed().as_secs_f64() * 1e3;
+    let (splats, completion) = cloud.complete(args.radius_scale)?;
+    drop(cloud);
+    let bounds = splats.bounds().expect("complete() rejects empty clouds");
+    let frame = args.common.frame(bounds)?;
+    let ctx = gpu()?;
+    let device = &ctx.device;
+    let scene = SplatScene::new(device, &splats, args.groups)?;
+    let options = RendererOptions {
+        points: PointOptions {
+            depth: match args.depth {
+                DepthArg::Exact => SplatDepth::Exact,
+                DepthArg::Paper => SplatDepth::Paper,
+            },
+            epsilon_fraction: args.epsilon,
+        },
+        ..args.common.options()
+    };
+    let splat_options = options.points.for_scene(&scene);
+    let method = args.common.method;
+    let mut renderer = options.points_renderer(device, &scene)?;
+    let run = timed(&ctx, renderer.as_mut(), &scene, &frame, args.common.frames)?;
+    // Everything the render holds at once: the scene, the renderer's scratch, images and
+    // layers, the target.
+    let gpu_bytes = autostereo::budget::gpu_held();
+    let turntable = crate::output::save_all(
+        &ctx,
+        renderer.as_mut(),
+        &scene,
+        &frame,
+        bounds,
+        &args.common,
+        &run.image,
+    )?;
+    let diff = if args.common.compare {
+        let npass = RendererOptions {
+            method: Method::NPass,
+            ..options
+        };
+        let mut npass = npass.points_renderer(device, &scene)?;
+        Some(compare_with(
+            &ctx,
+            npass.as_mut(),
+            &scene,
+            &frame,
+            &run.image,
+        )?)
+    } else {
+        None
+    };
+    let method_name = args.common.method.name();
+    let extra = serde_json::json!({
+        "depth": splat_options.depth.name(),
+        "points": splats.len(),
+        "load_ms": load_ms,
+        "normals_estimated": completion.normals_estimated,
+        "radii_estimated": completion.radii_estimated,
+        "estimate_ms": completion.estimate_ms,
+        "groups": scene.groups(),
+        "group_conflicts": scene.conflicts,
+        "grouping_ms": scene.grouping_ms,
+        "epsilon": splat_options.epsilon,
+        "median_radius": scene.median_radius,
+        "gpu_bytes": gpu_bytes,
+    });
+    let mut extra = extra;
+    if method == Method::Warp {
+        let build = |o: &RendererOptions| o.points_renderer(device, &scene);
+        merge(
+            &mut extra,
+            hole_report(&ctx, &args.common.warp, &options, build, &scene, &frame)?,
+        );
+    }
+    if let Some(t) = &turntable {
+        merge(&mut extra, t.fields());
+    }
+    let fields = run_fields(&ctx, &args.common, &frame, &run, extra);
+    let estimated = match (completion.normals_estimated, completion.radii_estimated) {
+        (false, false) => String::new(),
+        (n, r) => format!(
+            " ({}{}{} estimated in {:.0} ms)",
+            if n { "normals" } else { "" },
+            if n && r { " + " } else { "" },
+            if r { "radii" } else { "" },
+            completion.estimate_ms
+        ),
+    };
+    let summary = format!(
+        "{method_name} ({} depth): {} points{estimated}, {} groups ({} conflicts, {:.0} ms), GPU memory {:.1} MiB, {}",
+        splat_options.depth.name(),
+        splats.len(),
+        scene.groups(),
+        scene.conflicts,
+        scene.grouping_ms,
+        gpu_bytes as f64 / (1u64 << 20) as f64,
+        run_summary(&ctx, &args.common, &frame, &run)
+    );
+    report(args.common.json, fields, diff, &summary);
+    Ok(())
+}

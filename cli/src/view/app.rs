@@ -1,0 +1,500 @@
+//! The window, its event loop and one frame: render the scene into a spatial target, copy it
+//! into the surface texture (`OutputBlit`), present.
+
+use std::sync::Arc;
+use std::time::Instant;
+
+use anyhow::{Context, Result};
+use autostereo::display::Display;
+use autostereo::frame::Frame;
+use autostereo::gpu::GpuContext;
+use autostereo::render::quilt::QuiltLayout;
+use autostereo::render::{
+    Method, OutputBlit, Renderer, StereoCompositor, StereoFormat, OUTPUT_FORMATS,
+};
+use autostereo::target::SpatialTarget;
+use autostereo::{AnyRenderer, RendererOptions};
+use winit::application::ApplicationHandler;
+use winit::dpi::{PhysicalPosition, PhysicalSize};
+use winit::event::{ElementState, MouseButton, MouseScrollDelta, WindowEvent};
+use winit::event_loop::{ActiveEventLoop, EventLoop};
+use winit::window::{Fullscreen, Window, WindowId};
+
+use super::orbit::Orbit;
+use super::scene::{self, ViewScene};
+use super::{Preview, ViewArgs};
+
+mod controls;
+mod images;
+mod memory;
+
+/// The renderer options of `method` (every primitive's settings at their defaults).
+pub(super) fn options(method: Method) -> RendererOptions {
+    RendererOptions::new(method)
+}
+
+use images::copyable_target;
+use memory::MemoryLog;
+
+/// Frames after which `--screenshot` is taken without `--quit-after-frames`.
+const SCREENSHOT_FRAME: u32 = 3;
+
+/// Displays the `d` key steps through after the one given.
+const MORE_DISPLAYS: [&str; 4] = [
+    "hubner8",
+    "lenticular:8",
+    "slanted:45,8,2/3,7/6",
+    "lenticular:4",
+];
+
+pub fn run(args: ViewArgs) -> Result<()> {
+    let event_loop = EventLoop::new().context("opening the window system (is DISPLAY set?)")?;
+    let mut app = App {
+        args,
+        state: None,
+        error: None,
+    };
+    event_loop.run_app(&mut app)?;
+    match app.error {
+        Some(e) => Err(e),
+        None => Ok(()),
+    }
+}
+
+struct App {
+    args: ViewArgs,
+    state: Option<State>,
+    error: Option<anyhow::Error>,
+}
+
+/// Everything a running window holds.
+struct State {
+    window: Arc<Window>,
+    surface: wgpu::Surface<'static>,
+    config: wgpu::SurfaceConfiguration,
+    ctx: GpuContext,
+    blit: OutputBlit,
+    scene: ViewScene,
+    /// The methods the scene's primitive has on this adapter, and the one in use.
+    methods: Vec<Method>,
+    method: usize,
+    /// One renderer per method, built when first used and kept: switching back is instant and,
+    /// once every method has run, nothing new is built (the exercise run's flat memory).
+    renderers: Vec<Option<AnyRenderer>>,
+    /// The displays the `d` key steps through (the given one first), parsed once.
+    displays: Vec<(String, Display)>,
+    display: usize,
+    preview: Preview,
+    /// The view shown by the one-view preview.
+    preview_view: Option<u32>,
+    orbit: Orbit,
+    separation_scale: f32,
+    focal_scale: f32,
+    /// The window's spatial image, and the stereo previews' left and right eyes.
+    targets: [Option<SpatialTarget>; 3],
+    stereo: StereoCompositor,
+    /// Window client area on the screen (the mask's origin).
+    position: [u32; 2],
+    cursor: Option<PhysicalPosition<f64>>,
+    buttons: (bool, bool),
+    frames: u32,
+    last_ms: f64,
+    /// What an exercise run records of its memory.
+    memory: MemoryLog,
+}
+
+impl ApplicationHandler for App {
+    fn resumed(&mut self, event_loop: &ActiveEventLoop) {
+        if self.state.is_some() {
+            return;
+        }
+        match State::new(event_loop, &self.args) {
+            Ok(state) => {
+                state.window.request_redraw();
+                self.state = Some(state);
+            }
+            Err(e) => {
+                self.error = Some(e);
+                event_loop.exit();
+            }
+        }
+    }
+
+    fn window_event(&mut self, event_loop: &ActiveEventLoop, _: WindowId, event: WindowEvent) {
+        let Some(state) = self.state.as_mut() else {
+            return;
+        };
+        let result = match event {
+            WindowEvent::CloseRequested => {
+                event_loop.exit();
+                Ok(())
+            }
+            WindowEvent::Resized(size) => {
+                state.resize(size);
+                Ok(())
+            }
+            WindowEvent::Moved(_) => {
+                state.update_position();
+                Ok(())
+            }
+            WindowEvent::RedrawRequested => state.redraw(&self.args).map(|done| {
+                if done {
+                    event_loop.exit();
+                } else {
+                    state.window.request_redraw();
+                }
+            }),
+            WindowEvent::KeyboardInput { event, .. } if event.state == ElementState::Pressed => {
+                state.key(&event.logical_key, event_loop)
+            }
+            WindowEvent::MouseInput {
+                state: s, button, ..
+            } => {
+                let down = s == ElementState::Pressed;
+                match button {
+                    MouseButton::Left => state.buttons.0 = down,
+                    MouseButton::Right | MouseButton::Middle => state.buttons.1 = down,
+                    _ => {}
+                }
+                Ok(())
+            }
+            WindowEvent::CursorMoved { position, .. } => {
+                state.drag(position);
+                Ok(())
+            }
+            WindowEvent::MouseWheel { delta, .. } => {
+                let steps = match delta {
+                    MouseScrollDelta::LineDelta(_, y) => y,
+                    MouseScrollDelta::PixelDelta(p) => p.y as f32 / 40.0,
+                };
+                state.orbit.dolly(steps);
+                Ok(())
+            }
+            _ => Ok(()),
+        };
+        if let Err(e) = result {
+            self.error = Some(e);
+            event_loop.exit();
+        }
+    }
+}
+
+impl State {
+    fn new(event_loop: &ActiveEventLoop, args: &ViewArgs) -> Result<Self> {
+        let mut attributes = Window::default_attributes()
+            .with_title("autostereo")
+            .with_inner_size(PhysicalSize::new(args.size[0], args.size[1]));
+        if let Some([x, y]) = args.position {
+            attributes = attributes.with_position(PhysicalPosition::new(x, y));
+        }
+        if let Some(index) = args.fullscreen {
+            let monitors: Vec<_> = event_loop.available_monitors().collect();
+            let monitor = monitors.get(index).cloned().with_context(|| {
+                format!(
+                    "--fullscreen {index}: {} monitor(s) found, numbered from 0",
+                    monitors.len()
+                )
+            })?;
+            // Also the monitor's position and size: without a window manager (Xvfb, a kiosk
+            // panel) nothing acts on the fullscreen request.
+            attributes = attributes
+                .with_position(monitor.position())
+                .with_inner_size(monitor.size())
+                .with_fullscreen(Some(Fullscreen::Borderless(Some(monitor))));
+        }
+        let window = Arc::new(event_loop.create_window(attributes)?);
+        let mut desc = wgpu::InstanceDescriptor::new_with_display_handle(Box::new(
+            event_loop.owned_display_handle(),
+        ));
+        desc.backends = autostereo::gpu::GpuOptions::default().backends();
+        let instance = wgpu::Instance::new(desc);
+        let surface = instance
+            .create_surface(window.clone())
+            .context("creating the window's surface")?;
+        let ctx = GpuContext::for_surface(&instance, &surface, &Default::default())?;
+        let caps = surface.get_capabilities(&ctx.adapter);
+        let format = caps
+            .formats
+            .iter()
+            .copied()
+            .find(|f| OUTPUT_FORMATS.contains(f))
+            .with_context(|| format!("the surface offers none of {OUTPUT_FORMATS:?}"))?;
+        let size = window.inner_size();
+        // COPY_SRC where offered, so that --screenshot reads what was presented.
+        let usage =
+            wgpu::TextureUsages::RENDER_ATTACHMENT | (caps.usages & wgpu::TextureUsages::COPY_SRC);
+        let config = wgpu::SurfaceConfiguration {
+            usage,
+            format,
+            color_space: wgpu::SurfaceColorSpace::Auto,
+            width: size.width.max(1),
+            height: size.height.max(1),
+            desired_maximum_frame_latency: 2,
+            present_mode: wgpu::PresentMode::Fifo,
+            alpha_mode: wgpu::CompositeAlphaMode::Auto,
+            view_formats: vec![],
+        };
+        surface.configure(&ctx.device, &config);
+        let blit = OutputBlit::new(&ctx.device, format)?;
+        let stereo = StereoCompositor::new(&ctx.device)?;
+        let scene = scene::load(&ctx, args.file.as_ref(), args.kind)?;
+        let methods: Vec<Method> = Method::ALL
+            .into_iter()
+            .filter(|&m| AnyRenderer::new(&ctx.device, &scene.scene, &options(m)).is_ok())
+            .collect();
+        let method = methods
+            .iter()
+            .position(|&m| m == args.method)
+            .with_context(|| {
+                format!(
+                    "--method {}: {} scenes have {}",
+                    args.method,
+                    scene.scene.primitive(),
+                    methods
+                        .iter()
+                        .map(|m| m.name())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )
+            })?;
+        let mut renderers: Vec<Option<AnyRenderer>> = methods.iter().map(|_| None).collect();
+        renderers[method] = Some(AnyRenderer::new(
+            &ctx.device,
+            &scene.scene,
+            &options(methods[method]),
+        )?);
+        let mut displays = vec![(args.display.display.clone(), args.display.display()?)];
+        for spec in MORE_DISPLAYS.iter().filter(|d| **d != args.display.display) {
+            displays.push((spec.to_string(), Display::parse(spec)?));
+        }
+        let mut state = Self {
+            window,
+            surface,
+            config,
+            ctx,
+            blit,
+            scene,
+            methods,
+            method,
+            renderers,
+            displays,
+            display: 0,
+            preview: args.preview,
+            preview_view: None,
+            orbit: Orbit::default(),
+            separation_scale: 1.0,
+            focal_scale: 1.0,
+            targets: [None, None, None],
+            stereo,
+            position: [0, 0],
+            cursor: None,
+            buttons: (false, false),
+            frames: 0,
+            last_ms: 0.0,
+            memory: MemoryLog::default(),
+        };
+        state.update_position();
+        Ok(state)
+    }
+
+    /// The mask's origin from where the client area sits on the screen.
+    fn update_position(&mut self) {
+        if let Ok(p) = self.window.inner_position() {
+            self.position = [p.x.max(0) as u32, p.y.max(0) as u32];
+        }
+    }
+
+    fn resize(&mut self, size: PhysicalSize<u32>) {
+        if size.width == 0 || size.height == 0 {
+            return;
+        }
+        self.config.width = size.width;
+        self.config.height = size.height;
+        self.surface.configure(&self.ctx.device, &self.config);
+        self.update_position();
+    }
+
+    /// The frame of the current camera settings on `display`, `size` pixels. The display's
+    /// origin is where the window sits, plus --origin (a panel not at the screen's top-left).
+    fn frame_on(&self, args: &ViewArgs, mut display: Display, size: [u32; 2]) -> Result<Frame> {
+        display.origin = [
+            self.position[0] + args.display.origin[0],
+            self.position[1] + args.display.origin[1],
+        ];
+        let base = args
+            .camera
+            .camera(self.scene.bounds, display.views(), size)?;
+        let mut camera = self.orbit.apply(&base, self.scene.bounds.center());
+        camera.separation *= self.separation_scale;
+        camera.focal_distance *= self.focal_scale;
+        Ok(Frame::new(camera, display, size)?)
+    }
+
+    /// What to render this frame: (frame, which target: 0 the window's, 1 and 2 the eyes' or
+    /// the quilt's tile, and where in the window's to copy the tile, for the quilt preview).
+    #[allow(clippy::type_complexity)]
+    fn frames(&self, args: &ViewArgs) -> Result<Vec<(Frame, usize, Option<[u32; 2]>)>> {
+        let size = [self.config.width, self.config.height];
+        let panel = self.displays[self.display].1.clone();
+        let n = panel.views();
+        let centre = self.preview_view.unwrap_or((n - 1) / 2).min(n - 1);
+        let one = |v: u32| Display::parse(&format!("view:{n},{v}"));
+        Ok(match (self.preview, self.preview.stereo()) {
+            (Preview::Spatial, _) => vec![(self.frame_on(args, panel, size)?, 0, None)],
+            (Preview::View, _) => vec![(self.frame_on(args, one(centre)?, size)?, 0, None)],
+            (Preview::Quilt, _) => {
+                // Looking Glass order: view 0 bottom-left, left to right, bottom to top.
+                // The squarest grid: tiles keep about the window's aspect.
+                let grid = QuiltLayout::for_views(n, [1, 1]);
+                let tile = [(size[0] / grid.cols).max(1), (size[1] / grid.rows).max(1)];
+                let layout = QuiltLayout { tile, ..grid };
+                (0..n)
+                    .map(|v| {
+                        Ok((
+                            self.frame_on(args, one(v)?, tile)?,
+                            1,
+                            Some(layout.tile_origin(v)),
+                        ))
+                    })
+                    .collect::<Result<_>>()?
+            }
+            (_, Some(format)) => {
+                // Side by side: each eye half the window's width (the "half" form).
+                let eye = match format {
+                    StereoFormat::SideBySide => [(size[0] / 2).max(1), size[1]],
+                    _ => size,
+                };
+                let right = (centre + 1).min(n - 1);
+                vec![
+                    (self.frame_on(args, one(centre)?, eye)?, 1, None),
+                    (self.frame_on(args, one(right)?, eye)?, 2, None),
+                ]
+            }
+            (_, None) => unreachable!("every other preview is stereo"),
+        })
+    }
+
+    /// Render and present one frame; `Ok(true)` when the run is over.
+    fn redraw(&mut self, args: &ViewArgs) -> Result<bool> {
+        self.exercise_step(args)?;
+        let start = Instant::now();
+        let frames = self.frames(args)?;
+        let device = &self.ctx.device;
+        let size = [self.config.width, self.config.height];
+        let eyes = frames[0].0.size;
+        for (slot, wanted, used) in [
+            (0, size, true),
+            (1, eyes, frames.len() > 1),
+            (2, eyes, self.preview.stereo().is_some()),
+        ] {
+            if !used {
+                self.targets[slot] = None;
+            } else if self.targets[slot]
+                .as_ref()
+                .is_none_or(|t| t.size() != wanted)
+            {
+                self.targets[slot] = None; // free before allocating the replacement
+                self.targets[slot] = Some(copyable_target(device, wanted)?);
+            }
+        }
+        let surface_texture = match self.surface.get_current_texture() {
+            wgpu::CurrentSurfaceTexture::Success(t)
+            | wgpu::CurrentSurfaceTexture::Suboptimal(t) => t,
+            wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
+                self.surface.configure(device, &self.config);
+                return Ok(false);
+            }
+            _ => return Ok(false), // timeout, occluded: try the next frame
+        };
+        let mut encoder = device.create_command_encoder(&Default::default());
+        let renderer = self.renderers[self.method]
+            .as_mut()
+            .expect("built when selected");
+        let target = self.targets[0].as_ref().expect("allocated above");
+        if self.preview == Preview::Quilt {
+            // The tiles may not fill the window: black around them.
+            let clear = wgpu::RenderPassColorAttachment {
+                view: &target.view,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
+                    store: wgpu::StoreOp::Store,
+                },
+            };
+            encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("quilt background"),
+                color_attachments: &[Some(clear)],
+                ..Default::default()
+            });
+        }
+        for (frame, slot, copy_to) in &frames {
+            let into = self.targets[*slot].as_ref().expect("allocated above");
+            renderer.prepare(device, &self.ctx.queue, &self.scene.scene, frame)?;
+            renderer.encode(device, &mut encoder, &self.scene.scene, frame, into)?;
+            if let Some([x, y]) = *copy_to {
+                // One tile target serves every view: the copies keep the encoder's order.
+                encoder.copy_texture_to_texture(
+                    into.texture.as_image_copy(),
+                    wgpu::TexelCopyTextureInfo {
+                        origin: wgpu::Origin3d { x, y, z: 0 },
+                        ..target.texture.as_image_copy()
+                    },
+                    into.texture.size(),
+                );
+            }
+        }
+        if let Some(format) = self.preview.stereo() {
+            let eye = |i: usize| self.targets[i].as_ref().expect("allocated above");
+            self.stereo
+                .encode(device, &mut encoder, format, eye(1), eye(2), target)?;
+        }
+        self.blit
+            .encode(device, &mut encoder, target, &surface_texture.texture)?;
+        self.ctx.queue.submit([encoder.finish()]);
+        // Free what finished frames held (each frame's small constant buffers and bind
+        // groups) now rather than whenever the backend next looks.
+        let _ = device.poll(wgpu::PollType::Poll);
+        self.frames += 1;
+        let last = args.quit_after_frames.or(args.exercise);
+        let shot_at = args.quit_after_frames.unwrap_or(SCREENSHOT_FRAME);
+        if let Some(path) = args.screenshot.as_ref().filter(|_| self.frames == shot_at) {
+            self.screenshot(&surface_texture.texture, target)?
+                .save_png(path)?;
+        }
+        self.ctx.queue.present(surface_texture);
+        self.last_ms = start.elapsed().as_secs_f64() * 1e3;
+        self.window.set_title(&format!(
+            "autostereo — {} — {} — {} ({} views{}) — {:.1} ms",
+            self.scene.name,
+            self.methods[self.method],
+            self.displays[self.display].0,
+            frames[0].0.camera.views,
+            match self.preview {
+                Preview::Spatial => String::new(),
+                other => format!(", {other:?} preview"),
+            },
+            self.last_ms
+        ));
+        if let Some((k, [x, y])) = args.move_after {
+            if self.frames == k {
+                self.window
+                    .set_outer_position(PhysicalPosition::new(x as i32, y as i32));
+            }
+        }
+        self.memory.after_frame(self.frames);
+        if args.exercise.is_some() && self.frames.is_multiple_of(self.exercise_period(args)) {
+            self.memory.end_period(device);
+        }
+        let done = last.is_some_and(|k| self.frames >= k);
+        if done && args.exercise.is_some() {
+            let mut report = self.memory.report();
+            report["frames"] = self.frames.into();
+            report["period_frames"] = self.exercise_period(args).into();
+            // The test's heap bound depends on the backend (see tests/viewer.rs).
+            report["backend"] = self.ctx.info().backend.to_str().into();
+            println!("{report}");
+        }
+        Ok(done)
+    }
+}

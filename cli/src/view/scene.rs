@@ -1,0 +1,112 @@
+//! The viewer's scene: a mesh, a point cloud or a volume, loaded as the render commands load
+//! them (same defaults, so a viewer frame equals the command's image of the same camera).
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{bail, Result};
+use autostereo::camera::Bounds;
+use autostereo::mesh::{Mesh, MeshBuffers};
+use autostereo::points::{GroupCount, PointCloud, SplatScene};
+use autostereo::volume::{load::load_any, phantom, TransferFunction, VolumeScene};
+use autostereo::AnyScene;
+use glam::Mat4;
+
+/// What a file holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum KindArg {
+    /// Triangles (OBJ).
+    Mesh,
+    /// Splats (PLY, or an OBJ's vertices).
+    Points,
+    /// A volume (NRRD, .den; the built-in head without a file).
+    Volume,
+}
+
+impl KindArg {
+    /// The kind a file's extension says: .obj mesh, .ply points, .nrrd/.nhdr/.den volume.
+    pub fn of(path: &Path) -> Result<Self> {
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .unwrap_or("")
+            .to_ascii_lowercase();
+        Ok(match ext.as_str() {
+            "obj" => KindArg::Mesh,
+            "ply" => KindArg::Points,
+            "nrrd" | "nhdr" | "den" => KindArg::Volume,
+            _ => bail!(
+                "{}: no kind for '.{ext}' files; say --kind mesh|points|volume",
+                path.display()
+            ),
+        })
+    }
+}
+
+/// A loaded scene on the GPU and its bounds.
+pub struct ViewScene {
+    pub scene: AnyScene,
+    pub bounds: Bounds,
+    /// What the title says.
+    pub name: String,
+}
+
+/// Load `file` as `kind` (from the extension when `None`); no file: the built-in volume.
+pub fn load(
+    ctx: &autostereo::gpu::GpuContext,
+    file: Option<&PathBuf>,
+    kind: Option<KindArg>,
+) -> Result<ViewScene> {
+    let kind = match (file, kind) {
+        (_, Some(k)) => k,
+        (Some(path), None) => KindArg::of(path)?,
+        (None, None) => KindArg::Volume,
+    };
+    let name = file.map_or_else(
+        || format!("built-in {kind:?}").to_lowercase(),
+        |p| p.display().to_string(),
+    );
+    let (device, queue) = (&ctx.device, &ctx.queue);
+    let (scene, bounds) = match kind {
+        KindArg::Mesh => {
+            let mesh = match file {
+                Some(path) => Mesh::load_obj(path)?,
+                None => Mesh::torus_scene(),
+            };
+            let Some(bounds) = mesh.bounds() else {
+                bail!("{name}: the mesh has no vertices");
+            };
+            (AnyScene::Mesh(MeshBuffers::new(device, &mesh)?), bounds)
+        }
+        KindArg::Points => {
+            let cloud = match file {
+                Some(path) => PointCloud::load(path)?,
+                None => PointCloud::torus_scene(),
+            };
+            let (splats, _) = cloud.complete(1.0)?;
+            let bounds = splats.bounds().expect("complete() rejects empty clouds");
+            let scene = SplatScene::new(device, &splats, GroupCount::Auto)?;
+            (AnyScene::Points(scene), bounds)
+        }
+        KindArg::Volume => {
+            let (volume, tf) = match file {
+                Some(path) => {
+                    let tf = if path.extension().is_some_and(|e| e == "den") {
+                        "mri"
+                    } else {
+                        "ct-skin"
+                    };
+                    (load_any(path)?, tf)
+                }
+                None => (phantom::ct_head(96)?, "ct-skin"),
+            };
+            let tf = TransferFunction::preset(tf)?;
+            let scene = VolumeScene::new(device, queue, &volume, tf, Mat4::IDENTITY)?;
+            (AnyScene::Volume(Box::new(scene)), volume.bounds())
+        }
+    };
+    Ok(ViewScene {
+        scene,
+        bounds,
+        name,
+    })
+}

@@ -1,0 +1,369 @@
+//! `autostereo volume`: render a volume (a built-in data set when no file is given).
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{bail, Context, Result};
+use autostereo::frame::Frame;
+use autostereo::image_io::RgbImage;
+use autostereo::readback::read_texture_rgba8;
+use autostereo::render::{Method, Renderer};
+use autostereo::views::anaglyph;
+use autostereo::volume::load::{load_any, load_raw, RawSpec, SampleType};
+use autostereo::volume::{phantom, TransferFunction, Volume};
+use autostereo::volume::{AlphaMode, VolumeScene};
+use glam::Mat4;
+
+use crate::args::{check_output, gpu, RenderArgs};
+use crate::run::{compare_with, merge, report, run_fields, run_summary, timed};
+use crate::warp_cmd::hole_report;
+use autostereo::volume::VolumeRaycaster;
+use autostereo::volume::VolumeSettings;
+use autostereo::{RendererOptions, VolumeOptions, VolumePath};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Builtin {
+    /// A contrast CT of a head and neck: face, skull, teeth, spine, arteries, folded brain
+    /// (anisotropic z).
+    Head,
+    /// The Marschner–Lobb test signal.
+    Ml,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum PathArg {
+    /// Compute pass: per-pixel ray marching, exact α per channel.
+    Compute,
+    /// The paper's view-aligned proxy slices, blended back to front.
+    Slices,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum AlphaArg {
+    /// One α per channel (dual-source blending).
+    Exact,
+    /// The paper's mean α of the pixel's views.
+    Paper,
+}
+
+#[derive(clap::Args)]
+pub struct VolumeArgs {
+    /// Volume file (.nrrd, .nhdr, .den, or raw with --raw-dims/--raw-type); a built-in data set
+    /// when omitted.
+    file: Option<PathBuf>,
+    /// Built-in data set used when no file is given.
+    #[arg(long, value_enum, default_value = "head")]
+    builtin: Builtin,
+    /// Voxels per axis of the built-in data set.
+    #[arg(long, default_value_t = 96)]
+    builtin_size: u32,
+    #[command(flatten)]
+    common: RenderArgs,
+    /// Single-pass path.
+    #[arg(long, value_enum, default_value = "compute")]
+    path: PathArg,
+    /// Slices path: per-channel (exact) or the paper's averaged α.
+    #[arg(long, value_enum, default_value = "exact")]
+    alpha: AlphaArg,
+    /// Transfer function: a preset (ct-skin, ct-bone, mri, ml) or a file of `s r g b a` lines.
+    #[arg(long)]
+    tf: Option<String>,
+    /// Samples across the volume's diagonal.
+    #[arg(long, conflicts_with = "step")]
+    slices: Option<u32>,
+    /// Sampling distance in voxels of the smallest spacing (default 0.5).
+    #[arg(long)]
+    step: Option<f32>,
+    /// Rotate the volume by AX,AY,AZ degrees (about x, then y, then z).
+    #[arg(long, value_parser = parse_f32_triple, default_value = "0,0,0")]
+    rotate: [f32; 3],
+    /// Emission-absorption only (no gradient shading).
+    #[arg(long)]
+    no_shading: bool,
+    /// Raw files: dimensions X,Y,Z.
+    #[arg(long, value_parser = parse_u32_triple)]
+    raw_dims: Option<[u32; 3]>,
+    /// Raw files: sample type (u8, i8, u16, i16, u32, i32, f32, f64).
+    #[arg(long)]
+    raw_type: Option<String>,
+    /// Raw files: samples are big-endian.
+    #[arg(long)]
+    raw_big_endian: bool,
+    /// Raw files: bytes to skip before the samples.
+    #[arg(long, default_value_t = 0)]
+    raw_header: u64,
+    /// Voxel spacing X,Y,Z (overrides the file's).
+    #[arg(long, value_parser = parse_f32_triple)]
+    spacing: Option<[f32; 3]>,
+    /// Don't jump over space the transfer function makes transparent (compute path; for
+    /// measuring what skipping saves: the image is the same).
+    #[arg(long)]
+    no_skip_empty: bool,
+    /// Single pass, compute path: a pixel's K rays share their samples where they lie within
+    /// TAU voxels of each other (near the focal plane); 0 = every ray exact. Measured trade-off
+    /// in docs/volumes/BENCHMARKS.md.
+    #[arg(long, value_name = "TAU", default_value_t = 0.0)]
+    share_samples: f32,
+    /// Compute path, every method: after a segment that added nothing, probe P sample planes
+    /// ahead and take the planes between as transparent where the segment between the two
+    /// samples is (1 = exact; an approximation that can miss features thinner than P samples).
+    /// Measured trade-off in docs/volumes/BENCHMARKS.md.
+    #[arg(long, value_name = "P", default_value_t = 1)]
+    empty_stride: u32,
+    /// With --empty-stride: probes also step through thin material, where a sample step adds
+    /// at most A opacity (0 = transparent material only). Measured in docs/volumes/BENCHMARKS.md.
+    #[arg(long, value_name = "A", default_value_t = 0.0)]
+    thin_alpha: f32,
+    /// Average blocks of F³ voxels first (for volumes over the adapter's 3D texture limit).
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=256))]
+    downsample: u32,
+    /// Also write every view as DIR/view_NN.png.
+    #[arg(long)]
+    views_out: Option<PathBuf>,
+    /// Also write a red/cyan anaglyph of the two views around the centre.
+    #[arg(long)]
+    anaglyph: Option<PathBuf>,
+}
+
+fn parse_triple<T: std::str::FromStr>(s: &str) -> Result<[T; 3], String> {
+    let parts: Vec<&str> = s.split(',').collect();
+    let bad = || format!("'{s}' is not three comma-separated numbers");
+    if parts.len() != 3 {
+        return Err(bad());
+    }
+    let mut out = Vec::with_capacity(3);
+    for p in parts {
+        out.push(p.trim().parse::<T>().map_err(|_| bad())?);
+    }
+    out.try_into().map_err(|_| bad())
+}
+
+fn parse_u32_triple(s: &str) -> Result<[u32; 3], String> {
+    parse_triple(s)
+}
+
+fn parse_f32_triple(s: &str) -> Result<[f32; 3], String> {
+    let v: [f32; 3] = parse_triple(s)?;
+    if v.iter().all(|x| x.is_finite()) {
+        Ok(v)
+    } else {
+        Err(format!("'{s}' has a non-finite value"))
+    }
+}
+
+fn load(args: &VolumeArgs) -> Result<(Volume, String)> {
+    let (mut volume, default_tf) = match &args.file {
+        None => match args.builtin {
+            Builtin::Head => (phantom::ct_head(args.builtin_size)?, "ct-skin"),
+            Builtin::Ml => (phantom::marschner_lobb(args.builtin_size)?, "ml"),
+        },
+        Some(path) => {
+            let volume = match (args.raw_dims, &args.raw_type) {
+                (Some(dims), Some(kind)) => {
+                    let kind = SampleType::parse(kind)
+                        .with_context(|| format!("unknown --raw-type '{kind}'"))?;
+                    let spec = RawSpec {
+                        dims,
+                        kind,
+                        big_endian: args.raw_big_endian,
+                        spacing: args.spacing.unwrap_or([1.0; 3]),
+                        header_bytes: args.raw_header,
+                    };
+                    load_raw(path, &spec)?
+                }
+                (None, None) => load_any(path)?,
+                _ => bail!("raw volumes need both --raw-dims and --raw-type"),
+            };
+            let tf = if path.extension().is_some_and(|e| e == "den") {
+                "mri"
+            } else {
+                "ct-skin"
+            };
+            (volume, tf)
+        }
+    };
+    if let Some(spacing) = args.spacing {
+        volume = Volume::new(volume.dims, spacing, volume.data)?;
+    }
+    if args.downsample > 1 {
+        volume = volume.downsample(args.downsample)?;
+    }
+    Ok((volume, default_tf.to_string()))
+}
+
+fn transfer(args: &VolumeArgs, default: &str) -> Result<TransferFunction> {
+    let name = args.tf.as_deref().unwrap_or(default);
+    let path = Path::new(name);
+    // A name with a path separator or an extension is a file, even when it is missing:
+    // "no such file" is the error then, not "unknown preset".
+    let looks_like_file = name.contains(std::path::MAIN_SEPARATOR) || path.extension().is_some();
+    if path.exists() || looks_like_file {
+        Ok(TransferFunction::load(path).with_context(|| format!("--tf {name}"))?)
+    } else {
+        Ok(TransferFunction::preset(name)?)
+    }
+}
+
+/// The renderer options the flags say (`step` in voxels of the smallest spacing).
+fn options(args: &VolumeArgs, step: Option<f32>) -> Result<RendererOptions> {
+    let settings = VolumeSettings {
+        step,
+        shade: !args.no_shading,
+        skip_empty: !args.no_skip_empty,
+        share_samples: share_samples(args)?,
+        empty_stride: args.empty_stride,
+        thin_alpha: args.thin_alpha,
+    };
+    let path = match (args.path, args.alpha) {
+        (PathArg::Compute, _) => VolumePath::RayMarch,
+        (PathArg::Slices, AlphaArg::Exact) => VolumePath::Slices(AlphaMode::Exact),
+        (PathArg::Slices, AlphaArg::Paper) => VolumePath::Slices(AlphaMode::Paper),
+    };
+    Ok(RendererOptions {
+        volume: VolumeOptions { path, settings },
+        ..args.common.options()
+    })
+}
+
+pub fn run(args: VolumeArgs) -> Result<()> {
+    args.common.check()?;
+    if let Some(path) = &args.anaglyph {
+        check_output(path)?;
+    }
+    if args.path == PathArg::Slices && args.common.method != Method::SinglePass {
+        bail!("--path slices is a single-pass method; N-pass and single view use the ray-marching kernel");
+    }
+    let (volume, default_tf) = load(&args)?;
+    let tf = transfer(&args, &default_tf)?;
+    let step = match (args.slices, args.step) {
+        (Some(n), _) => Some(VolumeScene::step_for_slices(&volume, n)),
+        (None, step) => step,
+    };
+    let [ax, ay, az] = args.rotate.map(f32::to_radians);
+    let model = Mat4::from_rotation_z(az) * Mat4::from_rotation_y(ay) * Mat4::from_rotation_x(ax);
+    let bounds = volume.bounds();
+    let frame = args.common.frame(bounds)?;
+    let ctx = gpu()?;
+    let scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, tf, model)?;
+    if args.thin_alpha != 0.0 && args.empty_stride < 2 {
+        bail!(
+            "--thin-alpha {}: thin material is stepped through by the probes of --empty-stride \
+             (give a stride of 2 or more)",
+            args.thin_alpha
+        );
+    }
+    if args.empty_stride != 1 && args.path != PathArg::Compute {
+        bail!(
+            "--empty-stride {}: probing is part of the compute path's empty-space skipping \
+             (--path compute)",
+            args.empty_stride
+        );
+    }
+    let options = options(&args, step)?;
+    let settings = options.volume.settings;
+    settings.validate_for(&scene)?;
+    let mut renderer = options.volume_renderer(&ctx.device)?;
+    let run = timed(&ctx, renderer.as_mut(), &scene, &frame, args.common.frames)?;
+    let turntable = crate::output::save_all(
+        &ctx,
+        renderer.as_mut(),
+        &scene,
+        &frame,
+        bounds,
+        &args.common,
+        &run.image,
+    )?;
+    if let Some(path) = &args.anaglyph {
+        let n = frame.camera.views;
+        let (l, r) = (n.saturating_sub(1) / 2, (n / 2).min(n - 1));
+        anaglyph(&run.image, &frame.display.mask(), l, r).save_png(path)?;
+    }
+    if let Some(dir) = &args.views_out {
+        write_views(&ctx, &scene, &settings, &frame, dir)?;
+    }
+    let step = settings.step_length(&scene);
+    // Against the exact N-pass: the probes would otherwise thin out the oracle's samples too,
+    // and a coarser step than the default is an approximation of the default's image.
+    let oracle = VolumeSettings {
+        step: Some(step.min(scene.default_step_length()) / scene.voxel),
+        ..settings.exact()
+    };
+    let diff = if args.common.compare {
+        let mut npass = VolumeRaycaster::new(&ctx.device, Method::NPass, oracle)?;
+        Some(compare_with(&ctx, &mut npass, &scene, &frame, &run.image)?)
+    } else {
+        None
+    };
+    let method = args.common.method.name();
+    let extra = serde_json::json!({
+        "path": match args.path { PathArg::Compute => "compute", PathArg::Slices => "slices" },
+        "alpha": match (args.path, args.alpha) {
+            (PathArg::Compute, _) | (PathArg::Slices, AlphaArg::Exact) => "exact",
+            (PathArg::Slices, AlphaArg::Paper) => "paper",
+        },
+        "volume_dims": volume.dims,
+        "spacing": volume.spacing,
+        "step": step,
+        "compare_step": args.common.compare.then(|| oracle.step_length(&scene)),
+        "samples_per_ray_max": (scene.extent.length() / step).ceil(),
+        "skip_empty": settings.skip_empty && matches!(args.path, PathArg::Compute),
+        // Sharing needs K = 3 rays per pixel (subpixel displays).
+        "share_samples": settings.share_samples,
+        "share_samples_active": settings.share_samples > 0.0
+            && frame.display.views_per_pixel() == 3,
+        "empty_stride": settings.empty_stride,
+        "thin_alpha": settings.thin_alpha,
+        "transparent_cells": scene.cells().transparent_share(&scene.transfer),
+    });
+    let mut extra = extra;
+    if args.common.method == Method::Warp {
+        let build = |o: &RendererOptions| o.volume_renderer(&ctx.device);
+        merge(
+            &mut extra,
+            hole_report(&ctx, &args.common.warp, &options, build, &scene, &frame)?,
+        );
+    }
+    if let Some(t) = &turntable {
+        merge(&mut extra, t.fields());
+    }
+    let fields = run_fields(&ctx, &args.common, &frame, &run, extra);
+    let summary = format!(
+        "{method}: volume {:?}, {}",
+        volume.dims,
+        run_summary(&ctx, &args.common, &frame, &run)
+    );
+    report(args.common.json, fields, diff, &summary);
+    Ok(())
+}
+
+/// Every view as its own PNG (the N-pass layers).
+fn write_views(
+    ctx: &autostereo::gpu::GpuContext,
+    scene: &VolumeScene,
+    settings: &VolumeSettings,
+    frame: &Frame,
+    dir: &Path,
+) -> Result<()> {
+    std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+    let mut npass = VolumeRaycaster::new(&ctx.device, Method::NPass, *settings)?;
+    let target = autostereo::target::SpatialTarget::new(&ctx.device, frame.size)?;
+    npass.render(&ctx.device, &ctx.queue, scene, frame, &target)?;
+    let layers = npass.view_layers().context("N-pass allocates its layers")?;
+    for i in 0..frame.camera.views {
+        let rgba = read_texture_rgba8(&ctx.device, &ctx.queue, &layers.texture, i)?;
+        RgbImage::from_rgba(frame.size, &rgba).save_png(&dir.join(format!("view_{i:02}.png")))?;
+    }
+    Ok(())
+}
+
+/// `--share-samples`, refused where it would change nothing: it is an option of the single
+/// pass's compute path.
+fn share_samples(args: &VolumeArgs) -> Result<f32> {
+    let tau = args.share_samples;
+    if tau != 0.0 && (args.common.method != Method::SinglePass || args.path != PathArg::Compute) {
+        bail!(
+            "--share-samples {tau}: sample sharing is an option of the single pass's compute \
+             path (--method single-pass --path compute)"
+        );
+    }
+    Ok(tau)
+}

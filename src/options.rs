@@ -1,0 +1,193 @@
+//! The one decision "method + options → renderer", for every primitive: [`RendererOptions`]
+//! holds the method and each primitive's settings; its constructors build the renderer.
+//! The command line, the viewer, the bench and the tests all build renderers here.
+
+use crate::error::{Error, Result};
+use crate::mesh::MeshBuffers;
+use crate::mesh::{
+    CoverBounds, MeshLayered, MeshMrt, MeshNPass, MeshSinglePass, MeshSinglePassOptions, MeshTiled,
+    TileClip, Visibility,
+};
+use crate::points::SplatScene;
+use crate::points::{PointSplatter, SplatDepth, SplatOptions, DEFAULT_EPSILON_FRACTION};
+use crate::render::{Method, Renderer};
+use crate::rgbd::{RgbdScene, RgbdWarp};
+use crate::volume::{AlphaMode, VolumeRaycaster, VolumeSlicer};
+use crate::volume::{VolumeScene, VolumeSettings};
+use crate::warp::{ReferenceRenderer, SceneWarp, SceneWarpOptions};
+
+/// How frames are made: the method, and each primitive's settings (a primitive reads only its
+/// own). `RendererOptions::default()` is the exact single pass.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RendererOptions {
+    /// Which cameras are evaluated, and how.
+    pub method: Method,
+    /// Triangle meshes.
+    pub mesh: MeshOptions,
+    /// Point splats.
+    pub points: PointOptions,
+    /// Volumes.
+    pub volume: VolumeOptions,
+    /// [`Method::Warp`] of rendered reference views (meshes, points, volumes).
+    pub warp: SceneWarpOptions,
+    /// RGB-D images (always warped: they hold one view).
+    pub rgbd: crate::rgbd::WarpOptions,
+}
+
+/// Mesh settings.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct MeshOptions {
+    /// Single-pass visibility; `None`: the fastest exact mode the adapter has
+    /// ([`Visibility::best_exact`]).
+    pub visibility: Option<Visibility>,
+    /// Single-pass covering-quad bounds.
+    pub bounds: CoverBounds,
+    /// Tiled method: how each view's copy is kept inside its tile.
+    pub tile_clip: TileClip,
+}
+
+/// Point-splat settings (every method splats the same way, so the baselines compare).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PointOptions {
+    /// Single-pass depth per group image (K = 3 displays).
+    pub depth: SplatDepth,
+    /// ε of the ε-z compositing as a share of the scene's bounding diameter.
+    pub epsilon_fraction: f32,
+}
+
+impl Default for PointOptions {
+    fn default() -> Self {
+        Self {
+            depth: SplatDepth::Exact,
+            epsilon_fraction: DEFAULT_EPSILON_FRACTION,
+        }
+    }
+}
+
+impl PointOptions {
+    /// The splatter's options for `scene` (ε in its units).
+    pub fn for_scene(&self, scene: &SplatScene) -> SplatOptions {
+        SplatOptions {
+            depth: self.depth,
+            epsilon: SplatOptions::epsilon_for(scene, self.epsilon_fraction),
+        }
+    }
+}
+
+/// Volume settings: the single pass's path and how every method samples.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct VolumeOptions {
+    /// The single pass's path (the other methods always ray-march).
+    pub path: VolumePath,
+    /// Sampling, shading and the measured approximations.
+    pub settings: VolumeSettings,
+}
+
+/// How the volume single pass runs.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum VolumePath {
+    /// Ray marching in a compute pass, exact per channel.
+    #[default]
+    RayMarch,
+    /// The paper's proxy slices (needs dual-source blending).
+    Slices(AlphaMode),
+}
+
+impl RendererOptions {
+    /// `method` with every primitive's default settings.
+    pub fn new(method: Method) -> Self {
+        Self {
+            method,
+            ..Self::default()
+        }
+    }
+
+    /// The mesh renderer these options describe.
+    pub fn mesh_renderer(&self, device: &wgpu::Device) -> Result<Box<dyn Renderer<MeshBuffers>>> {
+        Ok(match self.method {
+            Method::SinglePass => {
+                Box::new(MeshSinglePass::new(device, self.mesh_single_pass(device))?)
+            }
+            Method::NPass | Method::SingleView => Box::new(MeshNPass::new(device, self.method)?),
+            Method::Tiled => Box::new(MeshTiled::new(device, self.mesh.tile_clip)?),
+            Method::Layered => Box::new(MeshLayered::new(device)?),
+            Method::Mrt => Box::new(MeshMrt::new(device)?),
+            Method::Warp => self.warp_of(device, MeshNPass::new(device, Method::Warp)?)?,
+        })
+    }
+
+    /// The mesh single pass's options on `device` (visibility resolved).
+    pub fn mesh_single_pass(&self, device: &wgpu::Device) -> MeshSinglePassOptions {
+        MeshSinglePassOptions {
+            visibility: self
+                .mesh
+                .visibility
+                .unwrap_or_else(|| Visibility::best_exact(device)),
+            bounds: self.mesh.bounds,
+        }
+    }
+
+    /// The splat renderer these options describe, for `scene` (ε is a share of its size).
+    pub fn points_renderer(
+        &self,
+        device: &wgpu::Device,
+        scene: &SplatScene,
+    ) -> Result<Box<dyn Renderer<SplatScene>>> {
+        let splatter = PointSplatter::new(device, self.method, self.points.for_scene(scene))?;
+        Ok(match self.method {
+            Method::Warp => self.warp_of(device, splatter)?,
+            _ => Box::new(splatter),
+        })
+    }
+
+    /// The volume renderer these options describe.
+    pub fn volume_renderer(&self, device: &wgpu::Device) -> Result<Box<dyn Renderer<VolumeScene>>> {
+        let settings = self.volume.settings;
+        if let VolumePath::Slices(alpha) = self.volume.path {
+            if self.method != Method::SinglePass {
+                return Err(Error::invalid(
+                    "volume path",
+                    format!(
+                        "proxy slices are a single-pass path; the {} method ray-marches",
+                        self.method
+                    ),
+                ));
+            }
+            return Ok(Box::new(VolumeSlicer::new(device, alpha, settings)?));
+        }
+        let raycaster = VolumeRaycaster::new(device, self.method, settings)?;
+        Ok(match self.method {
+            Method::Warp => self.warp_of(device, raycaster)?,
+            _ => Box::new(raycaster),
+        })
+    }
+
+    /// The RGB-D renderer these options describe: an RGB-D image holds one view, so its one
+    /// method is [`Method::Warp`].
+    pub fn rgbd_renderer(&self, device: &wgpu::Device) -> Result<Box<dyn Renderer<RgbdScene>>> {
+        if self.method != Method::Warp {
+            return Err(Error::invalid(
+                "method",
+                format!(
+                    "an RGB-D image holds one view, so it is warped into the others (method \
+                     warp), not rendered by the {} method",
+                    self.method
+                ),
+            ));
+        }
+        Ok(Box::new(RgbdWarp::new(device, self.rgbd)?))
+    }
+
+    /// [`Method::Warp`] of the reference views `references` renders.
+    fn warp_of<S: ?Sized + 'static>(
+        &self,
+        device: &wgpu::Device,
+        references: impl ReferenceRenderer<S> + 'static,
+    ) -> Result<Box<dyn Renderer<S>>> {
+        Ok(Box::new(SceneWarp::new(
+            device,
+            Box::new(references),
+            self.warp,
+        )?))
+    }
+}
