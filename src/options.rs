@@ -11,10 +11,10 @@ use crate::mesh::{
 use crate::points::SplatScene;
 use crate::points::{PointSplatter, SplatDepth, SplatOptions, DEFAULT_EPSILON_FRACTION};
 use crate::render::{Method, Renderer};
-use crate::rgbd::{RgbdScene, RgbdWarp};
+use crate::rgbd::RgbdScene;
 use crate::volume::{AlphaMode, VolumeRaycaster, VolumeSlicer};
 use crate::volume::{VolumeScene, VolumeSettings};
-use crate::warp::{ReferenceRenderer, SceneWarp, SceneWarpOptions};
+use crate::warp::{ReferenceRenderer, RgbdWarp, SceneWarp, WarpOptions};
 
 /// How frames are made: the method, and each primitive's settings (a primitive reads only its
 /// own). `RendererOptions::default()` is the exact single pass.
@@ -28,10 +28,9 @@ pub struct RendererOptions {
     pub points: PointOptions,
     /// Volumes.
     pub volume: VolumeOptions,
-    /// [`Method::Warp`] of rendered reference views (meshes, points, volumes).
-    pub warp: SceneWarpOptions,
-    /// RGB-D images (always warped: they hold one view).
-    pub rgbd: crate::rgbd::WarpOptions,
+    /// [`Method::Warp`]: of rendered reference views (meshes, points, volumes) or of an RGB-D
+    /// image (always warped: it holds one view).
+    pub warp: WarpOptions,
 }
 
 /// Mesh settings.
@@ -175,7 +174,7 @@ impl RendererOptions {
                 ),
             ));
         }
-        Ok(Box::new(RgbdWarp::new(device, self.rgbd)?))
+        Ok(Box::new(RgbdWarp::new(device, self.warp)?))
     }
 
     /// [`Method::Warp`] of the reference views `references` renders.

@@ -9,9 +9,10 @@ use autostereo::display::Display;
 use autostereo::frame::Frame;
 use autostereo::image_io::RgbImage;
 use autostereo::render::Renderer;
-use autostereo::rgbd::passes::predicted_shift;
-use autostereo::rgbd::{RgbdImage, RgbdScene, RgbdWarp, WarpOptions, WarpPath};
+use autostereo::rgbd::{RgbdImage, RgbdScene};
 use autostereo::target::SpatialTarget;
+use autostereo::warp::predicted_shift;
+use autostereo::warp::{RgbdWarp, WarpOptions, WarpPath};
 
 const DISPLAYS: &[&str] = &[
     "lenticular:1",
@@ -315,7 +316,11 @@ fn the_callers_textures_are_checked() {
     let image = RgbdImage::flat(RgbImage::new(16, 8), 0.5).unwrap();
     let frame = Frame::for_display(Display::parse("hubner8").unwrap(), [16, 8]).unwrap();
     let scene = RgbdScene::new(device, &ctx.queue, &image).unwrap();
-    let mut warp = RgbdWarp::new(device, options).unwrap();
+    // Refused when the warp is built, and when options set later reach prepare.
+    let err = RgbdWarp::new(device, options).err().unwrap();
+    assert!(err.to_string().contains("focus"), "{err}");
+    let mut warp = RgbdWarp::new(device, WarpOptions::default()).unwrap();
+    warp.set_options(options);
     let err = warp
         .prepare(device, &ctx.queue, &scene, &frame)
         .unwrap_err();

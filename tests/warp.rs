@@ -14,7 +14,7 @@ use autostereo::points::{PointSplatter, SplatOptions};
 use autostereo::render::{Method, Renderer};
 use autostereo::volume::VolumeRaycaster;
 use autostereo::volume::VolumeSettings;
-use autostereo::warp::{ReferenceRenderer, SceneWarp, SceneWarpOptions, WarpPath};
+use autostereo::warp::{ReferenceRenderer, SceneWarp, WarpOptions, WarpPath};
 use glam::Vec3;
 
 /// (display spec, image size): N = 2, 8 per pixel and per subpixel, 45.
@@ -27,14 +27,14 @@ const DISPLAYS: &[(&str, [u32; 2])] = &[
 
 fn warp<S: ?Sized>(
     references: impl ReferenceRenderer<S> + 'static,
-    options: SceneWarpOptions,
+    options: WarpOptions,
 ) -> SceneWarp<S> {
     let device = common::gpu().device.clone();
     SceneWarp::new(&device, Box::new(references), options).unwrap()
 }
 
-fn options(references: u32, path: WarpPath) -> SceneWarpOptions {
-    SceneWarpOptions {
+fn options(references: u32, path: WarpPath) -> WarpOptions {
+    WarpOptions {
         references,
         path,
         ..Default::default()
@@ -182,7 +182,7 @@ fn disocclusions_are_filled_from_the_background_side() {
     let references = MeshNPass::new(&device, Method::Warp).unwrap();
     let image = common::render(&mut warp(references, one), &buffers, &frame);
     let references = MeshNPass::new(&device, Method::Warp).unwrap();
-    let holes = SceneWarpOptions {
+    let holes = WarpOptions {
         hole_mask: true,
         ..one
     };
@@ -242,7 +242,7 @@ fn bad_references_are_refused_by_name() {
         .unwrap_err()
         .to_string();
     assert!(error.contains("SceneWarp"), "{error}");
-    let bad = SceneWarpOptions {
+    let bad = WarpOptions {
         hole_gap: 0.5,
         ..Default::default()
     };

@@ -8,11 +8,10 @@ use autostereo::frame::Frame;
 use autostereo::image_io::RgbImage;
 use autostereo::render::quilt::QuiltLayout;
 use autostereo::render::Renderer;
-use autostereo::rgbd::{
-    self, DepthMapOptions, RgbdImage, RgbdScene, RgbdWarp, WarpOptions, WarpPath,
-};
+use autostereo::rgbd::{DepthMapOptions, RgbdImage, RgbdScene};
 use autostereo::target::SpatialTarget;
 use autostereo::timing::{median, FrameTimer};
+use autostereo::warp::{RgbdWarp, WarpOptions, WarpPath};
 
 use crate::args::{check_output, parse_size, DisplayArgs};
 
@@ -42,7 +41,7 @@ pub struct RgbdArgs {
     depthiness: f32,
     /// Neighbours warped further apart than this many pixels straddle a disocclusion, filled
     /// from the background side.
-    #[arg(long, default_value_t = rgbd::passes::DEFAULT_HOLE_GAP)]
+    #[arg(long, default_value_t = autostereo::warp::DEFAULT_HOLE_GAP)]
     hole_gap: f32,
     #[command(flatten)]
     display: DisplayArgs,
@@ -115,11 +114,11 @@ pub fn run(args: RgbdArgs) -> Result<()> {
         depthiness: args.depthiness,
         hole_gap: args.hole_gap,
         view: None,
-        hole_mask: false,
         path: match args.path {
             PathArg::Direct => WarpPath::Direct,
             PathArg::PerView => WarpPath::PerView,
         },
+        ..WarpOptions::default()
     };
     let ctx = crate::args::gpu()?;
     let (device, queue) = (&ctx.device, &ctx.queue);

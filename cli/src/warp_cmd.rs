@@ -8,7 +8,7 @@ use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::render::{Method, Renderer};
 use autostereo::target::SpatialTarget;
-use autostereo::warp::{SceneWarpOptions, WarpPath};
+use autostereo::warp::{WarpOptions, WarpPath};
 use autostereo::RendererOptions;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -60,20 +60,20 @@ impl WarpArgs {
         if let Some(path) = &self.hole_mask {
             crate::args::check_output(path)?;
         }
-        SceneWarpOptions::from(self).check()?;
+        WarpOptions::from(self).check()?;
         Ok(())
     }
 
     /// The library options these flags say.
-    pub fn options(&self) -> SceneWarpOptions {
-        SceneWarpOptions::from(self)
+    pub fn options(&self) -> WarpOptions {
+        WarpOptions::from(self)
     }
 }
 
-impl From<&WarpArgs> for SceneWarpOptions {
+impl From<&WarpArgs> for WarpOptions {
     fn from(args: &WarpArgs) -> Self {
-        let default = SceneWarpOptions::default();
-        SceneWarpOptions {
+        let default = WarpOptions::default();
+        WarpOptions {
             references: args.references.unwrap_or(default.references),
             hole_gap: args.hole_gap.unwrap_or(default.hole_gap),
             path: match args.warp_path {

@@ -17,7 +17,7 @@ use autostereo::points::{PointSplatter, SplatOptions};
 use autostereo::render::{Method, Renderer};
 use autostereo::volume::VolumeRaycaster;
 use autostereo::volume::VolumeSettings;
-use autostereo::warp::{SceneWarp, SceneWarpOptions};
+use autostereo::warp::{SceneWarp, WarpOptions};
 use glam::{Mat4, Vec2, Vec3};
 
 const SIZE: [u32; 2] = [128, 96];
@@ -344,12 +344,8 @@ fn models_a_method_cannot_render_are_refused_by_name() {
     let buffers = MeshBuffers::new(&ctx.device, &scene()).unwrap();
     let f = frame("hubner8", 0.26, CameraModel::ToeIn);
     let references = MeshNPass::new(&ctx.device, Method::Warp).unwrap();
-    let mut warp = SceneWarp::new(
-        &ctx.device,
-        Box::new(references),
-        SceneWarpOptions::default(),
-    )
-    .unwrap();
+    let mut warp =
+        SceneWarp::new(&ctx.device, Box::new(references), WarpOptions::default()).unwrap();
     let error = warp
         .prepare(&ctx.device, &ctx.queue, &buffers, &f)
         .unwrap_err()

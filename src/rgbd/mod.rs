@@ -2,19 +2,17 @@
 //! estimator's output, a render's Z buffer) — turned into any display's spatial image by
 //! warping each subpixel's view straight from the one reference (docs/WARPING.md).
 //!
-//! Data and loaders here; the GPU form in [`scene`] (`RgbdScene`), the warp in [`passes`]
-//! (`RgbdWarp`, `wgsl/rgbd/warp.wgsl`).
+//! Data and loaders here, and the GPU form ([`RgbdScene`]); the warp is
+//! [`crate::warp::RgbdWarp`] (`wgsl/warp/rgbd.wgsl`).
 
-pub mod passes;
-pub mod scene;
+mod scene;
 
 use std::path::Path;
 
 use crate::error::{Error, Result};
 use crate::image_io::RgbImage;
 
-pub use passes::{RgbdWarp, WarpOptions, WarpPath};
-pub use scene::RgbdScene;
+pub use scene::{RgbdScene, NEARNESS_MAP_FORMAT};
 
 /// A colour image and, per pixel, its nearness: 0 = far … 1 = near (normalised depth map
 /// values, white = near unless the map is inverted on loading).

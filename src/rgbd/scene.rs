@@ -7,13 +7,13 @@ use crate::render::texture::{texture_2d, Texture2d};
 use crate::target::SPATIAL_FORMAT;
 
 /// Format of the nearness texture (0 = far … 1 = near).
-pub const NEARNESS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
+pub const NEARNESS_MAP_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
 
 /// The reference image of a warp.
 pub struct RgbdScene {
     /// RGBA8 (`target::SPATIAL_FORMAT`), read with `textureLoad`.
     pub color: wgpu::TextureView,
-    /// [`NEARNESS_FORMAT`], one value per colour pixel.
+    /// [`NEARNESS_MAP_FORMAT`], one value per colour pixel.
     pub nearness: wgpu::TextureView,
     /// Width and height of both.
     pub size: [u32; 2],
@@ -28,7 +28,7 @@ impl RgbdScene {
         crate::gpu::check_size_2d(device, size[0], size[1])?;
         let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
         let color = texture_2d(device, "rgbd colour", size, SPATIAL_FORMAT, usage)?;
-        let nearness = texture_2d(device, "rgbd nearness", size, NEARNESS_FORMAT, usage)?;
+        let nearness = texture_2d(device, "rgbd nearness", size, NEARNESS_MAP_FORMAT, usage)?;
         let rgba: Vec<u8> = image
             .color
             .data
@@ -83,7 +83,7 @@ impl RgbdScene {
             }
         };
         check(color, "RGB-D colour texture", SPATIAL_FORMAT)?;
-        check(nearness, "RGB-D nearness texture", NEARNESS_FORMAT)?;
+        check(nearness, "RGB-D nearness texture", NEARNESS_MAP_FORMAT)?;
         Ok(Self {
             color: color.create_view(&Default::default()),
             nearness: nearness.create_view(&Default::default()),

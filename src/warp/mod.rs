@@ -1,21 +1,33 @@
-//! View synthesis by depth-image warping (Beck, Schneider & Fröhlich; docs/WARPING.md): render
-//! a few reference views with colour and nearness through an ordinary renderer of the scene's
-//! primitive, then warp them into every view.
+//! View synthesis by depth-image warping (docs/WARPING.md): every view made from a few
+//! reference images with their nearness, by a horizontal row search (Beck, Schneider &
+//! Fröhlich). The references are either rendered or given:
 //!
-//! - [`references`]: the reference views' camera, their images (colour + nearness layers) and
-//!   the [`ReferenceRenderer`] each primitive implements to fill them.
-//! - [`passes`]: [`SceneWarp`], the [`crate::render::Renderer`] of [`crate::render::Method::Warp`]:
-//!   references, then one warp pass straight into the spatial image (or, Beck's way, into N
-//!   view images and the mask compositing).
+//! - [`SceneWarp`] (`scene.rs`), the renderer of [`crate::render::Method::Warp`] for meshes,
+//!   points and volumes: R reference views rendered through the primitive's own
+//!   [`ReferenceRenderer`] (`references.rs`: their cameras, their colour + nearness images),
+//!   the nearness range of each row (`wgsl/warp/row_bounds.wgsl`), then one warp pass
+//!   (`wgsl/warp/references.wgsl`).
+//! - [`RgbdWarp`] (`rgbd.rs`): a caller's RGB-D image ([`crate::rgbd`] holds the data and its
+//!   loading) warped in one pass (`wgsl/warp/rgbd.wgsl`).
 //!
-//! RGB-D pictures are warped by [`crate::rgbd`], with the same row search
-//! (`wgsl/shared/row_warp.wgsl`).
+//! Both take one [`WarpOptions`] (`options.rs`), fill one set of constants (`uniform.rs`,
+//! `struct Warp` in `wgsl/warp/shared/warp.wgsl`) and search rows with one function
+//! (`wgsl/warp/shared/row_warp.wgsl`), straight into the spatial image or, Beck's way, through
+//! N view images ([`WarpPath`]).
 
-pub mod passes;
+mod options;
 pub mod references;
+mod rgbd;
+mod scene;
+pub(crate) mod uniform;
 
-pub use passes::{SceneWarp, SceneWarpOptions, DEFAULT_REFERENCES, DEFAULT_SAME_SURFACE};
+pub use options::{
+    WarpOptions, DEFAULT_HOLE_GAP, DEFAULT_REFERENCES, DEFAULT_SAME_SURFACE,
+    PARALLAX_PER_DEPTHINESS,
+};
 pub use references::{reference_frame, ReferenceImages, ReferenceRenderer};
+pub use rgbd::{predicted_shift, RgbdWarp};
+pub use scene::SceneWarp;
 
 /// Where a warp writes.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -12,7 +12,7 @@ use crate::target::SPATIAL_FORMAT;
 /// plane, larger in front of it), 0 where nothing was hit. Bits in R32Uint rather than
 /// R32Float: GL can neither render to nor store into R32Float, and R32Uint does both
 /// everywhere (docs/DESIGN.md §7).
-pub const NEARNESS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Uint;
+pub const REFERENCE_NEARNESS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Uint;
 
 /// The frame of `references` reference views of `frame`: the same camera with R views spread
 /// evenly over the same span, so the outermost references are the outermost views (R = 1: the
@@ -43,7 +43,7 @@ pub fn reference_frame(frame: &Frame, references: u32) -> Result<Frame> {
 }
 
 /// R reference views of one size: colour ([`SPATIAL_FORMAT`]) and nearness
-/// ([`NEARNESS_FORMAT`]) layers, layer j = reference j, each renderable, bindable and storable.
+/// ([`REFERENCE_NEARNESS_FORMAT`]) layers, layer j = reference j, each renderable, bindable and storable.
 pub struct ReferenceImages {
     /// Colour layers (with the depth buffer the rasterising renderers share).
     pub color: ViewLayers,
@@ -69,7 +69,7 @@ impl ReferenceImages {
                 "reference nearness",
                 size,
                 references,
-                NEARNESS_FORMAT,
+                REFERENCE_NEARNESS_FORMAT,
                 usage,
             )?,
         })

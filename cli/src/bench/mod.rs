@@ -1,7 +1,7 @@
 //! `autostereo bench`: single pass (every path and mode), N-pass, single view and the per-view
 //! duplication methods (tiled, layered, MRT) side by side in one process on one adapter, for volumes, point splats and meshes; speed/accuracy trade-offs
 //! against the N-pass high-quality render; what a scene that skips a feature saves. `--report
-//! DIR` writes DIR/BENCHMARKS.md (+ PNG plots with `--features plots`).
+//! DIR` writes DIR/BENCHMARKS.md (+ PNG plots with the `plots` feature).
 
 mod approximations;
 mod plot;
@@ -34,7 +34,7 @@ pub struct BenchArgs {
     /// Print all results as one JSON object on stdout.
     #[arg(long)]
     json: bool,
-    /// Write DIR/BENCHMARKS.md (and DIR/images/bench_*.png when built with `--features plots`).
+    /// Write DIR/BENCHMARKS.md (and DIR/images/bench_*.png when built with the `plots` feature).
     #[arg(long)]
     report: Option<PathBuf>,
     /// Write the report from a saved `--json` output instead of measuring (re-plotting).

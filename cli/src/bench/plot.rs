@@ -1,4 +1,4 @@
-//! PNG plots of the report (`--features plots`: plotters with system fonts). Without the
+//! PNG plots of the report (the `plots` feature: plotters with system fonts). Without the
 //! feature the report is written with its tables only.
 
 /// One named series of (x, y) points.

@@ -49,8 +49,8 @@ pub fn write(dir: &Path, r: &Results) -> Result<()> {
     writeln!(md, "# Benchmarks\n")?;
     writeln!(
         md,
-        "Produced by `cargo run --release --features plots -- {}` in {:.1} min (the full run \
-         states its expected duration when it starts; without `--features plots` the report has \
+        "Produced by `cargo run --release --features autostereo-cli/plots -- {}` in {:.1} min (the full run \
+         states its expected duration when it starts; without the `plots` feature the report has \
          its tables but no plots). The numbers are saved next to this file as `bench_{}.json`; \
          `bench --report DIR --from-json FILE` re-plots them.\n",
         r.command

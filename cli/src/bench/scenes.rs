@@ -14,7 +14,7 @@ use autostereo::render::Method;
 use autostereo::volume::AlphaMode;
 use autostereo::volume::VolumeScene;
 use autostereo::volume::{load, phantom, TransferFunction, Volume};
-use autostereo::warp::{SceneWarpOptions, WarpPath};
+use autostereo::warp::{WarpOptions, WarpPath};
 use autostereo::{AnyRenderer, AnyScene, MeshOptions, PointOptions, RendererOptions};
 use autostereo::{VolumeOptions, VolumePath};
 use glam::Mat4;
@@ -161,7 +161,7 @@ pub const WARP_PER_VIEW: &str = "warp (R = 2, per-view, approximate)";
 /// [`Method::Warp`] on `path`, R = 2.
 fn on_path(path: WarpPath) -> RendererOptions {
     RendererOptions {
-        warp: SceneWarpOptions {
+        warp: WarpOptions {
             path,
             ..Default::default()
         },

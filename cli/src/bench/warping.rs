@@ -6,7 +6,7 @@ use anyhow::Result;
 use autostereo::image_io::compare;
 use autostereo::render::Method;
 use autostereo::timing::FrameTimer;
-use autostereo::warp::{SceneWarpOptions, WarpPath};
+use autostereo::warp::{WarpOptions, WarpPath};
 use autostereo::{AnyRenderer, RendererOptions};
 
 use super::scenes::{self, BenchScene};
@@ -16,7 +16,7 @@ use super::{image, sweep_display, time_frame, Plan};
 type Ctx = autostereo::gpu::GpuContext;
 
 /// The warp of `scene`'s primitive with `warp`.
-fn warp(device: &wgpu::Device, scene: &BenchScene, warp: SceneWarpOptions) -> Result<AnyRenderer> {
+fn warp(device: &wgpu::Device, scene: &BenchScene, warp: WarpOptions) -> Result<AnyRenderer> {
     let options = RendererOptions {
         warp,
         ..RendererOptions::new(Method::Warp)
@@ -51,7 +51,7 @@ pub fn measure(
             let oracle = image(ctx, scene, &mut npass, &frame)?;
             drop(npass);
             for (references, path) in settings(n) {
-                let options = SceneWarpOptions {
+                let options = WarpOptions {
                     references,
                     path,
                     ..Default::default()
@@ -59,7 +59,7 @@ pub fn measure(
                 let mut r = warp(&ctx.device, scene, options)?;
                 let ms = time_frame(ctx, timer, scene, &mut r, &frame, plan.study_frames())?;
                 let d = compare(&image(ctx, scene, &mut r, &frame)?, &oracle)?;
-                let holes = SceneWarpOptions {
+                let holes = WarpOptions {
                     hole_mask: true,
                     ..options
                 };

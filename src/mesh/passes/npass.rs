@@ -16,7 +16,7 @@ use crate::render::Method;
 use crate::render::ViewLayers;
 use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
-use crate::warp::references::{ReferenceImages, ReferenceRenderer, NEARNESS_FORMAT};
+use crate::warp::references::{ReferenceImages, ReferenceRenderer, REFERENCE_NEARNESS_FORMAT};
 
 /// N-pass or single-view mesh renderer. Holds pipelines and lazily sized scratch resources.
 pub struct MeshNPass {
@@ -65,7 +65,10 @@ impl MeshNPass {
         let (entry, targets): (_, &[_]) = if method == Method::Warp {
             (
                 "fs_reference",
-                &[Some(SPATIAL_FORMAT.into()), Some(NEARNESS_FORMAT.into())],
+                &[
+                    Some(SPATIAL_FORMAT.into()),
+                    Some(REFERENCE_NEARNESS_FORMAT.into()),
+                ],
             )
         } else {
             ("fs_main", &[Some(SPATIAL_FORMAT.into())])

@@ -13,7 +13,7 @@ use crate::render::pipeline_cache::ShaderModules;
 use crate::render::specialize::Specialization;
 use crate::render::view_layers::nearest_depth_test;
 use crate::target::SPATIAL_FORMAT;
-use crate::warp::references::NEARNESS_FORMAT;
+use crate::warp::references::REFERENCE_NEARNESS_FORMAT;
 
 /// Invocations per workgroup of `wgsl/points/cover.wgsl`.
 pub(super) const COVER_WORKGROUP: u32 = 64;
@@ -245,7 +245,10 @@ pub(super) fn build(
         cache: None,
     });
     let composite_module = modules.get(device, "points/composite.wgsl")?;
-    let reference_targets = [Some(SPATIAL_FORMAT.into()), Some(NEARNESS_FORMAT.into())];
+    let reference_targets = [
+        Some(SPATIAL_FORMAT.into()),
+        Some(REFERENCE_NEARNESS_FORMAT.into()),
+    ];
     let fragment: (_, &[_]) = match key.geometry {
         Geometry::Reference => ("fs_reference", &reference_targets),
         _ => ("fs_main", &[Some(SPATIAL_FORMAT.into())]),

@@ -111,7 +111,7 @@ impl Output {
                     storage(wgpu::TextureViewDimension::D2Array),
                     storage_of(
                         1,
-                        crate::warp::references::NEARNESS_FORMAT,
+                        crate::warp::references::REFERENCE_NEARNESS_FORMAT,
                         wgpu::TextureViewDimension::D2Array,
                     ),
                 ],

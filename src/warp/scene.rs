@@ -1,12 +1,11 @@
 //! [`SceneWarp`]: reference views through the scene's own renderer, the nearness range of
 //! each of their rows (`wgsl/warp/row_bounds.wgsl`: it bounds the search), then one
-//! full-screen warp pass (`wgsl/warp/warp.wgsl`) straight into the spatial image, or into N
+//! full-screen warp pass (`wgsl/warp/references.wgsl`) straight into the spatial image, or into N
 //! view images first ([`WarpPath::PerView`], Beck's way).
 
-use bytemuck::{Pod, Zeroable};
-
 use super::references::{reference_frame, ReferenceImages, ReferenceRenderer};
-use super::WarpPath;
+use super::uniform::WarpUniform;
+use super::{WarpOptions, WarpPath};
 use crate::error::{Error, Result};
 use crate::frame::{Frame, FrameBinding};
 use crate::render::gpu_buffer::GpuBuffer;
@@ -19,109 +18,19 @@ use crate::render::pipeline::{
 use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 
-/// References when none are asked for: the two outermost views, every other view interpolated
-/// between them.
-pub const DEFAULT_REFERENCES: u32 = 2;
-
-/// Two references blend where their nearness differs by at most this share (2 % of the depth):
-/// they see the same surface. Beyond it the nearer surface wins.
-pub const DEFAULT_SAME_SURFACE: f32 = 0.02;
-
-/// How a scene is warped.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SceneWarpOptions {
-    /// Reference views R (1 ≤ R ≤ N), spread evenly over the views' span.
-    pub references: u32,
-    /// Neighbours warped further apart than this (pixels) straddle a disocclusion
-    /// ([`crate::rgbd::passes::DEFAULT_HOLE_GAP`]).
-    pub hole_gap: f32,
-    /// See [`DEFAULT_SAME_SURFACE`].
-    pub same_surface: f32,
-    /// Write the hole mask instead of colour: 255 on every subpixel that was filled rather
-    /// than seen by a reference.
-    pub hole_mask: bool,
-    /// See [`WarpPath`].
-    pub path: WarpPath,
-}
-
-impl Default for SceneWarpOptions {
-    fn default() -> Self {
-        Self {
-            references: DEFAULT_REFERENCES,
-            hole_gap: crate::rgbd::passes::DEFAULT_HOLE_GAP,
-            same_surface: DEFAULT_SAME_SURFACE,
-            hole_mask: false,
-            path: WarpPath::Direct,
-        }
+/// `options` checked for rendered references: one view everywhere is the RGB-D warp's.
+fn check_options(options: &WarpOptions) -> Result<()> {
+    options.check()?;
+    if let Some(view) = options.view {
+        return Err(Error::invalid(
+            "view",
+            format!(
+                "{view}: one view everywhere is an RGB-D warp's option; a scene's views come \
+                 from its references (the per-view path renders every view's image)"
+            ),
+        ));
     }
-}
-
-impl SceneWarpOptions {
-    /// Check the values (the references against N are checked by `prepare`).
-    pub fn check(&self) -> Result<()> {
-        if !(self.hole_gap.is_finite() && self.hole_gap >= 1.0) {
-            return Err(Error::invalid(
-                "hole gap",
-                format!("{}: at least 1 pixel", self.hole_gap),
-            ));
-        }
-        if !(0.0..=1.0).contains(&self.same_surface) {
-            return Err(Error::invalid(
-                "same surface",
-                format!("{}: a share of the depth in 0…1", self.same_surface),
-            ));
-        }
-        Ok(())
-    }
-}
-
-/// The warp's constants. Keep in sync with `struct ReferenceWarp` in `wgsl/warp/warp.wgsl`.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Pod, Zeroable)]
-pub struct ReferenceWarpUniform {
-    size: [u32; 2],
-    references: u32,
-    fixed_view: u32,
-    parallax: f32,
-    hole_gap: f32,
-    hole_mask: u32,
-    same_surface: f32,
-}
-crate::shader::gpu_layout!(
-    ReferenceWarpUniform,
-    "ReferenceWarp",
-    [
-        size,
-        references,
-        fixed_view,
-        parallax,
-        hole_gap,
-        hole_mask,
-        same_surface
-    ]
-);
-
-impl ReferenceWarpUniform {
-    /// The constants of warping `frame`'s views from `options.references` references, into
-    /// every subpixel's view (`view` = None) or into view `view` everywhere.
-    ///
-    /// A point at eye depth d lands at `x_f = p.x·fd/d + vd·(1 − fd/d)` on the focal plane
-    /// (`MultiViewCamera::project_offset`), so between cameras at vd_r and vd_v it moves by
-    /// `−(vd_v − vd_r)·(n − 1)` with nearness n = fd/d; vd = t·(N−1)/2·e for view position t.
-    fn new(options: &SceneWarpOptions, frame: &Frame, view: Option<u32>) -> Self {
-        let camera = &frame.camera;
-        let half_span = (camera.views as f32 - 1.0) * 0.5 * camera.separation;
-        let pixels_per_unit = frame.size[0] as f32 / camera.focal_window().x;
-        Self {
-            size: frame.size,
-            references: options.references,
-            fixed_view: view.unwrap_or(u32::MAX),
-            parallax: -half_span * pixels_per_unit,
-            hole_gap: options.hole_gap,
-            hole_mask: u32::from(options.hole_mask),
-            same_surface: options.same_surface,
-        }
-    }
+    Ok(())
 }
 
 /// What a [`SceneWarp`] was prepared for.
@@ -135,7 +44,7 @@ struct PreparedFor {
 /// [`crate::render::Method::Warp`] for scenes of type `S`: R reference views rendered by a
 /// [`ReferenceRenderer`] of `S`, then warped into every view.
 pub struct SceneWarp<S: ?Sized> {
-    options: SceneWarpOptions,
+    options: WarpOptions,
     references: Box<dyn ReferenceRenderer<S>>,
     images: Option<ReferenceImages>,
     /// Per reference and row, the nearness range of its surfaces (2 × f32).
@@ -159,9 +68,9 @@ impl<S: ?Sized> SceneWarp<S> {
     pub fn new(
         device: &wgpu::Device,
         references: Box<dyn ReferenceRenderer<S>>,
-        options: SceneWarpOptions,
+        options: WarpOptions,
     ) -> Result<Self> {
-        options.check()?;
+        check_options(&options)?;
         let frame_layout = crate::frame::frame_bind_group_layout(device);
         let array = |binding, sample_type| wgpu::BindGroupLayoutEntry {
             binding,
@@ -207,7 +116,7 @@ impl<S: ?Sized> SceneWarp<S> {
             compilation_options: compilation(&[]),
             cache: None,
         });
-        let module = crate::shader::module(device, "warp/warp.wgsl")?;
+        let module = crate::shader::module(device, "warp/references.wgsl")?;
         let pipeline = fullscreen_pipeline(
             device,
             "reference warp",
@@ -236,7 +145,7 @@ impl<S: ?Sized> SceneWarp<S> {
                 mip_level_count: 1,
                 sample_count: 1,
                 dimension: wgpu::TextureDimension::D2,
-                format: crate::warp::references::NEARNESS_FORMAT,
+                format: crate::warp::references::REFERENCE_NEARNESS_FORMAT,
                 usage: wgpu::TextureUsages::COPY_DST,
                 view_formats: &[],
             }),
@@ -246,13 +155,13 @@ impl<S: ?Sized> SceneWarp<S> {
     }
 
     /// The options frames are warped with.
-    pub fn options(&self) -> SceneWarpOptions {
+    pub fn options(&self) -> WarpOptions {
         self.options
     }
 
     /// Change the options (e.g. the hole mask); takes effect at the next `prepare`.
-    pub fn set_options(&mut self, options: SceneWarpOptions) -> Result<()> {
-        options.check()?;
+    pub fn set_options(&mut self, options: WarpOptions) -> Result<()> {
+        check_options(&options)?;
         self.options = options;
         self.prepared = None;
         Ok(())
@@ -289,7 +198,7 @@ impl<S: ?Sized> SceneWarp<S> {
         view: Option<u32>,
     ) -> wgpu::BindGroup {
         let images = self.images.as_ref().expect("allocated by prepare");
-        let uniform = ReferenceWarpUniform::new(&self.options, frame, view);
+        let uniform = WarpUniform::for_references(&self.options, frame, view);
         let constants = constants_buffer(
             device,
             "reference warp constants",

@@ -1,49 +1,28 @@
 // Reference views → spatial image by backward warping straight into each subpixel's view, no
-// per-view images (src/warp/passes.rs, docs/WARPING.md). R reference views sit evenly over the
+// per-view images (src/warp/scene.rs, docs/WARPING.md). R reference views sit evenly over the
 // views' span (t ∈ [−1, 1]; R = 1: the centre); each subpixel searches the rows of the two
 // references around its view (shared/row_warp.wgsl) and blends them where both see the same
 // surface, else keeps the nearer surface or the one that is seen rather than filled.
 #import shared/frame.wgsl
-#import shared/row_warp.wgsl
-
-// Keep in sync with `ReferenceWarpUniform` in src/warp/passes.rs.
-struct ReferenceWarp {
-    size: vec2<u32>,    // reference views' size (the frame's)
-    references: u32,    // R
-    fixed_view: u32,    // NO_VIEW: each subpixel's view from the mask; else this view
-    parallax: f32,      // shift (pixels) per unit of nearness − 1 per unit of view position
-    hole_gap: f32,      // neighbours warped further apart than this straddle a hole
-    hole_mask: u32,     // 1: write 1 where a subpixel was filled, 0 where it was seen
-    same_surface: f32,  // relative nearness difference under which two references blend
-}
+#import warp/shared/warp.wgsl
+#import warp/shared/row_warp.wgsl
 
 // Bindings read by shared/frame.wgsl.
 @group(0) @binding(0) var<uniform> frame: Frame;
 
 @group(1) @binding(0) var color: texture_2d_array<f32>;
 @group(1) @binding(1) var nearness: texture_2d_array<u32>; // the bits of f32 nearness
-@group(1) @binding(2) var<uniform> warp: ReferenceWarp;
+@group(1) @binding(2) var<uniform> warp: Warp;
 // Per reference and row: the nearness range of its surfaces (warp/row_bounds.wgsl).
 @group(1) @binding(3) var<storage, read> row_bounds: array<vec2<f32>>;
 
-const NO_VIEW: u32 = 0xffffffffu;
-
-// The reads shared/row_warp.wgsl makes.
+// The reads warp/shared/row_warp.wgsl makes.
 fn near_at(layer: u32, x: i32, row: i32) -> f32 {
     return bitcast<f32>(textureLoad(nearness, vec2<i32>(x, row), layer, 0).r);
 }
 
 fn color_at(layer: u32, x: i32, row: i32) -> vec3<f32> {
     return textureLoad(color, vec2<i32>(x, row), layer, 0).rgb;
-}
-
-// Position t ∈ [−1, 1] of view v among the display's N (0 for a single view).
-fn view_position(v: u32) -> f32 {
-    let n = frame.mask.views;
-    if (n <= 1u) {
-        return 0.0;
-    }
-    return 2.0 * f32(v) / f32(n - 1u) - 1.0;
 }
 
 // Position of reference j among the R.
@@ -61,7 +40,7 @@ fn from_reference(j: u32, row: i32, u: f32, t: f32) -> Warped {
     let k = warp.parallax * (t - reference_position(j));
     let bounds = row_bounds[j * warp.size.y + u32(row)];
     if (bounds.x <= bounds.y) {
-        let found = warp_row(j, row, u, k, 1.0, bounds.x, bounds.y, warp.size.x, warp.hole_gap);
+        let found = warp_row(j, row, u, k, warp.focus, bounds.x, bounds.y, warp.size.x, warp.hole_gap);
         if (found.found) {
             return found;
         }

@@ -7,8 +7,8 @@
 // landing nearest u is used, marked filled.
 //
 // The stage defines the reads: `near_at(layer, x, row) -> f32` and
-// `color_at(layer, x, row) -> vec3<f32>` (rgbd/warp.wgsl: one 2D image; warp/warp.wgsl:
-// the layers of the reference views).
+// `color_at(layer, x, row) -> vec3<f32>` (warp/rgbd.wgsl: one 2D image;
+// warp/references.wgsl: the layers of the reference views).
 
 struct Warped {
     color: vec3<f32>,
