@@ -38,7 +38,7 @@ pub enum Error {
     },
     /// An input, or a renderer's per-view images, would need more memory than the budget
     /// (`crate::budget`; on the GPU too: software adapters allocate it from the same RAM).
-    #[error("{what} needs {bytes} bytes, over the memory budget of {budget} bytes (raise it with --max-memory, or autostereo::budget::set_max_memory)")]
+    #[error("{what} needs {bytes} bytes, over the memory budget of {budget} bytes (raise it with budget::set_max_memory)")]
     MemoryBudget {
         /// What would be allocated, in words.
         what: String,

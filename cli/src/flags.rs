@@ -1,5 +1,6 @@
-//! Library errors in the command line's words: the library names a parameter in its own terms
-//! ("sampling step"); here the message also names the flag that sets it (`--step`).
+//! Library errors in the command line's words: the library names a parameter and its advice in
+//! its own terms ("sampling step", "use Visibility::Exact"); here the message also names the
+//! flag that sets the parameter (`--step`) and gives the advice as flags (`--visibility exact`).
 
 /// (library parameter name, the flag that sets it).
 const FLAGS: &[(&str, &str)] = &[
@@ -23,6 +24,17 @@ const FLAGS: &[(&str, &str)] = &[
     ("method", "--method"),
 ];
 
+/// (library term in an error's advice, the command line's words for it).
+const TERMS: &[(&str, &str)] = &[
+    ("Visibility::Exact", "--visibility exact"),
+    ("TileClip::Discard", "--tile-clip discard"),
+    ("VolumePath::RayMarch", "--path compute"),
+    ("VolumePath::Slices", "--path slices"),
+    ("Volume::downsample(2)", "--downsample 2"),
+    ("budget::set_max_memory", "--max-memory"),
+    ("RawSpec", "--raw-dims X,Y,Z and --raw-type"),
+];
+
 /// The flag that sets the library parameter `name`, where one does.
 pub fn flag_of(name: &str) -> Option<&'static str> {
     FLAGS
@@ -44,7 +56,9 @@ pub fn describe(error: &anyhow::Error) -> String {
             _ => cause.to_string(),
         })
         .collect();
-    parts.join(": ")
+    TERMS.iter().fold(parts.join(": "), |text, (term, words)| {
+        text.replace(term, words)
+    })
 }
 
 #[cfg(test)]
@@ -65,5 +79,7 @@ mod tests {
         );
         let plain = anyhow::anyhow!("no such file");
         assert_eq!(describe(&plain), "no such file");
+        let advice = anyhow::anyhow!("X needs Y; use Visibility::Exact");
+        assert_eq!(describe(&advice), "X needs Y; use --visibility exact");
     }
 }

@@ -59,7 +59,7 @@ fn mesh_tiled_and_layered_match_the_npass() {
         let error = MeshTiled::new(&ctx.device, TileClip::ClipDistances)
             .err()
             .unwrap();
-        common::assert_missing_feature(&ctx.device, &error, "--tile-clip discard");
+        common::assert_missing_feature(&ctx.device, &error, "TileClip::Discard");
         vec![TileClip::Discard]
     };
     drop(ctx);

@@ -93,7 +93,7 @@ fn volumes_over_the_memory_budget_are_refused_from_the_header() {
         .unwrap_err()
         .to_string();
     assert!(
-        e.contains("memory budget") && e.contains("--max-memory"),
+        e.contains("memory budget") && e.contains("set_max_memory"),
         "{e}"
     );
     assert!(e.contains("huge.nrrd"), "names the file: {e}");
@@ -178,6 +178,7 @@ fn cli_flags_are_refused_not_clamped_and_failures_leave_no_file() {
         !ok && stderr.contains("memory budget of 1024 bytes"),
         "{stderr}"
     );
+    assert!(stderr.contains("raise it with --max-memory"), "{stderr}");
     let (ok, stderr) = cli(&["volume", "--max-memory", "lots"]);
     assert!(!ok && stderr.contains("not a size"), "{stderr}");
 }

@@ -44,7 +44,7 @@ impl VolumeTexture {
         if let Some(&d) = volume.dims.iter().find(|&&d| d > limit) {
             return Err(Error::LimitExceeded {
                 what: format!(
-                    "volume dimension {d} of {:?} (downsample it, e.g. --downsample 2)",
+                    "volume dimension {d} of {:?} (downsample it, e.g. Volume::downsample(2))",
                     volume.dims
                 ),
                 value: d.into(),

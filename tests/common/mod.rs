@@ -84,7 +84,7 @@ pub fn mesh_single_pass(
     let error = result
         .err()
         .unwrap_or_else(|| panic!("{:?} must fail without its features", options.visibility));
-    assert_missing_feature(device, &error, "--visibility exact");
+    assert_missing_feature(device, &error, "Visibility::Exact");
     None
 }
 

@@ -135,7 +135,8 @@ pub fn load_any(path: &Path) -> Result<Volume> {
         "den" => load_den(path),
         _ => Err(format_error(
             path,
-            "unknown volume format: expected .nrrd, .nhdr or .den (raw files need --raw-dims and --raw-type)",
+            "unknown volume format: expected .nrrd, .nhdr or .den (raw files need their \
+             dimensions and sample type: RawSpec)",
         )),
     }
 }

@@ -76,8 +76,8 @@ impl VolumeSlicer {
         crate::gpu::require_features(
             device,
             wgpu::Features::DUAL_SOURCE_BLENDING,
-            "the proxy-slice volume path (--path slices)",
-            "use --path compute (the ray-marching compute path)",
+            "the proxy-slice volume path (VolumePath::Slices)",
+            "use VolumePath::RayMarch (the ray-marching compute path)",
         )?;
         let resources = VolumeResources::new(device, wgpu::ShaderStages::VERTEX_FRAGMENT);
         let layout = |label, ty| {

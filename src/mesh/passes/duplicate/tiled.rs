@@ -50,7 +50,7 @@ impl TileClip {
                     device,
                     wgpu::Features::CLIP_DISTANCES,
                     "tiled rendering clipped by clip distances",
-                    "--tile-clip discard",
+                    "use TileClip::Discard",
                 )?;
                 Ok(self)
             }

@@ -133,11 +133,10 @@ impl MeshSinglePass {
             device,
             options.visibility.required_features(),
             &format!(
-                "single-pass meshes with --visibility {}",
+                "single-pass meshes with {} visibility",
                 options.visibility.name()
             ),
-            "use --visibility exact (Visibility::Exact), which every adapter runs, exact per \
-             subpixel",
+            "use Visibility::Exact, which every adapter runs, exact per subpixel",
         )?;
         let layouts = Layouts::new(device);
         Ok(Self {
