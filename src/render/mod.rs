@@ -44,6 +44,8 @@ pub use mask_image::MaskImageRenderer;
 pub use method::Method;
 pub use output::{OutputBlit, OUTPUT_FORMATS};
 pub use renderer::Renderer;
-pub(crate) use renderer::{begin_prepare, check_prepared, check_target};
+pub(crate) use renderer::{
+    begin_prepare, check_prepared, check_target, prepared_state, PreparedState,
+};
 pub use stereo::{StereoCompositor, StereoFormat};
 pub use view_layers::ViewLayers;

@@ -99,6 +99,33 @@ pub(crate) fn check_prepared<K: PartialEq + std::fmt::Debug>(
     })
 }
 
+/// Everything a renderer's `prepare` made for one frame, with the key of what it was made for.
+pub(crate) trait PreparedState {
+    /// What a frame needs (size, views, display specialisation…).
+    type Key: PartialEq + std::fmt::Debug;
+    /// What this state was made for.
+    fn key(&self) -> &Self::Key;
+}
+
+/// The state [`Renderer::prepare`] made, if it was made for `wanted`; else `Err(NotPrepared)`.
+/// `encode` reads what `prepare` allocated from here, never through an `expect`.
+pub(crate) fn prepared_state<'a, P: PreparedState>(
+    renderer: &'static str,
+    prepared: &'a Option<P>,
+    wanted: &P::Key,
+) -> Result<&'a P> {
+    match prepared {
+        Some(state) if state.key() == wanted => Ok(state),
+        _ => Err(Error::NotPrepared {
+            renderer,
+            frame: format!("{wanted:?}"),
+            prepared: prepared
+                .as_ref()
+                .map_or_else(|| "nothing".to_string(), |p| format!("{:?}", p.key())),
+        }),
+    }
+}
+
 /// The start of every `encode`: a valid frame, and a target of its size.
 pub(crate) fn check_target(frame: &Frame, target: &SpatialTarget) -> Result<()> {
     frame.validate()?;

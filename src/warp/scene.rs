@@ -15,7 +15,7 @@ use crate::render::pipeline::{
     bind_group_layout, compilation, draw_fullscreen, fullscreen_pipeline, pipeline_layout,
     storage_entry, uniform_entry,
 };
-use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
+use crate::render::{begin_prepare, check_target, prepared_state, PreparedState, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 
 /// `options` checked for rendered references: one view everywhere is the RGB-D warp's.
@@ -41,12 +41,25 @@ struct PreparedFor {
     references: u32,
 }
 
+/// What `prepare` made for a frame: the reference images of its size and R.
+struct Prepared {
+    key: PreparedFor,
+    images: ReferenceImages,
+}
+
+impl PreparedState for Prepared {
+    type Key = PreparedFor;
+
+    fn key(&self) -> &PreparedFor {
+        &self.key
+    }
+}
+
 /// [`crate::render::Method::Warp`] for scenes of type `S`: R reference views rendered by a
 /// [`ReferenceRenderer`] of `S`, then warped into every view.
 pub struct SceneWarp<S: ?Sized> {
     options: WarpOptions,
     references: Box<dyn ReferenceRenderer<S>>,
-    images: Option<ReferenceImages>,
     /// Per reference and row, the nearness range of its surfaces (2 × f32).
     row_bounds: GpuBuffer,
     bounds_layout: wgpu::BindGroupLayout,
@@ -55,7 +68,7 @@ pub struct SceneWarp<S: ?Sized> {
     pipeline: wgpu::RenderPipeline,
     frame: FrameBinding,
     npass: NPassHarness,
-    prepared: Option<PreparedFor>,
+    prepared: Option<Prepared>,
     /// The parallel camera model's crop, recorded last.
     crop: crate::render::camera_crop::CameraCrop,
     /// One texel the nearness is copied into before the row-bounds pass reads it (see
@@ -127,7 +140,6 @@ impl<S: ?Sized> SceneWarp<S> {
         Ok(Self {
             options,
             references,
-            images: None,
             row_bounds: GpuBuffer::new("reference row bounds", wgpu::BufferUsages::STORAGE),
             bounds_layout,
             bounds_pipeline,
@@ -169,7 +181,7 @@ impl<S: ?Sized> SceneWarp<S> {
 
     /// The reference views of the last frame (layer j = reference j), if any.
     pub fn reference_images(&self) -> Option<&ReferenceImages> {
-        self.images.as_ref()
+        self.prepared.as_ref().map(|p| &p.images)
     }
 
     /// One line on what the warp does, for reports.
@@ -194,10 +206,10 @@ impl<S: ?Sized> SceneWarp<S> {
     fn bind_group(
         &self,
         device: &wgpu::Device,
+        images: &ReferenceImages,
         frame: &Frame,
         view: Option<u32>,
     ) -> wgpu::BindGroup {
-        let images = self.images.as_ref().expect("allocated by prepare");
         let uniform = WarpUniform::for_references(&self.options, frame, view);
         let constants = constants_buffer(
             device,
@@ -234,8 +246,7 @@ impl<S: ?Sized> SceneWarp<S> {
     /// from the render pass before: under load the row-bounds pass then read stale nearness
     /// (tests/outputs.rs saw 1.5 % of subpixels off, about one run in eight). A copy waits for
     /// the writes to finish; elsewhere it is one texel.
-    fn settle_references(&self, encoder: &mut wgpu::CommandEncoder) {
-        let images = self.images.as_ref().expect("allocated by prepare");
+    fn settle_references(&self, encoder: &mut wgpu::CommandEncoder, images: &ReferenceImages) {
         encoder.copy_texture_to_texture(
             images.nearness.texture.as_image_copy(),
             self.settle.as_image_copy(),
@@ -248,8 +259,12 @@ impl<S: ?Sized> SceneWarp<S> {
     }
 
     /// Record the row-bounds pass over the references just rendered.
-    fn encode_row_bounds(&self, device: &wgpu::Device, encoder: &mut wgpu::CommandEncoder) {
-        let images = self.images.as_ref().expect("allocated by prepare");
+    fn encode_row_bounds(
+        &self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        images: &ReferenceImages,
+    ) {
         let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("reference row bounds"),
             layout: &self.bounds_layout,
@@ -290,6 +305,8 @@ impl<S: ?Sized> Renderer<S> for SceneWarp<S> {
         scene: &S,
         frame: &Frame,
     ) -> Result<()> {
+        // The images of the last frame, reused where they fit this one.
+        let last = self.prepared.take().map(|p| p.images);
         begin_prepare(device, frame, &mut self.prepared)?;
         frame.check_full_views("warp")?;
         if frame.camera.model == crate::camera::CameraModel::ToeIn {
@@ -305,14 +322,13 @@ impl<S: ?Sized> Renderer<S> for SceneWarp<S> {
         let fits = |i: &ReferenceImages| {
             i.size() == frame.size && i.references() == self.options.references
         };
-        if !self.images.as_ref().is_some_and(fits) {
-            self.images = None; // free before allocating the replacement
-            self.images = Some(ReferenceImages::new(
-                device,
-                frame.size,
-                self.options.references,
-            )?);
-        }
+        let images = match last {
+            Some(images) if fits(&images) => images,
+            last => {
+                drop(last); // free before allocating the replacement
+                ReferenceImages::new(device, frame.size, self.options.references)?
+            }
+        };
         let rows = u64::from(frame.size[1]) * u64::from(self.options.references);
         self.row_bounds.ensure(
             device,
@@ -322,7 +338,10 @@ impl<S: ?Sized> Renderer<S> for SceneWarp<S> {
         if self.options.path == WarpPath::PerView {
             self.npass.prepare(device, frame)?;
         }
-        self.prepared = Some(self.needs(frame));
+        self.prepared = Some(Prepared {
+            key: self.needs(frame),
+            images,
+        });
         Ok(())
     }
 
@@ -335,16 +354,15 @@ impl<S: ?Sized> Renderer<S> for SceneWarp<S> {
         target: &SpatialTarget,
     ) -> Result<()> {
         check_target(frame, target)?;
-        check_prepared("SceneWarp", &self.prepared, &self.needs(frame))?;
+        let images = &prepared_state("SceneWarp", &self.prepared, &self.needs(frame))?.images;
         let references = reference_frame(frame, self.options.references)?;
-        let images = self.images.as_ref().expect("allocated by prepare");
         self.references
             .encode_references(device, encoder, scene, &references, images)?;
-        self.settle_references(encoder);
-        self.encode_row_bounds(device, encoder);
+        self.settle_references(encoder, images);
+        self.encode_row_bounds(device, encoder, images);
         self.frame.write(device, frame);
         if self.options.path == WarpPath::Direct {
-            let group = self.bind_group(device, frame, None);
+            let group = self.bind_group(device, images, frame, None);
             draw_fullscreen(
                 encoder,
                 "reference warp",
@@ -356,7 +374,7 @@ impl<S: ?Sized> Renderer<S> for SceneWarp<S> {
             return Ok(());
         }
         for (v, layer) in self.npass.layers().layer_views.iter().enumerate() {
-            let group = self.bind_group(device, frame, Some(v as u32));
+            let group = self.bind_group(device, images, frame, Some(v as u32));
             draw_fullscreen(
                 encoder,
                 "reference warp (one view)",
