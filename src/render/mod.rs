@@ -9,9 +9,9 @@
 //! - [`quilt`], [`atlas`]: the Looking Glass quilt layout, the atlas the tiled methods render
 //!   into (and quilt files are read into), and its compositing.
 //! - [`ViewLayers`]: the per-view (or per-group) layers those passes render into.
-//! - [`gpu_buffer`]: the one resizable GPU buffer type and the storage-binding limit check;
-//!   `dispatch`: the one compute dispatch splitter.
-//! - pipeline, texture, pass-parameter and specialisation helpers (crate-internal).
+//! - crate-internal: `gpu_buffer` (the one resizable GPU buffer type and the storage-binding
+//!   limit check), `dispatch` (the one compute dispatch splitter), pipeline, texture,
+//!   pass-parameter and specialisation helpers.
 //!
 //! The renderers themselves live with their primitive ([`crate::mesh`], [`crate::points`],
 //! [`crate::volume`], [`crate::rgbd`], [`crate::warp`]); [`crate::RendererOptions`] builds any
@@ -23,7 +23,7 @@ pub(crate) mod camera_crop;
 pub mod composite;
 pub(crate) mod depth_readback;
 pub(crate) mod dispatch;
-pub mod gpu_buffer;
+pub(crate) mod gpu_buffer;
 pub mod mask_image;
 mod method;
 pub(crate) mod npass;
