@@ -33,6 +33,8 @@ const TERMS: &[(&str, &str)] = &[
     ("Volume::downsample(2)", "--downsample 2"),
     ("budget::set_max_memory", "--max-memory"),
     ("RawSpec", "--raw-dims X,Y,Z and --raw-type"),
+    ("QuiltLayout::for_image's grid", "--quilt COLSxROWS"),
+    ("DepthMapOptions::resample", "--depth-resample"),
 ];
 
 /// The flag that sets the library parameter `name`, where one does.

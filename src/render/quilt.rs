@@ -94,7 +94,7 @@ impl QuiltLayout {
                     "quilt",
                     format!(
                         "{name}: no grid; name it …_qs{{cols}}x{{rows}}a{{aspect}}.png (Looking \
-                         Glass's convention) or give the grid (--quilt COLSxROWS)"
+                         Glass's convention) or give the grid (QuiltLayout::for_image's grid)"
                     ),
                 ))
             }

@@ -122,7 +122,7 @@ impl RgbdImage {
                 path: depth.to_path_buf(),
                 reason: format!(
                     "depth map is {}x{}, the colour image {} is {}x{} (resample it with \
-                     --depth-resample, or give maps of one size)",
+                     DepthMapOptions::resample, or give maps of one size)",
                     size[0],
                     size[1],
                     color.display(),
