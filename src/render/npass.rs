@@ -3,7 +3,7 @@
 
 use super::composite::Compositor;
 use super::view_layers::ViewLayers;
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::frame::{Frame, FrameBinding};
 use crate::target::SpatialTarget;
 
@@ -34,9 +34,13 @@ impl NPassHarness {
         Ok(())
     }
 
-    /// The layers (after [`NPassHarness::prepare`]).
-    pub fn layers(&self) -> &ViewLayers {
-        self.layers.as_ref().expect("allocated by prepare")
+    /// The layers [`NPassHarness::prepare`] allocated; `Err(NotPrepared)` before it ran.
+    pub fn layers(&self) -> Result<&ViewLayers> {
+        self.layers.as_ref().ok_or_else(|| Error::NotPrepared {
+            renderer: "the N-pass view layers",
+            frame: "a frame's view layers".to_string(),
+            prepared: "nothing".to_string(),
+        })
     }
 
     /// The layers of the last prepared frame, if any.
@@ -51,8 +55,8 @@ impl NPassHarness {
         encoder: &mut wgpu::CommandEncoder,
         frame: &FrameBinding,
         target: &SpatialTarget,
-    ) {
-        let layers = self.layers();
+    ) -> Result<()> {
+        let layers = self.layers()?;
         self.compositor.encode(
             device,
             encoder,
@@ -61,5 +65,6 @@ impl NPassHarness {
             layers.size(),
             target,
         );
+        Ok(())
     }
 }

@@ -7,7 +7,7 @@
 use std::collections::HashMap;
 use std::hash::Hash;
 
-use crate::error::Result;
+use crate::error::{Error, Result};
 
 /// Shader modules by stage path (`wgsl/…`), each composed and created once.
 #[derive(Default)]
@@ -65,8 +65,16 @@ impl<K: Copy + Eq + Hash, P> PipelineCache<K, P> {
         Ok(&self.built[&key])
     }
 
-    /// The pipelines [`PipelineCache::prepare`] built for `key`.
-    pub fn get(&self, key: &K) -> Option<&P> {
-        self.built.get(key)
+    /// The pipelines [`PipelineCache::prepare`] built for `key`; `Err(NotPrepared)` where it
+    /// built none (encode without the prepare of its frame), never a panic.
+    pub fn get(&self, key: &K) -> Result<&P>
+    where
+        K: std::fmt::Debug,
+    {
+        self.built.get(key).ok_or_else(|| Error::NotPrepared {
+            renderer: self.what,
+            frame: format!("pipelines for {key:?}"),
+            prepared: format!("pipelines for {} other keys", self.built.len()),
+        })
     }
 }

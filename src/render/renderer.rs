@@ -126,6 +126,22 @@ pub(crate) fn prepared_state<'a, P: PreparedState>(
     }
 }
 
+/// What `prepare` made and a renderer keeps in an `Option`, read back by `encode` (or a
+/// helper of it): missing is `Err(NotPrepared)` naming `what`, never a panic.
+pub(crate) trait Made<T> {
+    fn made(&self, what: &'static str) -> Result<&T>;
+}
+
+impl<T> Made<T> for Option<T> {
+    fn made(&self, what: &'static str) -> Result<&T> {
+        self.as_ref().ok_or_else(|| Error::NotPrepared {
+            renderer: what,
+            frame: "this frame".to_string(),
+            prepared: "nothing".to_string(),
+        })
+    }
+}
+
 /// The start of every `encode`: a valid frame, and a target of its size.
 pub(crate) fn check_target(frame: &Frame, target: &SpatialTarget) -> Result<()> {
     frame.validate()?;

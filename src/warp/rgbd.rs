@@ -169,7 +169,7 @@ impl Renderer<RgbdScene> for RgbdWarp {
             );
             return Ok(());
         }
-        for (v, layer) in self.npass.layers().layer_views.iter().enumerate() {
+        for (v, layer) in self.npass.layers()?.layer_views.iter().enumerate() {
             let options = WarpOptions {
                 view: Some(v as u32),
                 ..self.options
@@ -183,7 +183,7 @@ impl Renderer<RgbdScene> for RgbdWarp {
                 layer,
             );
         }
-        self.npass.composite(device, encoder, &self.frame, target);
+        self.npass.composite(device, encoder, &self.frame, target)?;
         Ok(())
     }
 }

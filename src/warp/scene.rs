@@ -373,7 +373,7 @@ impl<S: ?Sized> Renderer<S> for SceneWarp<S> {
             self.crop.encode(device, encoder, frame, target);
             return Ok(());
         }
-        for (v, layer) in self.npass.layers().layer_views.iter().enumerate() {
+        for (v, layer) in self.npass.layers()?.layer_views.iter().enumerate() {
             let group = self.bind_group(device, images, frame, Some(v as u32));
             draw_fullscreen(
                 encoder,
@@ -383,7 +383,7 @@ impl<S: ?Sized> Renderer<S> for SceneWarp<S> {
                 layer,
             );
         }
-        self.npass.composite(device, encoder, &self.frame, target);
+        self.npass.composite(device, encoder, &self.frame, target)?;
         self.crop.encode(device, encoder, frame, target);
         Ok(())
     }

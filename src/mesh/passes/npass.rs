@@ -14,7 +14,7 @@ use crate::render::texture::{cached_texture_2d, Texture2d};
 use crate::render::view_layers::{nearest_depth_test, DEPTH_FORMAT};
 use crate::render::Method;
 use crate::render::ViewLayers;
-use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
+use crate::render::{begin_prepare, check_prepared, check_target, Made, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 use crate::warp::references::{ReferenceImages, ReferenceRenderer, REFERENCE_NEARNESS_FORMAT};
 
@@ -126,11 +126,11 @@ impl MeshNPass {
         target: &SpatialTarget,
     ) -> Result<()> {
         self.write_frame_views(device, &frame.for_view_images());
-        let layers = self.npass.layers();
+        let layers = self.npass.layers()?;
         for (i, layer) in layers.layer_views.iter().enumerate() {
             self.draw(encoder, mesh, frame, i as u32, layer, &layers.depth_view);
         }
-        self.npass.composite(device, encoder, &self.frame, target);
+        self.npass.composite(device, encoder, &self.frame, target)?;
         self.crop.encode(device, encoder, frame, target);
         Ok(())
     }
@@ -149,8 +149,7 @@ impl MeshNPass {
         self.write_views(device, &[0.0], |vd| camera.view_uniform(vd));
         let depth = self
             .single_view_depth
-            .as_ref()
-            .expect("allocated by prepare")
+            .made("MeshNPass single-view depth")?
             .view
             .clone();
         self.draw(encoder, mesh, frame, 0, &target.view, &depth);

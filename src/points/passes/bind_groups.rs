@@ -2,7 +2,9 @@
 //! made once per frame for the ordinary and the duplicated encode alike.
 
 use super::PointSplatter;
+use crate::error::Result;
 use crate::points::SplatScene;
+use crate::render::Made;
 
 /// The bind groups of one frame's passes.
 pub(super) struct FrameGroups {
@@ -14,9 +16,13 @@ pub(super) struct FrameGroups {
 
 impl PointSplatter {
     /// This frame's bind groups (after `prepare` and the frame's `params.write`).
-    pub(super) fn frame_groups(&self, device: &wgpu::Device, scene: &SplatScene) -> FrameGroups {
-        let scratch = self.scratch.as_ref().expect("ensured");
-        let images = &self.images.as_ref().expect("ensured").layers;
+    pub(super) fn frame_groups(
+        &self,
+        device: &wgpu::Device,
+        scene: &SplatScene,
+    ) -> Result<FrameGroups> {
+        let scratch = self.scratch.made("PointSplatter scratch")?;
+        let images = &self.images.made("PointSplatter group images")?.layers;
         let group = |label, layout, entries: &[wgpu::BindGroupEntry]| {
             device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: Some(label),
@@ -55,11 +61,11 @@ impl PointSplatter {
             &self.layouts.params,
             &[entry(0, self.params.binding())],
         );
-        FrameGroups {
+        Ok(FrameGroups {
             cover: cover_group,
             quad: quad_group,
             images: images_group,
             params: params_group,
-        }
+        })
     }
 }

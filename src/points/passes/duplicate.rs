@@ -26,6 +26,7 @@ use crate::render::pipeline::{
 use crate::render::quilt::QuiltLayout;
 use crate::render::specialize::Specialization;
 use crate::render::view_layers::layer_range;
+use crate::render::Made;
 use crate::render::Method;
 use crate::target::SpatialTarget;
 
@@ -149,18 +150,18 @@ impl PointSplatter {
         self.params.write(device, &passes);
         let spec = Specialization::of(frame);
         let pipeline = |geometry| SplatPipelineKey { spec, geometry };
-        let scratch = self.scratch.as_ref().expect("ensured");
-        let images = &self.images.as_ref().expect("ensured").layers;
+        let scratch = self.scratch.made("PointSplatter scratch")?;
+        let images = &self.images.made("PointSplatter group images")?.layers;
         let FrameGroups {
             cover: cover_group,
             quad: quad_group,
             images: images_group,
             params: params_group,
-        } = self.frame_groups(device, scene);
+        } = self.frame_groups(device, scene)?;
         // The cover pass only transforms the splats here: each copy's quad is the vertex
         // stage's.
         let any = self.geometries(frame)[0];
-        let cover = &self.pipelines.get(&pipeline(any)).expect("built").cover;
+        let cover = &self.pipelines.get(&pipeline(any))?.cover;
         self.fence.encode(
             device,
             encoder,
@@ -178,13 +179,10 @@ impl PointSplatter {
             let dispatch = dispatch_2d(device, scene.count.div_ceil(COVER_WORKGROUP));
             pass.dispatch_workgroups(dispatch[0], dispatch[1], 1);
         }
-        let composite = &self.pipelines.get(&pipeline(any)).expect("built").composite;
+        let composite = &self.pipelines.get(&pipeline(any))?.composite;
         if let Chunks::Bands(bands) = &self.chunks {
-            let atlas = self.atlas.as_ref().expect("allocated by prepare");
-            let geometry = &self
-                .pipelines
-                .get(&pipeline(Geometry::Tiled))
-                .expect("built");
+            let atlas = self.atlas.made("PointSplatter atlas")?;
+            let geometry = self.pipelines.get(&pipeline(Geometry::Tiled))?;
             for (i, band) in bands.iter().enumerate() {
                 let quilt = band.layout.uniform_buffer(device, band.layout.uniform());
                 let quilt_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
@@ -225,7 +223,9 @@ impl PointSplatter {
                 pass.set_bind_group(2, &params_group, &offset);
                 pass.draw(0..3, 0..1);
             }
-            let compositor = self.atlas_compositor.as_ref().expect("tiled");
+            let compositor = self
+                .atlas_compositor
+                .made("PointSplatter atlas compositor")?;
             compositor.encode(
                 device,
                 encoder,
@@ -239,12 +239,8 @@ impl PointSplatter {
         let Chunks::Runs(runs) = &self.chunks else {
             unreachable!("tiled and layered plan their chunks in prepare")
         };
-        let depth = &self
-            .layer_depth
-            .as_ref()
-            .expect("allocated by prepare")
-            .texture;
-        let npass = self.npass.as_ref().expect("layered keeps view layers");
+        let depth = &self.layer_depth.made("PointSplatter layer depth")?.texture;
+        let npass = self.npass.made("PointSplatter view layers")?;
         let mut next_pass = 1; // pass 0: the cover pass
         for run in runs {
             let batches = run_batches(run, self.max_per_pass);
@@ -266,7 +262,7 @@ impl PointSplatter {
                         },
                     );
                     let key = pipeline(Geometry::Layered { layers });
-                    pass.set_pipeline(&self.pipelines.get(&key).expect("built").geometry);
+                    pass.set_pipeline(&self.pipelines.get(&key)?.geometry);
                     pass.set_bind_group(0, &self.frame.bind_group, &[]);
                     pass.set_bind_group(1, &quad_group, &[]);
                     let offset = self.params.offset(next_pass + b);
@@ -276,7 +272,7 @@ impl PointSplatter {
             }
             next_pass += batches.len();
             for v in run.clone() {
-                let layer = &npass.layers().layer_views[v as usize];
+                let layer = &npass.layers()?.layer_views[v as usize];
                 let mut pass =
                     begin_pass(encoder, "splat composite", cleared(layer, [0.0; 4]), None);
                 pass.set_pipeline(composite);
@@ -287,7 +283,7 @@ impl PointSplatter {
                 next_pass += 1;
             }
         }
-        npass.composite(device, encoder, &self.frame, target);
+        npass.composite(device, encoder, &self.frame, target)?;
         Ok(())
     }
 }

@@ -450,7 +450,7 @@ impl Renderer<SplatScene> for PointSplatter {
         if matches!(self.path, Method::Tiled | Method::Layered) {
             self.encode_duplicated(device, encoder, scene, &own, target)?;
         } else {
-            self.encode_views(device, encoder, scene, &own, SplatOutput::Target(target));
+            self.encode_views(device, encoder, scene, &own, SplatOutput::Target(target))?;
         }
         // The single view is the centre camera on every subpixel: nothing of it is cropped.
         if self.path != Method::SingleView {

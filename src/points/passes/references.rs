@@ -38,8 +38,7 @@ impl ReferenceRenderer<SplatScene> for PointSplatter {
             scene,
             frame,
             SplatOutput::References(images),
-        );
-        Ok(())
+        )
     }
 
     fn depth_meaning(&self) -> &'static str {

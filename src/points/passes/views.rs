@@ -4,11 +4,13 @@
 use super::group_images::draw_groups;
 use super::pipelines::{SplatPipelineKey, COVER_WORKGROUP};
 use super::{FrameGroups, PointSplatter};
+use crate::error::Result;
 use crate::frame::Frame;
 use crate::points::SplatScene;
 use crate::render::dispatch::dispatch_2d;
 use crate::render::pipeline::{begin_pass_to, cleared, PassTargets};
 use crate::render::specialize::Specialization;
+use crate::render::Made;
 use crate::target::SpatialTarget;
 use crate::warp::references::ReferenceImages;
 
@@ -29,7 +31,7 @@ impl PointSplatter {
         scene: &SplatScene,
         frame: &Frame,
         output: SplatOutput<'_>,
-    ) {
+    ) -> Result<()> {
         let passes = self.passes(frame, scene.groups());
         self.frame.write(device, frame);
         self.params.write(device, &passes);
@@ -37,15 +39,15 @@ impl PointSplatter {
             spec: Specialization::of(frame),
             geometry: self.geometries(frame)[0],
         };
-        let pipelines = self.pipelines.get(&key).expect("built by prepare");
-        let scratch = self.scratch.as_ref().expect("ensured");
-        let images = &self.images.as_ref().expect("ensured").layers;
+        let pipelines = self.pipelines.get(&key)?;
+        let scratch = self.scratch.made("PointSplatter scratch")?;
+        let images = &self.images.made("PointSplatter group images")?.layers;
         let FrameGroups {
             cover: cover_group,
             quad: quad_group,
             images: images_group,
             params: params_group,
-        } = self.frame_groups(device, scene);
+        } = self.frame_groups(device, scene)?;
         let workgroups = scene.count.div_ceil(COVER_WORKGROUP);
         let dispatch = dispatch_2d(device, workgroups);
         for (i, _) in passes.iter().enumerate() {
@@ -85,7 +87,7 @@ impl PointSplatter {
                     Some(cleared(&images.nearness.layer_views[i], [0.0; 4])),
                 ],
                 (SplatOutput::Target(_), Some(npass)) => {
-                    vec![Some(cleared(&npass.layers().layer_views[i], [0.0; 4]))]
+                    vec![Some(cleared(&npass.layers()?.layer_views[i], [0.0; 4]))]
                 }
                 (SplatOutput::Target(target), None) => vec![Some(cleared(&target.view, [0.0; 4]))],
             };
@@ -103,7 +105,8 @@ impl PointSplatter {
             pass.draw(0..3, 0..1);
         }
         if let (Some(npass), SplatOutput::Target(target)) = (&self.npass, output) {
-            npass.composite(device, encoder, &self.frame, target);
+            npass.composite(device, encoder, &self.frame, target)?;
         }
+        Ok(())
     }
 }

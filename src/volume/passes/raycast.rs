@@ -18,7 +18,7 @@ use crate::render::quilt::QuiltLayout;
 use crate::render::specialize::Specialization;
 use crate::render::Method;
 use crate::render::ViewLayers;
-use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
+use crate::render::{begin_prepare, check_prepared, check_target, Made, Renderer};
 use crate::target::SpatialTarget;
 use crate::volume::{VolumeScene, VolumeSettings};
 
@@ -394,7 +394,7 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
                 .map(|i| params(false, camera.view_offset(i)))
                 .collect(),
         };
-        let volume_group = self.resources.bind(device, scene, frame, &dispatches);
+        let volume_group = self.resources.bind(device, scene, frame, &dispatches)?;
         let key = RaycastPipelineKey::from(PreparedFor::of(&self.settings, frame, self.method));
         let output = |resources: &[wgpu::BindingResource]| {
             let entries: Vec<_> = resources
@@ -415,16 +415,16 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         // (output group, views in the dispatch's z) per dispatch.
         let outputs: Vec<(wgpu::BindGroup, u32)> = match (&self.npass, &self.tiled) {
             (_, Some(tiled)) => {
-                let atlas = tiled.atlas.as_ref().expect("allocated by prepare");
+                let atlas = tiled.atlas.made("VolumeRaycaster atlas")?;
                 let quilt = atlas.layout.uniform_buffer(device, atlas.layout.uniform());
                 let group = output(&[view(&atlas.color.view), quilt.as_entire_binding()]);
                 vec![(group, camera.views)]
             }
             (Some(npass), _) if self.method == Method::Layered => {
-                vec![(output(&[view(&npass.layers().array_view)]), camera.views)]
+                vec![(output(&[view(&npass.layers()?.array_view)]), camera.views)]
             }
             (Some(npass), _) => npass
-                .layers()
+                .layers()?
                 .layer_views
                 .iter()
                 .map(|layer| (output(&[view(layer)]), 1))
@@ -436,7 +436,7 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
                 label: Some("volume raycast"),
                 timestamp_writes: None,
             });
-            pass.set_pipeline(self.pipelines.get(&key).expect("built by prepare"));
+            pass.set_pipeline(self.pipelines.get(&key)?);
             pass.set_bind_group(0, &self.resources.frame.bind_group, &[]);
             for (i, (output_group, views)) in outputs.iter().enumerate() {
                 let offset = self.resources.params.offset(i);
@@ -447,10 +447,10 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
             }
         }
         if let Some(npass) = &self.npass {
-            npass.composite(device, encoder, &self.resources.frame, target);
+            npass.composite(device, encoder, &self.resources.frame, target)?;
         }
         if let Some(tiled) = &self.tiled {
-            let atlas = tiled.atlas.as_ref().expect("allocated by prepare");
+            let atlas = tiled.atlas.made("VolumeRaycaster atlas")?;
             tiled.compositor.encode(
                 device,
                 encoder,

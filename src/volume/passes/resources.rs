@@ -9,6 +9,7 @@ use glam::{Mat3, Mat4, Vec3};
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
 use crate::render::pass_params::PassParams;
+use crate::render::Made;
 use crate::volume::{
     EmptyDistanceTexture, PreintegrationTable, PreintegrationTexture, TransferFunction,
 };
@@ -234,22 +235,20 @@ impl VolumeResources {
         scene: &VolumeScene,
         frame: &Frame,
         dispatches: &[VolumeParams],
-    ) -> wgpu::BindGroup {
+    ) -> Result<wgpu::BindGroup> {
         self.frame.write(device, frame);
         self.params.write(device, dispatches);
         let table = &self
             .table
-            .as_ref()
-            .expect("uploaded by prepare")
+            .made("the volume's pre-integration table")?
             .texture
             .view;
         let distances = &self
             .distances
-            .as_ref()
-            .expect("uploaded by prepare")
+            .made("the volume's empty-space distances")?
             .texture
             .view;
-        device.create_bind_group(&wgpu::BindGroupDescriptor {
+        Ok(device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("volume"),
             layout: &self.volume_layout,
             entries: &[
@@ -274,6 +273,6 @@ impl VolumeResources {
                     resource: wgpu::BindingResource::TextureView(distances),
                 },
             ],
-        })
+        }))
     }
 }

@@ -10,7 +10,6 @@ use super::raycast::{PreparedFor, VolumeEncode};
 use super::resources::VolumeResources;
 use crate::error::{Error, Result};
 use crate::frame::Frame;
-use crate::render::begin_prepare;
 use crate::render::pipeline::{
     begin_pass, cleared, compilation, draw_fullscreen, fullscreen_pipeline,
 };
@@ -18,6 +17,7 @@ use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
 use crate::render::texture::{cached_texture_2d, Texture2d};
 use crate::render::Renderer;
+use crate::render::{begin_prepare, Made};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 use crate::volume::{VolumeScene, VolumeSettings};
 
@@ -322,7 +322,7 @@ impl Renderer<VolumeScene> for VolumeSlicer {
         .check(scene, frame, target)?;
         let spec = Specialization::of(frame);
         let params = VolumeResources::params(scene, &self.settings, frame, true, 0.0);
-        let volume_group = self.resources.bind(device, scene, frame, &[params]);
+        let volume_group = self.resources.bind(device, scene, frame, &[params])?;
         let rects = slices(scene, self.settings.step_length(scene), frame);
         // A buffer of this frame's own (src/render/pass_params.rs), never empty.
         let mut bytes = bytemuck::cast_slice::<_, u8>(&rects).to_vec();
@@ -341,17 +341,13 @@ impl Renderer<VolumeScene> for VolumeSlicer {
                 resource: buffer.as_entire_binding(),
             }],
         });
-        let accumulation = &self
-            .accumulation
-            .as_ref()
-            .expect("allocated by prepare")
-            .view;
+        let accumulation = &self.accumulation.made("VolumeSlicer accumulation")?.view;
         {
             // Cleared to the background: "over" blending then composites every channel over it
             // with that channel's own α.
             let color = cleared(accumulation, frame.background);
             let mut pass = begin_pass(encoder, "volume slices", color, None);
-            pass.set_pipeline(self.pipelines.get(&spec).expect("built by prepare"));
+            pass.set_pipeline(self.pipelines.get(&spec)?);
             pass.set_bind_group(0, &self.resources.frame.bind_group, &[]);
             pass.set_bind_group(1, &volume_group, &[0]);
             pass.set_bind_group(2, &slices_group, &[]);

@@ -14,7 +14,7 @@ use crate::render::npass::NPassHarness;
 use crate::render::pipeline::{begin_pass_to, cleared, multiview_mask, PassTargets};
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::view_layers::{depth_array, layer_range};
-use crate::render::{begin_prepare, check_prepared, check_target, Method, Renderer};
+use crate::render::{begin_prepare, check_prepared, check_target, Made, Method, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 
 /// The layered mesh renderer: multiview where the adapter has it, else one pass per layer.
@@ -129,8 +129,8 @@ impl Multiview {
         check_prepared("MeshLayered", &self.prepared, &PreparedFor::of(frame))?;
         self.frame.write(device, &frame.for_view_images());
         let BoundBatches { passes, group } = self.views.bind(device, &frame.camera);
-        let layers = &self.npass.layers().texture;
-        let depth = &self.depth.as_ref().expect("allocated by prepare").texture;
+        let layers = &self.npass.layers()?.texture;
+        let depth = &self.depth.made("MeshLayered depth")?.texture;
         for (i, range) in passes.iter().enumerate() {
             let count = range.len() as u32;
             let color = layer_range(layers, range.start, count);
@@ -145,12 +145,12 @@ impl Multiview {
                     multiview_mask: multiview_mask(count),
                 },
             );
-            pass.set_pipeline(self.pipelines.get(&count).expect("built by prepare"));
+            pass.set_pipeline(self.pipelines.get(&count)?);
             pass.set_bind_group(0, &self.frame.bind_group, &[]);
             pass.set_bind_group(1, &group, &[self.views.offset(i)]);
             draw_mesh(&mut pass, mesh, 1);
         }
-        self.npass.composite(device, encoder, &self.frame, target);
+        self.npass.composite(device, encoder, &self.frame, target)?;
         self.crop.encode(device, encoder, frame, target);
         Ok(())
     }

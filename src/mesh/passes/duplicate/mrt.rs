@@ -111,7 +111,7 @@ impl Renderer<MeshBuffers> for MeshMrt {
         check_prepared("MeshMrt", &self.prepared, &PreparedFor::of(frame))?;
         self.frame.write(device, &frame.for_view_images());
         let BoundBatches { passes, group } = self.views.bind(device, &frame.camera);
-        let layers = self.npass.layers();
+        let layers = self.npass.layers()?;
         for (i, range) in passes.iter().enumerate() {
             let colors: Vec<_> = layers.layer_views[range.start as usize..range.end as usize]
                 .iter()
@@ -128,12 +128,12 @@ impl Renderer<MeshBuffers> for MeshMrt {
                 },
             );
             let targets = range.len() as u32;
-            pass.set_pipeline(self.pipelines.get(&targets).expect("built by prepare"));
+            pass.set_pipeline(self.pipelines.get(&targets)?);
             pass.set_bind_group(0, &self.frame.bind_group, &[]);
             pass.set_bind_group(1, &group, &[self.views.offset(i)]);
             draw_mesh(&mut pass, mesh, targets);
         }
-        self.npass.composite(device, encoder, &self.frame, target);
+        self.npass.composite(device, encoder, &self.frame, target)?;
         self.crop.encode(device, encoder, frame, target);
         Ok(())
     }

@@ -12,7 +12,7 @@ use crate::render::pipeline::{
     begin_pass_to, bind_group_layout, cleared, pipeline_layout, uniform_entry, PassTargets,
 };
 use crate::render::quilt::QuiltLayout;
-use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
+use crate::render::{begin_prepare, check_prepared, check_target, Made, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 
 /// How a copy is kept inside its tile.
@@ -138,7 +138,7 @@ impl Renderer<MeshBuffers> for MeshTiled {
         check_target(frame, target)?;
         check_prepared("MeshTiled", &self.prepared, &PreparedFor::of(frame))?;
         self.frame.write(device, &frame.for_view_images());
-        let atlas = self.atlas.as_ref().expect("allocated by prepare");
+        let atlas = self.atlas.made("MeshTiled atlas")?;
         let views = views_buffer(device, &frame.camera);
         let quilt = atlas.layout.uniform_buffer(device, atlas.layout.uniform());
         let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
@@ -156,7 +156,7 @@ impl Renderer<MeshBuffers> for MeshTiled {
             ],
         });
         {
-            let depth = &atlas.depth.as_ref().expect("tiled atlases have depth").view;
+            let depth = &atlas.depth.made("MeshTiled atlas depth")?.view;
             // The depth is kept: it is each view's depth map (the MRT test's oracle).
             let mut pass = begin_pass_to(
                 encoder,

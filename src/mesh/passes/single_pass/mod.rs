@@ -210,7 +210,7 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
         check_prepared("MeshSinglePass", &self.prepared, &key)?;
         let (spec, triangles) = (key.spec, key.triangles);
         self.frame.write(device, frame);
-        let pipelines = self.pipelines.get(&spec).expect("built by prepare");
+        let pipelines = self.pipelines.get(&spec)?;
         let groups = self
             .scratch
             .bind_groups(device, &self.layouts, self.options.visibility, mesh);

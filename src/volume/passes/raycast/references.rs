@@ -47,7 +47,7 @@ impl ReferenceRenderer<VolumeScene> for VolumeRaycaster {
         };
         encode.check_current(scene)?;
         let params = VolumeResources::params(scene, &self.settings, frame, false, 0.0);
-        let volume_group = self.resources.bind(device, scene, frame, &[params]);
+        let volume_group = self.resources.bind(device, scene, frame, &[params])?;
         let output_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("volume reference views"),
             layout: &self.output_layout,
@@ -67,7 +67,7 @@ impl ReferenceRenderer<VolumeScene> for VolumeRaycaster {
             label: Some("volume reference views"),
             timestamp_writes: None,
         });
-        pass.set_pipeline(self.pipelines.get(&key).expect("built by prepare"));
+        pass.set_pipeline(self.pipelines.get(&key)?);
         pass.set_bind_group(0, &self.resources.frame.bind_group, &[]);
         pass.set_bind_group(1, &volume_group, &[self.resources.params.offset(0)]);
         pass.set_bind_group(2, &output_group, &[]);
