@@ -45,7 +45,7 @@ pub use method::Method;
 pub use output::{OutputBlit, OUTPUT_FORMATS};
 pub use renderer::Renderer;
 pub(crate) use renderer::{
-    begin_prepare, check_prepared, check_target, prepared_state, Made, PreparedState,
+    begin_prepare, check_prepared, check_target, prepared_state, Made, Prepared, PreparedState,
 };
 pub use stereo::{StereoCompositor, StereoFormat};
 pub use view_layers::ViewLayers;

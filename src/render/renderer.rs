@@ -107,6 +107,20 @@ pub(crate) trait PreparedState {
     fn key(&self) -> &Self::Key;
 }
 
+/// What `prepare` made for one frame (`made`: an atlas, a depth array…) with that frame's key.
+pub(crate) struct Prepared<K, R> {
+    pub key: K,
+    pub made: R,
+}
+
+impl<K: PartialEq + std::fmt::Debug, R> PreparedState for Prepared<K, R> {
+    type Key = K;
+
+    fn key(&self) -> &K {
+        &self.key
+    }
+}
+
 /// The state [`Renderer::prepare`] made, if it was made for `wanted`; else `Err(NotPrepared)`.
 /// `encode` reads what `prepare` allocated from here, never through an `expect`.
 pub(crate) fn prepared_state<'a, P: PreparedState>(

@@ -163,42 +163,42 @@ pub(crate) struct DepthArray {
 }
 
 /// A depth array of `layers` layers of `size` (multiview passes: one depth layer per view
-/// layer), reusing `slot` when it already fits.
-pub(crate) fn depth_array<'a>(
-    slot: &'a mut Option<DepthArray>,
+/// layer): `last` where it already fits, else a new one (`last` freed first).
+pub(crate) fn depth_array(
+    last: Option<DepthArray>,
     device: &wgpu::Device,
     size: [u32; 2],
     layers: u32,
-) -> Result<&'a wgpu::Texture> {
+) -> Result<DepthArray> {
     let fits = |d: &DepthArray| {
         let d = &d.texture;
         [d.width(), d.height()] == size && d.depth_or_array_layers() == layers
     };
-    if !slot.as_ref().is_some_and(fits) {
-        *slot = None; // free before allocating the replacement
-        let bytes = u64::from(size[0]) * u64::from(size[1]) * u64::from(layers) * 4;
-        let what = || format!("{layers} depth layers of {}x{}", size[0], size[1]);
-        let charge = crate::budget::charge_gpu(what, bytes)?;
-        let texture = device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("multiview depth"),
-            size: wgpu::Extent3d {
-                width: size[0],
-                height: size[1],
-                depth_or_array_layers: layers,
-            },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: DEPTH_FORMAT,
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
-            view_formats: &[],
-        });
-        *slot = Some(DepthArray {
-            texture,
-            _charge: charge,
-        });
+    match last {
+        Some(depth) if fits(&depth) => return Ok(depth),
+        last => drop(last), // free before allocating the replacement
     }
-    Ok(&slot.as_ref().expect("allocated above").texture)
+    let bytes = u64::from(size[0]) * u64::from(size[1]) * u64::from(layers) * 4;
+    let what = || format!("{layers} depth layers of {}x{}", size[0], size[1]);
+    let charge = crate::budget::charge_gpu(what, bytes)?;
+    let texture = device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("multiview depth"),
+        size: wgpu::Extent3d {
+            width: size[0],
+            height: size[1],
+            depth_or_array_layers: layers,
+        },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: DEPTH_FORMAT,
+        usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+        view_formats: &[],
+    });
+    Ok(DepthArray {
+        texture,
+        _charge: charge,
+    })
 }
 
 /// Layers `first .. first + count` of `texture` as one array view (a multiview attachment).

@@ -362,12 +362,10 @@ impl PointSplatter {
         if self.path == Method::Layered {
             let deepest = self.layer_batches().iter().map(|r| r.len()).max();
             let layers = deepest.unwrap_or(1) as u32;
-            crate::render::view_layers::depth_array(
-                &mut self.layer_depth,
-                device,
-                frame.size,
-                layers,
-            )?;
+            let last = self.layer_depth.take();
+            self.layer_depth = Some(crate::render::view_layers::depth_array(
+                last, device, frame.size, layers,
+            )?);
         }
         for geometry in self.geometries(frame) {
             let key = SplatPipelineKey {

@@ -14,7 +14,7 @@ use crate::render::npass::NPassHarness;
 use crate::render::pipeline::{begin_pass_to, cleared, multiview_mask, PassTargets};
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::view_layers::{depth_array, layer_range};
-use crate::render::{begin_prepare, check_prepared, check_target, Made, Method, Renderer};
+use crate::render::{begin_prepare, check_target, prepared_state, Method, Prepared, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 
 /// The layered mesh renderer: multiview where the adapter has it, else one pass per layer.
@@ -70,9 +70,8 @@ struct Multiview {
     /// By layers per pass.
     pipelines: PipelineCache<u32, wgpu::RenderPipeline>,
     npass: NPassHarness,
-    /// One depth layer per layer of a pass.
-    depth: Option<crate::render::view_layers::DepthArray>,
-    prepared: Option<PreparedFor>,
+    /// The prepared frame's depth array: one depth layer per layer of a pass.
+    prepared: Option<Prepared<PreparedFor, crate::render::view_layers::DepthArray>>,
     /// The parallel camera model's crop, recorded last.
     crop: crate::render::camera_crop::CameraCrop,
 }
@@ -92,18 +91,18 @@ impl Multiview {
             pipelines: PipelineCache::new("mesh layered"),
             npass: NPassHarness::new(device, &frame_layout)?,
             frame: FrameBinding::new(device, &frame_layout),
-            depth: None,
             prepared: None,
             crop: crate::render::camera_crop::CameraCrop::new(device)?,
         })
     }
 
     fn prepare(&mut self, device: &wgpu::Device, frame: &Frame) -> Result<()> {
+        let last = self.prepared.take().map(|p| p.made);
         begin_prepare(device, frame, &mut self.prepared)?;
         self.npass.prepare(device, frame)?;
         let passes = batches(frame.camera.views, self.views.max_per_pass);
         let deepest = passes.iter().map(|r| r.len() as u32).max().unwrap_or(1);
-        depth_array(&mut self.depth, device, frame.view_size(), deepest)?;
+        let depth = depth_array(last, device, frame.view_size(), deepest)?;
         for layers in passes.iter().map(|r| r.len() as u32) {
             let layout = &self.layout;
             self.pipelines.prepare(device, layers, |modules| {
@@ -113,7 +112,10 @@ impl Multiview {
                 mesh_pipeline(device, "mesh layered", &module, layout, &targets, mask)
             })?;
         }
-        self.prepared = Some(PreparedFor::of(frame));
+        self.prepared = Some(Prepared {
+            key: PreparedFor::of(frame),
+            made: depth,
+        });
         Ok(())
     }
 
@@ -126,11 +128,12 @@ impl Multiview {
         target: &SpatialTarget,
     ) -> Result<()> {
         check_target(frame, target)?;
-        check_prepared("MeshLayered", &self.prepared, &PreparedFor::of(frame))?;
+        let depth = &prepared_state("MeshLayered", &self.prepared, &PreparedFor::of(frame))?
+            .made
+            .texture;
         self.frame.write(device, &frame.for_view_images());
         let BoundBatches { passes, group } = self.views.bind(device, &frame.camera);
         let layers = &self.npass.layers()?.texture;
-        let depth = &self.depth.made("MeshLayered depth")?.texture;
         for (i, range) in passes.iter().enumerate() {
             let count = range.len() as u32;
             let color = layer_range(layers, range.start, count);

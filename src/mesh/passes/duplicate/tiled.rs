@@ -12,7 +12,7 @@ use crate::render::pipeline::{
     begin_pass_to, bind_group_layout, cleared, pipeline_layout, uniform_entry, PassTargets,
 };
 use crate::render::quilt::QuiltLayout;
-use crate::render::{begin_prepare, check_prepared, check_target, Made, Renderer};
+use crate::render::{begin_prepare, check_target, prepared_state, Made, Prepared, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 
 /// How a copy is kept inside its tile.
@@ -66,8 +66,8 @@ pub struct MeshTiled {
     views_layout: wgpu::BindGroupLayout,
     frame: FrameBinding,
     compositor: AtlasCompositor,
-    atlas: Option<Atlas>,
-    prepared: Option<PreparedFor>,
+    /// The quilt atlas (with depth) of the prepared frame.
+    prepared: Option<Prepared<PreparedFor, Atlas>>,
     /// The parallel camera model's crop, recorded last.
     crop: crate::render::camera_crop::CameraCrop,
 }
@@ -97,7 +97,6 @@ impl MeshTiled {
             views_layout,
             compositor: AtlasCompositor::new(device, &frame_layout)?,
             frame: FrameBinding::new(device, &frame_layout),
-            atlas: None,
             prepared: None,
             crop: crate::render::camera_crop::CameraCrop::new(device)?,
         })
@@ -117,13 +116,20 @@ impl Renderer<MeshBuffers> for MeshTiled {
         _mesh: &MeshBuffers,
         frame: &Frame,
     ) -> Result<()> {
+        let last = self.prepared.take().map(|p| p.made);
         begin_prepare(device, frame, &mut self.prepared)?;
         let layout = QuiltLayout::for_views(frame.camera.views, frame.view_size());
-        if !self.atlas.as_ref().is_some_and(|a| a.fits(&layout, true)) {
-            self.atlas = None; // free before allocating the replacement
-            self.atlas = Some(Atlas::new(device, layout, true)?);
-        }
-        self.prepared = Some(PreparedFor::of(frame));
+        let atlas = match last {
+            Some(atlas) if atlas.fits(&layout, true) => atlas,
+            last => {
+                drop(last); // free before allocating the replacement
+                Atlas::new(device, layout, true)?
+            }
+        };
+        self.prepared = Some(Prepared {
+            key: PreparedFor::of(frame),
+            made: atlas,
+        });
         Ok(())
     }
 
@@ -136,9 +142,8 @@ impl Renderer<MeshBuffers> for MeshTiled {
         target: &SpatialTarget,
     ) -> Result<()> {
         check_target(frame, target)?;
-        check_prepared("MeshTiled", &self.prepared, &PreparedFor::of(frame))?;
+        let atlas = &prepared_state("MeshTiled", &self.prepared, &PreparedFor::of(frame))?.made;
         self.frame.write(device, &frame.for_view_images());
-        let atlas = self.atlas.made("MeshTiled atlas")?;
         let views = views_buffer(device, &frame.camera);
         let quilt = atlas.layout.uniform_buffer(device, atlas.layout.uniform());
         let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
@@ -186,6 +191,6 @@ impl Renderer<MeshBuffers> for MeshTiled {
     }
 
     fn atlas(&self) -> Option<&Atlas> {
-        self.atlas.as_ref()
+        self.prepared.as_ref().map(|p| &p.made)
     }
 }
