@@ -17,7 +17,7 @@ mod any;
 pub mod budget;
 pub mod camera;
 pub mod display;
-pub mod error;
+mod error;
 pub mod file;
 pub mod frame;
 pub mod gpu;

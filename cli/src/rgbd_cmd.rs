@@ -178,7 +178,7 @@ pub fn run(args: RgbdArgs) -> Result<()> {
         .as_ref()
         .map(|_| {
             RgbImage::check_size(quilt_size[0], quilt_size[1])?;
-            Ok::<_, autostereo::error::Error>(RgbImage::new(quilt_size[0], quilt_size[1]))
+            Ok::<_, autostereo::Error>(RgbImage::new(quilt_size[0], quilt_size[1]))
         })
         .transpose()?;
     for v in 0..views {

@@ -1,13 +1,14 @@
 //! Point clouds for splatting: loading (PLY, OBJ vertices), generated test clouds, completion of
-//! missing normals and radii ([`estimate`]), grouping ([`groups`]) and GPU upload ([`SplatScene`]).
+//! missing normals and radii ([`estimate`]), grouping ([`GroupCount`], [`Grouping`]) and GPU
+//! upload ([`SplatScene`]).
 //!
 //! Data flows `PointCloud` (what the file has) → [`PointCloud::complete`] → [`Splats`] (every
-//! attribute) → [`groups::assign`] → [`SplatScene`] (on the GPU, sorted by group).
+//! attribute) → grouping (`groups.rs`) → [`SplatScene`] (on the GPU, sorted by group).
 
 pub mod estimate;
 mod generate;
 mod grid;
-pub mod groups;
+pub(crate) mod groups;
 pub(crate) mod passes;
 pub mod ply;
 mod scene;
@@ -17,7 +18,7 @@ use std::time::Instant;
 
 use glam::Vec3;
 
-pub use groups::{GroupCount, Grouping};
+pub use groups::{GroupCount, Grouping, MAX_AUTO_GROUPS, MAX_CANDIDATES};
 pub use passes::{PointSplatter, SplatDepth, SplatOptions, DEFAULT_EPSILON_FRACTION};
 pub use scene::{GpuSplat, SplatScene};
 

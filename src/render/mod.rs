@@ -2,10 +2,12 @@
 //!
 //! - [`Renderer`]: one frame of a scene into a spatial target ([`crate::AnyRenderer`] /
 //!   [`crate::AnyScene`] hide the primitive; [`crate::RendererOptions`] builds them).
-//! - [`mask_image`]: the display mask as a view-index image (GPU side of the mask oracle).
-//! - [`composite`]: N per-view layers → spatial image (every N-pass method).
-//! - [`output`]: the spatial image into a caller's texture or surface (BGRA8, sRGB…).
-//! - [`stereo`]: two eyes' views into anaglyph, side-by-side, top-bottom or interlaced images.
+//! - [`MaskImageRenderer`]: the display mask as a view-index image (GPU side of the mask
+//!   oracle).
+//! - [`Compositor`]: N per-view layers → spatial image (every N-pass method).
+//! - [`OutputBlit`]: the spatial image into a caller's texture or surface (BGRA8, sRGB…).
+//! - [`StereoCompositor`]: two eyes' views into anaglyph, side-by-side, top-bottom or
+//!   interlaced images.
 //! - [`quilt`], [`atlas`]: the Looking Glass quilt layout, the atlas the tiled methods render
 //!   into (and quilt files are read into), and its compositing.
 //! - [`ViewLayers`]: the per-view (or per-group) layers those passes render into.
@@ -20,21 +22,21 @@
 pub mod atlas;
 pub mod batches;
 pub(crate) mod camera_crop;
-pub mod composite;
+pub(crate) mod composite;
 pub(crate) mod depth_readback;
 pub(crate) mod dispatch;
 pub(crate) mod gpu_buffer;
-pub mod mask_image;
+pub(crate) mod mask_image;
 mod method;
 pub(crate) mod npass;
-pub mod output;
+pub(crate) mod output;
 pub(crate) mod pass_params;
 pub(crate) mod pipeline;
 pub(crate) mod pipeline_cache;
 pub mod quilt;
 mod renderer;
 pub(crate) mod specialize;
-pub mod stereo;
+pub(crate) mod stereo;
 pub(crate) mod storage_fence;
 pub(crate) mod texture;
 pub(crate) mod view_layers;

@@ -1,23 +1,23 @@
 //! Scalar volumes: loading (raw, NRRD, VolPack .den), built-in data sets, gradients, transfer
 //! functions with pre-integration, and their GPU textures.
 
-pub mod empty_space;
+pub(crate) mod empty_space;
 mod gradient;
 pub mod load;
 pub(crate) mod passes;
 pub mod phantom;
 mod scene;
 mod settings;
-pub mod transfer;
+pub(crate) mod transfer;
 
-pub use empty_space::CellRanges;
+pub use empty_space::{CellRanges, MAX_DISTANCE};
 pub use passes::{AlphaMode, VolumeRaycaster, VolumeSlicer};
 pub use scene::{
     EmptyDistanceTexture, PreintegrationTexture, VolumeScene, VolumeTexture, MAX_EMPTY_STRIDE,
     MAX_SAMPLES_PER_RAY, SUGGESTED_EMPTY_STRIDE, SUGGESTED_SHARE_SAMPLES,
 };
 pub use settings::VolumeSettings;
-pub use transfer::{PreintegrationTable, TransferFunction};
+pub use transfer::{PreintegrationTable, TransferFunction, PRESETS};
 
 use glam::Vec3;
 

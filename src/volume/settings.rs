@@ -19,7 +19,7 @@ pub struct VolumeSettings {
     /// Blinn-Phong shading from the gradients (off: emission-absorption only).
     pub shade: bool,
     /// Jump over space the transfer function makes fully transparent (ray marching; exact: the
-    /// image is the same bit for bit, see [`super::empty_space`]).
+    /// image is the same bit for bit, see `src/volume/empty_space.rs`).
     pub skip_empty: bool,
     /// Sample sharing among a pixel's K rays (single pass, ray marching): where every pair of
     /// the rays' samples on a plane lies within this many voxels, they take their mean ray's

@@ -16,7 +16,7 @@
 //! N view images ([`WarpPath`]).
 
 mod options;
-pub mod references;
+pub(crate) mod references;
 mod rgbd;
 mod scene;
 pub(crate) mod uniform;
@@ -25,7 +25,9 @@ pub use options::{
     WarpOptions, DEFAULT_HOLE_GAP, DEFAULT_REFERENCES, DEFAULT_SAME_SURFACE,
     PARALLAX_PER_DEPTHINESS,
 };
-pub use references::{reference_frame, ReferenceImages, ReferenceRenderer};
+pub use references::{
+    reference_frame, ReferenceImages, ReferenceRenderer, REFERENCE_NEARNESS_FORMAT,
+};
 pub use rgbd::{predicted_shift, RgbdWarp};
 pub use scene::SceneWarp;
 
