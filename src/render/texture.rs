@@ -43,6 +43,25 @@ pub(crate) fn texture_2d(
     })
 }
 
+/// `last` where it has `size`, else a new texture (`last` freed first): what a renderer keeps
+/// in its prepared state from frame to frame.
+pub(crate) fn texture_2d_reusing(
+    last: Option<Texture2d>,
+    device: &wgpu::Device,
+    label: &str,
+    size: [u32; 2],
+    format: wgpu::TextureFormat,
+    usage: wgpu::TextureUsages,
+) -> Result<Texture2d> {
+    match last {
+        Some(t) if [t.texture.width(), t.texture.height()] == size => Ok(t),
+        last => {
+            drop(last); // free before allocating the replacement
+            texture_2d(device, label, size, format, usage)
+        }
+    }
+}
+
 /// The view of `slot`, (re)allocated when missing or of another size.
 pub(crate) fn cached_texture_2d<'a>(
     slot: &'a mut Option<Texture2d>,

@@ -289,7 +289,7 @@ impl PreparedFor {
 /// and `Err(NotPrepared)` unless `prepared` is `wanted` and the scene's uploads are current.
 pub(crate) struct VolumeEncode<'a> {
     pub renderer: &'static str,
-    pub prepared: &'a Option<PreparedFor>,
+    pub prepared: Option<PreparedFor>,
     pub resources: &'a VolumeResources,
     pub settings: &'a VolumeSettings,
     pub wanted: PreparedFor,
@@ -371,7 +371,7 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         let own = self.own_frame(frame)?;
         VolumeEncode {
             renderer: "VolumeRaycaster",
-            prepared: &self.prepared,
+            prepared: self.prepared,
             resources: &self.resources,
             settings: &self.settings,
             wanted: PreparedFor::of(&self.settings, &own, self.method),

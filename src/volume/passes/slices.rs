@@ -15,9 +15,8 @@ use crate::render::pipeline::{
 };
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
-use crate::render::texture::{cached_texture_2d, Texture2d};
-use crate::render::Renderer;
-use crate::render::{begin_prepare, Made};
+use crate::render::texture::{texture_2d_reusing, Texture2d};
+use crate::render::{begin_prepare, prepared_state, Prepared, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 use crate::volume::{VolumeScene, VolumeSettings};
 
@@ -54,8 +53,8 @@ pub struct VolumeSlicer {
     accumulated_layout: wgpu::BindGroupLayout,
     pipelines: PipelineCache<Specialization, wgpu::RenderPipeline>,
     resolve: wgpu::RenderPipeline,
-    accumulation: Option<Texture2d>,
-    prepared: Option<PreparedFor>,
+    /// The prepared frame's accumulation texture (float: hundreds of slices do not quantise).
+    prepared: Option<Prepared<PreparedFor, Texture2d>>,
     /// The parallel camera model's crop, recorded last.
     crop: crate::render::camera_crop::CameraCrop,
 }
@@ -125,7 +124,6 @@ impl VolumeSlicer {
             accumulated_layout,
             pipelines: PipelineCache::new("volume slice"),
             resolve,
-            accumulation: None,
             prepared: None,
             crop: crate::render::camera_crop::CameraCrop::new(device)?,
         })
@@ -285,6 +283,7 @@ impl Renderer<VolumeScene> for VolumeSlicer {
         scene: &VolumeScene,
         frame: &Frame,
     ) -> Result<()> {
+        let last = self.prepared.take().map(|p| p.made);
         begin_prepare(device, frame, &mut self.prepared)?;
         frame.check_full_views("slice-based")?;
         let key = PreparedFor::for_slices(&self.settings, frame);
@@ -292,15 +291,18 @@ impl Renderer<VolumeScene> for VolumeSlicer {
         self.resources
             .upload(device, queue, scene, &self.settings, key.skip_empty)?;
         self.ensure_pipeline(device, key.spec)?;
-        cached_texture_2d(
-            &mut self.accumulation,
+        let accumulation = texture_2d_reusing(
+            last,
             device,
             "slice accumulation",
             frame.size,
             ACCUMULATION_FORMAT,
             wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
         )?;
-        self.prepared = Some(key);
+        self.prepared = Some(Prepared {
+            key,
+            made: accumulation,
+        });
         Ok(())
     }
 
@@ -312,14 +314,18 @@ impl Renderer<VolumeScene> for VolumeSlicer {
         frame: &Frame,
         target: &SpatialTarget,
     ) -> Result<()> {
+        let wanted = PreparedFor::for_slices(&self.settings, frame);
         VolumeEncode {
             renderer: "VolumeSlicer",
-            prepared: &self.prepared,
+            prepared: self.prepared.as_ref().map(|p| p.key),
             resources: &self.resources,
             settings: &self.settings,
-            wanted: PreparedFor::for_slices(&self.settings, frame),
+            wanted,
         }
         .check(scene, frame, target)?;
+        let accumulation = &prepared_state("VolumeSlicer", &self.prepared, &wanted)?
+            .made
+            .view;
         let spec = Specialization::of(frame);
         let params = VolumeResources::params(scene, &self.settings, frame, true, 0.0);
         let volume_group = self.resources.bind(device, scene, frame, &[params])?;
@@ -341,7 +347,6 @@ impl Renderer<VolumeScene> for VolumeSlicer {
                 resource: buffer.as_entire_binding(),
             }],
         });
-        let accumulation = &self.accumulation.made("VolumeSlicer accumulation")?.view;
         {
             // Cleared to the background: "over" blending then composites every channel over it
             // with that channel's own α.

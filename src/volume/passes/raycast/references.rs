@@ -40,7 +40,7 @@ impl ReferenceRenderer<VolumeScene> for VolumeRaycaster {
         self.settings.validate_for(scene)?;
         let encode = VolumeEncode {
             renderer: "VolumeRaycaster",
-            prepared: &self.prepared,
+            prepared: self.prepared,
             resources: &self.resources,
             settings: &self.settings,
             wanted: PreparedFor::of(&self.settings, frame, Method::Warp),
