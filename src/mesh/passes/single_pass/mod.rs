@@ -211,9 +211,9 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
         let (spec, triangles) = (key.spec, key.triangles);
         self.frame.write(device, frame);
         let pipelines = self.pipelines.get(&spec)?;
-        let groups = self
-            .scratch
-            .bind_groups(device, &self.layouts, self.options.visibility, mesh);
+        let groups =
+            self.scratch
+                .bind_groups(device, &self.layouts, self.options.visibility, mesh)?;
 
         let s = &self.scratch;
         if let Some(keys) = s.keys_buffer() {
@@ -238,7 +238,7 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
             let (color, depth, label) = match self.options.visibility {
                 Visibility::Exact => (
                     wgpu::RenderPassColorAttachment {
-                        view: s.triangle_ids_view(),
+                        view: s.triangle_ids_view()?,
                         depth_slice: None,
                         resolve_target: None,
                         ops: wgpu::Operations {

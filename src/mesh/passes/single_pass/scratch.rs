@@ -10,6 +10,7 @@ use crate::mesh::MeshBuffers;
 use crate::render::gpu_buffer::GpuBuffer;
 use crate::render::texture::{cached_texture_2d, Texture2d};
 use crate::render::view_layers::DEPTH_FORMAT;
+use crate::render::Made;
 
 /// Bytes per triangle of `EyeTriangle` (checked against naga by `src/shader.rs`'s tests) and
 /// of a covering rectangle (a `vec4<f32>`, wgsl/mesh/shared/cover_data.wgsl).
@@ -120,12 +121,11 @@ impl Scratch {
         self.depth.as_ref().map(|t| &t.view)
     }
 
-    pub fn triangle_ids_view(&self) -> &wgpu::TextureView {
-        &self
+    pub fn triangle_ids_view(&self) -> Result<&wgpu::TextureView> {
+        Ok(&self
             .triangle_ids
-            .as_ref()
-            .expect("prepared for exact visibility")
-            .view
+            .made("the exact visibility's triangle ids")?
+            .view)
     }
 
     /// The buffers the cover pass writes and the later passes read.
@@ -144,7 +144,7 @@ impl Scratch {
         layouts: &Layouts,
         visibility: Visibility,
         mesh: &MeshBuffers,
-    ) -> Groups {
+    ) -> Result<Groups> {
         let mesh_resources = || {
             vec![
                 mesh.vertices.as_entire_binding(),
@@ -169,27 +169,27 @@ impl Scratch {
                     entries: &entries,
                 })
             };
-        let keys = || {
-            self.keys
-                .as_ref()
-                .expect("prepared for atomic visibility")
-                .binding()
+        let keys = || -> Result<_> {
+            Ok(self
+                .keys
+                .made("the atomic visibility's nearest keys")?
+                .binding())
         };
         let (keys_write, visible) = match visibility {
             Visibility::Fast => (None, None),
             Visibility::Exact => {
-                let view = wgpu::BindingResource::TextureView(self.triangle_ids_view());
+                let view = wgpu::BindingResource::TextureView(self.triangle_ids_view()?);
                 (
                     None,
                     Some(group("triangle ids", &layouts.triangle_ids, vec![view])),
                 )
             }
             Visibility::Atomic | Visibility::Compute => (
-                Some(group("nearest keys", &layouts.keys_write, vec![keys()])),
-                Some(group("nearest keys", &layouts.keys_read, vec![keys()])),
+                Some(group("nearest keys", &layouts.keys_write, vec![keys()?])),
+                Some(group("nearest keys", &layouts.keys_read, vec![keys()?])),
             ),
         };
-        Groups {
+        Ok(Groups {
             mesh: group("mesh + cover data", &layouts.mesh, mesh_resources()),
             cover_compute: group(
                 "mesh cover compute",
@@ -198,6 +198,6 @@ impl Scratch {
             ),
             keys_write,
             visible,
-        }
+        })
     }
 }
