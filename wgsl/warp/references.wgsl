@@ -1,7 +1,7 @@
 // Reference views → spatial image by backward warping straight into each subpixel's view, no
 // per-view images (src/warp/scene.rs, docs/WARPING.md). R reference views sit evenly over the
 // views' span (t ∈ [−1, 1]; R = 1: the centre); each subpixel searches the rows of the two
-// references around its view (shared/row_warp.wgsl) and blends them where both see the same
+// references around its view (warp/shared/row_warp.wgsl) and blends them where both see the same
 // surface, else keeps the nearer surface or the one that is seen rather than filled.
 #import shared/frame.wgsl
 #import warp/shared/warp.wgsl

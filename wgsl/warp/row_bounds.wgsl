@@ -1,4 +1,4 @@
-// The nearness range of the surfaces in each row of each reference view (src/warp/passes.rs):
+// The nearness range of the surfaces in each row of each reference view (src/warp/scene.rs):
 // the warp searches only the samples whose landing can reach a subpixel, and that window is
 // the row's range times the view's shift. One invocation per row and reference; (lo, hi) with
 // lo > hi for a row that shows no surface (nearness 0 everywhere).

@@ -17,7 +17,7 @@
 // Empty-space skipping compiled in (src/volume/passes/raycast.rs sets it per scene): without
 // it the march is the plain loop.
 override SKIP_EMPTY: bool = true;
-// Probing stride through transparent material (`--empty-stride P`, `VolumeScene::empty_stride`;
+// Probing stride through transparent material (`--empty-stride P`, `VolumeSettings::empty_stride`;
 // an approximation, needs SKIP_EMPTY): after a segment that added nothing, the ray's next
 // sample is P planes on instead of one. Where the pre-integrated segment between the two is
 // exactly zero (no extinction anywhere between their scalars), the P segments are taken as
@@ -25,7 +25,7 @@ override SKIP_EMPTY: bool = true;
 // miss: material whose scalars lie outside both ends' range within those P planes (a feature
 // thinner than P·Δ). 1: compiled out, the exact march.
 override EMPTY_STRIDE: u32 = 1u;
-// Coarse steps through thin material too (`--thin-alpha A`, `VolumeScene::thin_alpha`; with
+// Coarse steps through thin material too (`--thin-alpha A`, `VolumeSettings::thin_alpha`; with
 // EMPTY_STRIDE > 1): a probe whose segment adds at most A opacity per sample step is taken as
 // one segment P steps long (opacity 1 − (1 − α)^P, colour scaled alike: exact where the scalar
 // changes linearly over the P steps and the colour is constant), and probing goes on after it. 0: only transparent material.
