@@ -107,21 +107,5 @@ fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
     let px = vec2<u32>(position.xy);
     let u = f32(px.x);
     let row = i32(px.y);
-    // One search per distinct view of the pixel (a per-pixel mask: one for all three).
-    var out = vec3<f32>(0.0);
-    var searched = NO_VIEW;
-    var w = vec4<f32>(0.0);
-    for (var c = 0u; c < 3u; c++) {
-        var v = warp.fixed_view;
-        if (v == NO_VIEW) {
-            v = mask_view(frame.mask, px, c);
-        }
-        if (v != searched) {
-            let found = view_value(v, row, u);
-            w = vec4<f32>(found.color, select(0.0, 1.0, found.filled));
-            searched = v;
-        }
-        out[c] = select(w[c], w.w, warp.hole_mask == 1u);
-    }
-    return vec4<f32>(out, 1.0);
+    return warp_subpixels(px, row, u);
 }

@@ -24,6 +24,12 @@ fn color_at(layer: u32, x: i32, row: i32) -> vec3<f32> {
     return textureLoad(color, vec2<i32>(x, row), 0).rgb;
 }
 
+// View v at column u of row `row`: the one image's row searched over every nearness.
+fn view_value(v: u32, row: i32, u: f32) -> Warped {
+    let k = warp.parallax * view_position(v);
+    return warp_row(0u, row, u, k, warp.focus, 0.0, 1.0, warp.size.x, warp.hole_gap);
+}
+
 @fragment
 fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
     let px = vec2<u32>(position.xy);
@@ -32,22 +38,5 @@ fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
     // The pixel centre in reference pixels (the reference may be of another size).
     let u = (f32(px.x) + 0.5) * reference.x / panel.x - 0.5;
     let row = min(i32((f32(px.y) + 0.5) * reference.y / panel.y), i32(warp.size.y) - 1);
-    // One search per distinct view of the pixel (a per-pixel mask: one for all three).
-    var out = vec3<f32>(0.0);
-    var searched = NO_VIEW;
-    var w = vec4<f32>(0.0);
-    for (var c = 0u; c < 3u; c++) {
-        var v = warp.fixed_view;
-        if (v == NO_VIEW) {
-            v = mask_view(frame.mask, px, c);
-        }
-        if (v != searched) {
-            let k = warp.parallax * view_position(v);
-            let found = warp_row(0u, row, u, k, warp.focus, 0.0, 1.0, warp.size.x, warp.hole_gap);
-            w = vec4<f32>(found.color, select(0.0, 1.0, found.filled));
-            searched = v;
-        }
-        out[c] = select(w[c], w.w, warp.hole_mask == 1u);
-    }
-    return vec4<f32>(out, 1.0);
+    return warp_subpixels(px, row, u);
 }

@@ -3,7 +3,8 @@
 // either way views differ from a reference by a horizontal shift of k · (nearness − focus)
 // reference pixels, searched row by row (warp/shared/row_warp.wgsl).
 //
-// Reads `frame` (shared/frame.wgsl), which the stage binds.
+// Reads `frame` (shared/frame.wgsl) and `warp`, which the stage binds, and calls the stage's
+// `view_value(v, row, u) -> Warped`: view v's value at column u of reference row `row`.
 
 // Keep in sync with `WarpUniform` in src/warp/uniform.rs.
 struct Warp {
@@ -28,4 +29,25 @@ fn view_position(v: u32) -> f32 {
         return 0.0;
     }
     return 2.0 * f32(v) / f32(n - 1u) - 1.0;
+}
+
+// The pixel `px`'s subpixels, each its own view's value at (u, row) of the references (or the
+// hole mask): one search per distinct view of the pixel (a per-pixel mask: one for all three).
+fn warp_subpixels(px: vec2<u32>, row: i32, u: f32) -> vec4<f32> {
+    var out = vec3<f32>(0.0);
+    var searched = NO_VIEW;
+    var w = vec4<f32>(0.0);
+    for (var c = 0u; c < 3u; c++) {
+        var v = warp.fixed_view;
+        if (v == NO_VIEW) {
+            v = mask_view(frame.mask, px, c);
+        }
+        if (v != searched) {
+            let found = view_value(v, row, u);
+            w = vec4<f32>(found.color, select(0.0, 1.0, found.filled));
+            searched = v;
+        }
+        out[c] = select(w[c], w.w, warp.hole_mask == 1u);
+    }
+    return vec4<f32>(out, 1.0);
 }
