@@ -204,12 +204,12 @@ fn transfer(args: &VolumeArgs, default: &str) -> Result<TransferFunction> {
 }
 
 /// The renderer options the flags say (`step` in voxels of the smallest spacing).
-fn options(args: &VolumeArgs, step: Option<f32>) -> Result<RendererOptions> {
+fn options(args: &VolumeArgs, step: Option<f32>) -> RendererOptions {
     let settings = VolumeSettings {
         step,
         shade: !args.no_shading,
         skip_empty: !args.no_skip_empty,
-        share_samples: share_samples(args)?,
+        share_samples: args.share_samples,
         empty_stride: args.empty_stride,
         thin_alpha: args.thin_alpha,
     };
@@ -218,10 +218,10 @@ fn options(args: &VolumeArgs, step: Option<f32>) -> Result<RendererOptions> {
         (PathArg::Slices, AlphaArg::Exact) => VolumePath::Slices(AlphaMode::Exact),
         (PathArg::Slices, AlphaArg::Paper) => VolumePath::Slices(AlphaMode::Paper),
     };
-    Ok(RendererOptions {
+    RendererOptions {
         volume: VolumeOptions { path, settings },
         ..args.common.options()
-    })
+    }
 }
 
 pub fn run(args: VolumeArgs) -> Result<()> {
@@ -244,21 +244,9 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     let frame = args.common.frame(bounds)?;
     let ctx = gpu()?;
     let scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, tf, model)?;
-    if args.thin_alpha != 0.0 && args.empty_stride < 2 {
-        bail!(
-            "--thin-alpha {}: thin material is stepped through by the probes of --empty-stride \
-             (give a stride of 2 or more)",
-            args.thin_alpha
-        );
-    }
-    if args.empty_stride != 1 && args.path != PathArg::Compute {
-        bail!(
-            "--empty-stride {}: probing is part of the compute path's empty-space skipping \
-             (--path compute)",
-            args.empty_stride
-        );
-    }
-    let options = options(&args, step)?;
+    // The settings are checked where the renderer is built (src/volume/settings.rs, the
+    // renderers' constructors); cli/src/flags.rs names the flags in their errors.
+    let options = options(&args, step);
     let settings = options.volume.settings;
     settings.validate_for(&scene)?;
     let mut renderer = options.volume_renderer(&ctx.device)?;
@@ -353,17 +341,4 @@ fn write_views(
         RgbImage::from_rgba(frame.size, &rgba).save_png(&dir.join(format!("view_{i:02}.png")))?;
     }
     Ok(())
-}
-
-/// `--share-samples`, refused where it would change nothing: it is an option of the single
-/// pass's compute path.
-fn share_samples(args: &VolumeArgs) -> Result<f32> {
-    let tau = args.share_samples;
-    if tau != 0.0 && (args.common.method != Method::SinglePass || args.path != PathArg::Compute) {
-        bail!(
-            "--share-samples {tau}: sample sharing is an option of the single pass's compute \
-             path (--method single-pass --path compute)"
-        );
-    }
-    Ok(tau)
 }

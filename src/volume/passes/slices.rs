@@ -65,11 +65,24 @@ impl VolumeSlicer {
     /// refused, and empty-space skipping does not apply (slices are rasterised whole).
     pub fn new(device: &wgpu::Device, alpha: AlphaMode, settings: VolumeSettings) -> Result<Self> {
         settings.validate()?;
-        if settings.share_samples > 0.0 || settings.empty_stride > 1 {
+        if settings.share_samples > 0.0 {
             return Err(Error::invalid(
-                "volume settings",
-                "sample sharing and the probing stride are ray-marching approximations; the \
-                 proxy slices have neither",
+                "sample sharing tolerance",
+                format!(
+                    "{}: sharing samples among a pixel's rays is a ray-marching approximation; \
+                     the proxy slices (VolumePath::Slices) have none",
+                    settings.share_samples
+                ),
+            ));
+        }
+        if settings.empty_stride > 1 {
+            return Err(Error::invalid(
+                "probing stride through transparent material",
+                format!(
+                    "{}: probing is part of ray marching's empty-space skipping; the proxy \
+                     slices (VolumePath::Slices) have none",
+                    settings.empty_stride
+                ),
             ));
         }
         crate::gpu::require_features(
