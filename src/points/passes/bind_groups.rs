@@ -1,10 +1,10 @@
 //! The bind groups a splat frame's passes use (cover, quads, group images, pass constants),
 //! made once per frame for the ordinary and the duplicated encode alike.
 
+use super::prepared::PreparedSplats;
 use super::PointSplatter;
 use crate::error::Result;
 use crate::points::SplatScene;
-use crate::render::Made;
 
 /// The bind groups of one frame's passes.
 pub(super) struct FrameGroups {
@@ -15,14 +15,15 @@ pub(super) struct FrameGroups {
 }
 
 impl PointSplatter {
-    /// This frame's bind groups (after `prepare` and the frame's `params.write`).
+    /// This frame's bind groups (after `prepare` made `state` and the frame's `params.write`).
     pub(super) fn frame_groups(
         &self,
         device: &wgpu::Device,
         scene: &SplatScene,
+        state: &PreparedSplats,
     ) -> Result<FrameGroups> {
-        let scratch = self.scratch.made("PointSplatter scratch")?;
-        let images = &self.images.made("PointSplatter group images")?.layers;
+        let scratch = &state.scratch;
+        let images = &state.images.layers;
         let group = |label, layout, entries: &[wgpu::BindGroupEntry]| {
             device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: Some(label),

@@ -12,6 +12,7 @@ mod chunks;
 mod duplicate;
 mod group_images;
 mod pipelines;
+mod prepared;
 mod references;
 mod views;
 
@@ -20,21 +21,19 @@ use crate::render::Method;
 pub use pipelines::SplatParams;
 
 use self::bind_groups::FrameGroups;
-use self::group_images::{GroupImages, GroupImagesKey};
-use self::pipelines::{Geometry, Layouts, Pipelines, SplatPipelineKey};
+use self::pipelines::{Layouts, Pipelines, SplatPipelineKey};
+use self::prepared::{Plan, PreparedSplats, SplatPath};
 use self::views::SplatOutput;
 use crate::error::{Error, Result};
 use crate::frame::{Frame, FrameBinding};
 use crate::points::SplatScene;
 use crate::render::atlas::{Atlas, AtlasCompositor};
-use crate::render::gpu_buffer::GpuBuffer;
 use crate::render::npass::NPassHarness;
 use crate::render::pass_params::PassParams;
 use crate::render::pipeline_cache::PipelineCache;
-use crate::render::specialize::Specialization;
 use crate::render::storage_fence::StorageFence;
 use crate::render::Renderer;
-use crate::render::{begin_prepare, check_prepared, check_target};
+use crate::render::{begin_prepare, check_target, prepared_state};
 use crate::target::SpatialTarget;
 
 /// Depth kept per group image by the single pass on subpixel (K = 3) displays.
@@ -94,18 +93,11 @@ impl SplatOptions {
     }
 }
 
-/// The cover pass's output: eye-space splats and their covering rectangles.
-struct Scratch {
-    eye_splats: GpuBuffer,
-    rects: GpuBuffer,
-}
-
 /// Point-splat renderer for one [`Method`].
 pub struct PointSplatter {
     method: Method,
-    /// How `method` renders on this adapter: itself, or the N-pass for layered without
-    /// multiview.
-    path: Method,
+    /// How `method` renders on this adapter.
+    path: SplatPath,
     /// Layered: layers per multiview pass.
     max_per_pass: u32,
     options: SplatOptions,
@@ -113,20 +105,14 @@ pub struct PointSplatter {
     frame: FrameBinding,
     params: PassParams<SplatParams>,
     pipelines: PipelineCache<SplatPipelineKey, Pipelines>,
-    scratch: Option<Scratch>,
-    images: Option<GroupImages>,
-    /// N-pass and layered only.
+    /// The N-pass harness (view layers and their compositing): N-pass and layered only.
     npass: Option<NPassHarness>,
-    /// Tiled only: the quilt atlas the views are composited into, and its compositor.
-    atlas: Option<Atlas>,
+    /// Tiled only: composites the quilt atlas into the target.
     atlas_compositor: Option<AtlasCompositor>,
-    /// Layered only: a depth layer per layer of a multiview pass.
-    layer_depth: Option<crate::render::view_layers::DepthArray>,
-    /// Tiled and layered: the views in chunks whose group images fit one texture of at most
-    /// `max_image_bytes`.
-    chunks: duplicate::Chunks,
+    /// Tiled and layered: the views go in chunks whose group images fit one texture of at most
+    /// this many bytes.
     max_image_bytes: u64,
-    prepared: Option<PreparedFor>,
+    prepared: Option<PreparedSplats>,
     /// The parallel camera model's crop, recorded last.
     crop: crate::render::camera_crop::CameraCrop,
     fence: StorageFence,
@@ -136,46 +122,48 @@ impl PointSplatter {
     /// Prepare layouts; pipelines are built per display specialisation on first use.
     pub fn new(device: &wgpu::Device, method: Method, options: SplatOptions) -> Result<Self> {
         options.validate()?;
-        if method == Method::Mrt {
-            return Err(Error::invalid(
-                "method",
-                "mrt renders meshes only: splat group images are integer textures (packed \
-                 colour, weight and depth), which cannot blend, so the paper's α = 0 writes to \
-                 the other views' targets would overwrite them; tiled and layered duplicate \
-                 splats",
-            ));
-        }
         let max_per_pass = device.limits().max_multiview_view_count;
         let multiview = device.features().contains(wgpu::Features::MULTIVIEW) && max_per_pass >= 2;
         let path = match method {
-            Method::Layered if !multiview => Method::NPass,
-            m => m,
+            Method::SinglePass => SplatPath::SinglePass,
+            Method::SingleView => SplatPath::SingleView,
+            Method::NPass => SplatPath::NPass,
+            Method::Warp => SplatPath::References,
+            Method::Tiled => SplatPath::Tiled,
+            Method::Layered if multiview => SplatPath::Layered,
+            Method::Layered => SplatPath::NPass,
+            Method::Mrt => {
+                return Err(Error::invalid(
+                    "method",
+                    "mrt renders meshes only: splat group images are integer textures (packed \
+                     colour, weight and depth), which cannot blend, so the paper's α = 0 writes \
+                     to the other views' targets would overwrite them; tiled and layered \
+                     duplicate splats",
+                ))
+            }
         };
         let layouts = Layouts::new(device);
         let npass = match path {
-            Method::NPass | Method::Layered => Some(NPassHarness::new(device, &layouts.frame)?),
+            SplatPath::NPass | SplatPath::Layered => {
+                Some(NPassHarness::new(device, &layouts.frame)?)
+            }
             _ => None,
         };
         let atlas_compositor = match path {
-            Method::Tiled => Some(AtlasCompositor::new(device, &layouts.frame)?),
+            SplatPath::Tiled => Some(AtlasCompositor::new(device, &layouts.frame)?),
             _ => None,
         };
         Ok(Self {
             method,
             path,
             max_per_pass,
-            atlas: None,
             atlas_compositor,
-            layer_depth: None,
-            chunks: duplicate::Chunks::None,
             max_image_bytes: chunks::MAX_IMAGE_BYTES,
             options,
             frame: FrameBinding::new(device, &layouts.frame),
             params: PassParams::new(device, "splat pass constants"),
             layouts,
             pipelines: PipelineCache::new("splat"),
-            scratch: None,
-            images: None,
             npass,
             prepared: None,
             crop: crate::render::camera_crop::CameraCrop::new(device)?,
@@ -191,28 +179,20 @@ impl PointSplatter {
     /// GPU bytes this renderer holds for its last frame (scratch buffers, group images, view
     /// layers), excluding the scene's splat buffer.
     pub fn allocated_bytes(&self) -> u64 {
-        let scratch = self
-            .scratch
-            .as_ref()
-            .map_or(0, |s| s.eye_splats.used() + s.rects.used());
-        let images = self
-            .images
-            .as_ref()
-            .map_or(0, |i| GroupImages::bytes(i.key));
+        let prepared = self.prepared.as_ref().map_or(0, PreparedSplats::bytes);
         let layers = self
             .npass
             .as_ref()
             .and_then(|n| n.view_layers())
             .map_or(0, |l| l.bytes(4));
-        let atlas = self.atlas.as_ref().map_or(0, Atlas::bytes);
-        scratch + images + layers + atlas
+        prepared + layers
     }
 
     /// How this adapter renders the method, in words (the layered method without multiview
     /// is one pass per layer: the N-pass).
     pub fn describe(&self) -> String {
         let how = match (self.method, self.path) {
-            (Method::Layered, Method::Layered) => format!(
+            (Method::Layered, SplatPath::Layered) => format!(
                 "multiview, at most {} layers per pass (the adapter's limit)",
                 self.max_per_pass
             ),
@@ -227,9 +207,11 @@ impl PointSplatter {
                 self.max_image_bytes
             )
         };
-        match &self.chunks {
-            duplicate::Chunks::Bands(b) if b.len() > 1 => chunked(b.len(), "bands of tile rows"),
-            duplicate::Chunks::Runs(r) if r.len() > 1 => chunked(r.len(), "runs"),
+        match self.prepared.as_ref().map(|p| &p.plan) {
+            Some(Plan::Tiled { bands, .. }) if bands.len() > 1 => {
+                chunked(bands.len(), "bands of tile rows")
+            }
+            Some(Plan::Layered { runs, .. }) if runs.len() > 1 => chunked(runs.len(), "runs"),
             _ => how,
         }
     }
@@ -243,15 +225,8 @@ impl PointSplatter {
         self.prepared = None;
     }
 
-    /// Whether `frame` renders with per-subpixel depth images.
-    fn subpixel(&self, frame: &Frame) -> bool {
-        self.path == Method::SinglePass
-            && self.options.depth == SplatDepth::Exact
-            && frame.display.views_per_pixel() > 1
-    }
-
-    /// Constants of each camera pass of the frame.
-    fn passes(&self, frame: &Frame, groups: u32) -> Vec<SplatParams> {
+    /// Constants of each camera pass of a frame rendered as `plan` says.
+    fn passes(&self, frame: &Frame, groups: u32, plan: &Plan) -> Vec<SplatParams> {
         let camera = &frame.camera;
         let fixed = |offset: f32| SplatParams {
             cover_lo: offset,
@@ -266,26 +241,37 @@ impl PointSplatter {
             image_row: 0,
             _pad: [0; 2],
         };
-        match self.path {
-            Method::SinglePass => vec![SplatParams {
+        match plan {
+            Plan::SinglePass => vec![SplatParams {
                 cover_lo: -camera.max_offset(),
                 cover_hi: camera.max_offset(),
                 use_mask: 1,
                 ..fixed(0.0)
             }],
-            Method::SingleView => vec![fixed(0.0)],
-            Method::NPass | Method::Warp => (0..camera.views)
+            Plan::SingleView => vec![fixed(0.0)],
+            Plan::NPass | Plan::References => (0..camera.views)
                 .map(|i| fixed(camera.view_offset(i)))
                 .collect(),
-            Method::Tiled | Method::Layered => match &self.chunks {
-                duplicate::Chunks::Bands(bands) => duplicate::tiled_passes(fixed(0.0), bands),
-                duplicate::Chunks::Runs(runs) => {
-                    duplicate::layered_passes(fixed(0.0), runs, self.max_per_pass)
-                }
-                duplicate::Chunks::None => unreachable!("planned by prepare"),
-            },
-            Method::Mrt => unreachable!("refused by new"),
+            Plan::Tiled { bands, .. } => duplicate::tiled_passes(fixed(0.0), bands),
+            Plan::Layered { runs, .. } => {
+                duplicate::layered_passes(fixed(0.0), runs, self.max_per_pass)
+            }
         }
+    }
+
+    /// Write the constants of `frame` as `state` renders it (frame uniform, per-pass
+    /// constants): the start of every encode.
+    fn write_constants(
+        &mut self,
+        device: &wgpu::Device,
+        scene: &SplatScene,
+        frame: &Frame,
+    ) -> Result<()> {
+        let state = prepared_state("PointSplatter", &self.prepared, &self.needs(scene, frame))?;
+        let passes = self.passes(frame, scene.groups(), &state.plan);
+        self.frame.write(device, frame);
+        self.params.write(device, &passes);
+        Ok(())
     }
 
     /// The frame this method renders with: the methods that render view images render them
@@ -293,125 +279,13 @@ impl PointSplatter {
     /// none to scale.
     fn own_frame(&self, frame: &Frame) -> Result<Frame> {
         match self.path {
-            Method::NPass | Method::Tiled | Method::Layered => Ok(frame.for_view_images()),
-            other => {
-                frame.check_full_views(other.name())?;
+            SplatPath::NPass | SplatPath::Tiled | SplatPath::Layered => Ok(frame.for_view_images()),
+            SplatPath::SinglePass | SplatPath::SingleView | SplatPath::References => {
+                frame.check_full_views(self.method.name())?;
                 Ok(frame.clone())
             }
         }
     }
-
-    /// What `frame` of `scene` needs prepared: pipelines (display, subpixel images), sizes.
-    fn needs(&self, scene: &SplatScene, frame: &Frame) -> PreparedFor {
-        PreparedFor {
-            spec: Specialization::of(frame),
-            subpixel: self.subpixel(frame),
-            size: frame.size,
-            views: frame.camera.views,
-            splats: scene.count,
-            groups: scene.groups(),
-        }
-    }
-
-    fn ensure_resources(
-        &mut self,
-        device: &wgpu::Device,
-        scene: &SplatScene,
-        frame: &Frame,
-    ) -> Result<()> {
-        let scratch = self.scratch.get_or_insert_with(|| Scratch {
-            eye_splats: GpuBuffer::new("eye splats", wgpu::BufferUsages::STORAGE),
-            rects: GpuBuffer::new("splat cover rects", wgpu::BufferUsages::STORAGE),
-        });
-        let n = scene.count as u64;
-        let what = |buffer| move || format!("{buffer} bytes ({n} splats)");
-        scratch
-            .eye_splats
-            .ensure(device, what("eye-space splat"), n * 32)?;
-        scratch
-            .rects
-            .ensure(device, what("splat cover rectangle"), n * 16)?;
-        let subpixel = self.subpixel(frame);
-        let k = if subpixel {
-            frame.display.views_per_pixel()
-        } else {
-            1
-        };
-        let (chunks, size, groups) = self.plan_chunks(device, scene, frame)?;
-        self.chunks = chunks;
-        if self.path == Method::Tiled {
-            let layout = self.quilt_layout(frame);
-            if !self.atlas.as_ref().is_some_and(|a| a.fits(&layout, false)) {
-                self.atlas = None; // free before allocating the replacement
-                self.atlas = Some(Atlas::new(device, layout, false)?);
-            }
-        }
-        let size = [size[0].saturating_mul(k), size[1]];
-        let key = GroupImagesKey {
-            size,
-            groups,
-            subpixel,
-        };
-        if self.images.as_ref().map(|i| i.key) != Some(key) {
-            self.images = None;
-            self.images = Some(GroupImages::new(device, key)?);
-        }
-        if let Some(npass) = &mut self.npass {
-            npass.prepare(device, frame)?;
-        }
-        if self.path == Method::Layered {
-            let deepest = self.layer_batches().iter().map(|r| r.len()).max();
-            let layers = deepest.unwrap_or(1) as u32;
-            let last = self.layer_depth.take();
-            self.layer_depth = Some(crate::render::view_layers::depth_array(
-                last, device, frame.size, layers,
-            )?);
-        }
-        for geometry in self.geometries(frame) {
-            let key = SplatPipelineKey {
-                spec: Specialization::of(frame),
-                geometry,
-            };
-            let layouts = &self.layouts;
-            self.pipelines.prepare(device, key, |modules| {
-                pipelines::build(device, modules, layouts, key)
-            })?;
-        }
-        Ok(())
-    }
-
-    /// The geometry passes `frame` draws with (the layered method: one per batch size).
-    fn geometries(&self, frame: &Frame) -> Vec<Geometry> {
-        match self.path {
-            Method::Tiled => vec![Geometry::Tiled],
-            Method::Layered => {
-                let mut sizes: Vec<u32> = self
-                    .layer_batches()
-                    .iter()
-                    .map(|r| r.len() as u32)
-                    .collect();
-                sizes.dedup();
-                sizes
-                    .into_iter()
-                    .map(|layers| Geometry::Layered { layers })
-                    .collect()
-            }
-            Method::Warp => vec![Geometry::Reference],
-            _ if self.subpixel(frame) => vec![Geometry::Subpixel],
-            _ => vec![Geometry::Pixel],
-        }
-    }
-}
-
-/// What a [`PointSplatter`] was prepared for.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct PreparedFor {
-    spec: Specialization,
-    subpixel: bool,
-    size: [u32; 2],
-    views: u32,
-    splats: u32,
-    groups: u32,
 }
 
 impl Renderer<SplatScene> for PointSplatter {
@@ -422,15 +296,15 @@ impl Renderer<SplatScene> for PointSplatter {
         scene: &SplatScene,
         frame: &Frame,
     ) -> Result<()> {
+        let last = self.prepared.take();
         begin_prepare(device, frame, &mut self.prepared)?;
-        if self.path == Method::Warp {
+        if self.path == SplatPath::References {
             return Err(crate::warp::references::not_a_frame_renderer(
                 "PointSplatter",
             ));
         }
         let frame = &self.own_frame(frame)?;
-        self.ensure_resources(device, scene, frame)?;
-        self.prepared = Some(self.needs(scene, frame));
+        self.prepared = Some(self.make_state(device, scene, frame, last)?);
         Ok(())
     }
 
@@ -444,20 +318,35 @@ impl Renderer<SplatScene> for PointSplatter {
     ) -> Result<()> {
         check_target(frame, target)?;
         let own = self.own_frame(frame)?;
-        check_prepared("PointSplatter", &self.prepared, &self.needs(scene, &own))?;
-        if matches!(self.path, Method::Tiled | Method::Layered) {
-            self.encode_duplicated(device, encoder, scene, &own, target)?;
-        } else {
-            self.encode_views(device, encoder, scene, &own, SplatOutput::Target(target))?;
+        self.write_constants(device, scene, &own)?;
+        let state = prepared_state("PointSplatter", &self.prepared, &self.needs(scene, &own))?;
+        match &state.plan {
+            Plan::Tiled { bands, atlas } => {
+                self.encode_tiled(device, encoder, scene, &own, state, bands, atlas, target)?
+            }
+            Plan::Layered { runs, depth } => {
+                self.encode_layered(device, encoder, scene, &own, state, runs, depth, target)?
+            }
+            _ => self.encode_views(
+                device,
+                encoder,
+                scene,
+                &own,
+                state,
+                SplatOutput::Target(target),
+            )?,
         }
         // The single view is the centre camera on every subpixel: nothing of it is cropped.
-        if self.path != Method::SingleView {
+        if self.path != SplatPath::SingleView {
             self.crop.encode(device, encoder, frame, target);
         }
         Ok(())
     }
 
     fn atlas(&self) -> Option<&Atlas> {
-        self.atlas.as_ref()
+        match self.prepared.as_ref().map(|p| &p.plan) {
+            Some(Plan::Tiled { atlas, .. }) => Some(atlas.as_ref()),
+            _ => None,
+        }
     }
 }

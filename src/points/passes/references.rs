@@ -5,7 +5,7 @@ use super::{PointSplatter, SplatOutput};
 use crate::error::Result;
 use crate::frame::Frame;
 use crate::points::SplatScene;
-use crate::render::{begin_prepare, check_prepared};
+use crate::render::{begin_prepare, prepared_state};
 use crate::warp::references::{check_reference_method, ReferenceImages, ReferenceRenderer};
 
 impl ReferenceRenderer<SplatScene> for PointSplatter {
@@ -16,10 +16,10 @@ impl ReferenceRenderer<SplatScene> for PointSplatter {
         scene: &SplatScene,
         frame: &Frame,
     ) -> Result<()> {
+        let last = self.prepared.take();
         begin_prepare(device, frame, &mut self.prepared)?;
         check_reference_method("PointSplatter", self.method)?;
-        self.ensure_resources(device, scene, frame)?;
-        self.prepared = Some(self.needs(scene, frame));
+        self.prepared = Some(self.make_state(device, scene, frame, last)?);
         Ok(())
     }
 
@@ -31,12 +31,14 @@ impl ReferenceRenderer<SplatScene> for PointSplatter {
         frame: &Frame,
         images: &ReferenceImages,
     ) -> Result<()> {
-        check_prepared("PointSplatter", &self.prepared, &self.needs(scene, frame))?;
+        self.write_constants(device, scene, frame)?;
+        let state = prepared_state("PointSplatter", &self.prepared, &self.needs(scene, frame))?;
         self.encode_views(
             device,
             encoder,
             scene,
             frame,
+            state,
             SplatOutput::References(images),
         )
     }

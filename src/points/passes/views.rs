@@ -3,6 +3,7 @@
 
 use super::group_images::draw_groups;
 use super::pipelines::{SplatPipelineKey, COVER_WORKGROUP};
+use super::prepared::PreparedSplats;
 use super::{FrameGroups, PointSplatter};
 use crate::error::Result;
 use crate::frame::Frame;
@@ -10,7 +11,6 @@ use crate::points::SplatScene;
 use crate::render::dispatch::dispatch_2d;
 use crate::render::pipeline::{begin_pass_to, cleared, PassTargets};
 use crate::render::specialize::Specialization;
-use crate::render::Made;
 use crate::target::SpatialTarget;
 use crate::warp::references::ReferenceImages;
 
@@ -24,33 +24,33 @@ pub(super) enum SplatOutput<'a> {
 
 impl PointSplatter {
     /// One cover + group + composite sequence per camera pass of `frame`.
+    /// (After `encode`'s checks and constants.)
     pub(super) fn encode_views(
-        &mut self,
+        &self,
         device: &wgpu::Device,
         encoder: &mut wgpu::CommandEncoder,
         scene: &SplatScene,
         frame: &Frame,
+        state: &PreparedSplats,
         output: SplatOutput<'_>,
     ) -> Result<()> {
-        let passes = self.passes(frame, scene.groups());
-        self.frame.write(device, frame);
-        self.params.write(device, &passes);
         let key = SplatPipelineKey {
             spec: Specialization::of(frame),
-            geometry: self.geometries(frame)[0],
+            geometry: self.geometries(frame, &state.plan)[0],
         };
         let pipelines = self.pipelines.get(&key)?;
-        let scratch = self.scratch.made("PointSplatter scratch")?;
-        let images = &self.images.made("PointSplatter group images")?.layers;
+        let scratch = &state.scratch;
+        let images = &state.images.layers;
+        let passes = self.passes(frame, scene.groups(), &state.plan).len();
         let FrameGroups {
             cover: cover_group,
             quad: quad_group,
             images: images_group,
             params: params_group,
-        } = self.frame_groups(device, scene)?;
+        } = self.frame_groups(device, scene, state)?;
         let workgroups = scene.count.div_ceil(COVER_WORKGROUP);
         let dispatch = dispatch_2d(device, workgroups);
-        for (i, _) in passes.iter().enumerate() {
+        for i in 0..passes {
             let offset = [self.params.offset(i)];
             self.fence.encode(
                 device,
