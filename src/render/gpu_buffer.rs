@@ -40,21 +40,36 @@ const MIN_BYTES: u64 = 16;
 pub(crate) struct GpuBuffer {
     label: &'static str,
     usage: wgpu::BufferUsages,
-    buffer: Option<wgpu::Buffer>,
+    /// At least [`MIN_BYTES`] from the start, so every binding has a buffer.
+    buffer: wgpu::Buffer,
     used: u64,
     /// The buffer's share of the memory budget.
     charge: Option<crate::budget::GpuCharge>,
 }
 
 impl GpuBuffer {
-    pub fn new(label: &'static str, usage: wgpu::BufferUsages) -> Self {
+    pub fn new(device: &wgpu::Device, label: &'static str, usage: wgpu::BufferUsages) -> Self {
         Self {
             label,
             usage,
-            buffer: None,
-            used: 0,
+            buffer: Self::allocate(device, label, usage, MIN_BYTES),
+            used: MIN_BYTES,
             charge: None,
         }
+    }
+
+    fn allocate(
+        device: &wgpu::Device,
+        label: &'static str,
+        usage: wgpu::BufferUsages,
+        bytes: u64,
+    ) -> wgpu::Buffer {
+        device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some(label),
+            size: bytes,
+            usage,
+            mapped_at_creation: false,
+        })
     }
 
     /// Room for `bytes` (`what` names them in the error when they exceed the storage-binding
@@ -70,25 +85,21 @@ impl GpuBuffer {
             check_storage_bytes(device, what.clone(), bytes)?;
         }
         let bytes = bytes.max(MIN_BYTES);
-        let capacity = self.buffer.as_ref().map_or(0, |b| b.size());
+        let capacity = self.buffer.size();
         if bytes > capacity || bytes < capacity / 4 {
             // Free before allocating (and charging) the replacement.
-            (self.buffer, self.charge) = (None, None);
+            self.buffer = Self::allocate(device, self.label, self.usage, MIN_BYTES);
+            (self.used, self.charge) = (MIN_BYTES, None);
             self.charge = Some(crate::budget::charge_gpu(|| what, bytes)?);
-            self.buffer = Some(device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some(self.label),
-                size: bytes,
-                usage: self.usage,
-                mapped_at_creation: false,
-            }));
+            self.buffer = Self::allocate(device, self.label, self.usage, bytes);
         }
         self.used = bytes;
         Ok(())
     }
 
-    /// The buffer (after [`GpuBuffer::ensure`]).
+    /// The buffer (of [`MIN_BYTES`] until the first [`GpuBuffer::ensure`]).
     pub fn buffer(&self) -> &wgpu::Buffer {
-        self.buffer.as_ref().expect("ensured before use")
+        &self.buffer
     }
 
     /// Bytes in use (what the last [`GpuBuffer::ensure`] asked for, at least 16).
@@ -99,7 +110,7 @@ impl GpuBuffer {
     /// A binding of exactly the bytes in use.
     pub fn binding(&self) -> wgpu::BindingResource<'_> {
         wgpu::BindingResource::Buffer(wgpu::BufferBinding {
-            buffer: self.buffer(),
+            buffer: &self.buffer,
             offset: 0,
             size: wgpu::BufferSize::new(self.used),
         })

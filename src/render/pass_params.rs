@@ -12,8 +12,8 @@ use bytemuck::Pod;
 
 /// Per-pass constants of type `T`, `stride` bytes apart.
 pub(crate) struct PassParams<T> {
-    /// This frame's constants.
-    buffer: Option<wgpu::Buffer>,
+    /// This frame's constants (zeros for one pass until the first write).
+    buffer: wgpu::Buffer,
     /// Bytes between consecutive passes' constants (the dynamic-offset alignment).
     pub stride: u64,
     label: &'static str,
@@ -23,9 +23,11 @@ pub(crate) struct PassParams<T> {
 impl<T: Pod> PassParams<T> {
     pub fn new(device: &wgpu::Device, label: &'static str) -> Self {
         let align = device.limits().min_uniform_buffer_offset_alignment as u64;
+        let stride = (std::mem::size_of::<T>() as u64).div_ceil(align) * align;
+        let zeros = vec![0u8; stride as usize];
         Self {
-            buffer: None,
-            stride: (std::mem::size_of::<T>() as u64).div_ceil(align) * align,
+            buffer: constants_buffer(device, label, wgpu::BufferUsages::UNIFORM, &zeros),
+            stride,
             label,
             _t: PhantomData,
         }
@@ -54,17 +56,13 @@ impl<T: Pod> PassParams<T> {
             bytes[at..at + std::mem::size_of::<T>()].copy_from_slice(bytemuck::bytes_of(p));
         }
         let buffer = constants_buffer(device, self.label, wgpu::BufferUsages::UNIFORM, &bytes);
-        self.buffer = Some(buffer);
-    }
-
-    fn buffer(&self) -> &wgpu::Buffer {
-        self.buffer.as_ref().expect("written before use")
+        self.buffer = buffer;
     }
 
     /// The binding resource for a bind-group entry (one `T`, offset chosen per pass).
     pub fn binding(&self) -> wgpu::BindingResource<'_> {
         wgpu::BindingResource::Buffer(wgpu::BufferBinding {
-            buffer: self.buffer(),
+            buffer: &self.buffer,
             offset: 0,
             size: wgpu::BufferSize::new(std::mem::size_of::<T>() as u64),
         })

@@ -140,7 +140,7 @@ impl<S: ?Sized> SceneWarp<S> {
         Ok(Self {
             options,
             references,
-            row_bounds: GpuBuffer::new("reference row bounds", wgpu::BufferUsages::STORAGE),
+            row_bounds: GpuBuffer::new(device, "reference row bounds", wgpu::BufferUsages::STORAGE),
             bounds_layout,
             bounds_pipeline,
             layout,

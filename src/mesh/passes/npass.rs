@@ -26,9 +26,8 @@ pub struct MeshNPass {
     frame: FrameBinding,
     npass: NPassHarness,
     single_view_depth: Option<Texture2d>,
-    /// This frame's view uniforms (one per view, dynamic offsets) and their bind group.
+    /// This frame's view uniforms (one per view, dynamic offsets).
     views: PassParams<ViewUniform>,
-    view_group: Option<wgpu::BindGroup>,
     prepared: Option<PreparedFor>,
     /// The parallel camera model's crop, recorded last.
     crop: crate::render::camera_crop::CameraCrop,
@@ -105,7 +104,6 @@ impl MeshNPass {
             view_layout,
             single_view_depth: None,
             views: PassParams::new(device, "view uniforms"),
-            view_group: None,
             prepared: None,
             crop: crate::render::camera_crop::CameraCrop::new(device)?,
         })
@@ -125,10 +123,11 @@ impl MeshNPass {
         frame: &Frame,
         target: &SpatialTarget,
     ) -> Result<()> {
-        self.write_frame_views(device, &frame.for_view_images());
+        let views = self.write_frame_views(device, &frame.for_view_images());
         let layers = self.npass.layers()?;
         for (i, layer) in layers.layer_views.iter().enumerate() {
-            self.draw(encoder, mesh, frame, i as u32, layer, &layers.depth_view);
+            let view = (&views, i as u32);
+            self.draw(encoder, mesh, frame, view, layer, &layers.depth_view);
         }
         self.npass.composite(device, encoder, &self.frame, target)?;
         self.crop.encode(device, encoder, frame, target);
@@ -146,41 +145,43 @@ impl MeshNPass {
     ) -> Result<()> {
         self.frame.write(device, frame);
         let camera = &frame.camera;
-        self.write_views(device, &[0.0], |vd| camera.view_uniform(vd));
+        let views = self.write_views(device, &[0.0], |vd| camera.view_uniform(vd));
         let depth = self
             .single_view_depth
             .made("MeshNPass single-view depth")?
             .view
             .clone();
-        self.draw(encoder, mesh, frame, 0, &target.view, &depth);
+        self.draw(encoder, mesh, frame, (&views, 0), &target.view, &depth);
         Ok(())
     }
 
-    /// This frame's constants and the uniforms of every view of its camera.
-    fn write_frame_views(&mut self, device: &wgpu::Device, frame: &Frame) {
+    /// This frame's constants and the uniforms of every view of its camera; returns the view
+    /// uniforms' bind group.
+    fn write_frame_views(&mut self, device: &wgpu::Device, frame: &Frame) -> wgpu::BindGroup {
         self.frame.write(device, frame);
         let camera = &frame.camera;
         let offsets: Vec<f32> = (0..camera.views).map(|i| camera.view_offset(i)).collect();
-        self.write_views(device, &offsets, |vd| camera.view_uniform(vd));
+        self.write_views(device, &offsets, |vd| camera.view_uniform(vd))
     }
 
-    /// This frame's view uniforms (`src/render/pass_params.rs`) and their bind group.
+    /// This frame's view uniforms (`src/render/pass_params.rs`) and their bind group, which
+    /// every draw of the frame takes.
     fn write_views(
         &mut self,
         device: &wgpu::Device,
         offsets: &[f32],
         uniform: impl Fn(f32) -> ViewUniform,
-    ) {
+    ) -> wgpu::BindGroup {
         let views: Vec<ViewUniform> = offsets.iter().map(|&vd| uniform(vd)).collect();
         self.views.write(device, &views);
-        self.view_group = Some(device.create_bind_group(&wgpu::BindGroupDescriptor {
+        device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("view"),
             layout: &self.view_layout,
             entries: &[wgpu::BindGroupEntry {
                 binding: 0,
                 resource: self.views.binding(),
             }],
-        }));
+        })
     }
 
     fn draw(
@@ -188,7 +189,7 @@ impl MeshNPass {
         encoder: &mut wgpu::CommandEncoder,
         mesh: &MeshBuffers,
         frame: &Frame,
-        view: u32,
+        view: (&wgpu::BindGroup, u32),
         color: &wgpu::TextureView,
         depth: &wgpu::TextureView,
     ) {
@@ -201,16 +202,16 @@ impl MeshNPass {
         );
     }
 
-    /// Draw view `view` into `colors` (the colour, and a reference's nearness) and `depth`.
+    /// Draw view `view` (the frame's view uniforms' bind group, the view's index) into `colors`
+    /// (the colour, and a reference's nearness) and `depth`.
     fn draw_to(
         &self,
         encoder: &mut wgpu::CommandEncoder,
         mesh: &MeshBuffers,
-        view: u32,
+        (view_group, view): (&wgpu::BindGroup, u32),
         colors: &[Option<wgpu::RenderPassColorAttachment<'_>>],
         depth: &wgpu::TextureView,
     ) {
-        let view_group = self.view_group.as_ref().expect("written before drawing");
         let mut pass = begin_pass_to(
             encoder,
             "mesh view",
@@ -317,14 +318,15 @@ impl ReferenceRenderer<MeshBuffers> for MeshNPass {
         images: &ReferenceImages,
     ) -> Result<()> {
         check_prepared("MeshNPass", &self.prepared, &PreparedFor::of(frame))?;
-        self.write_frame_views(device, frame);
+        let views = self.write_frame_views(device, frame);
         let layers = images.color.layer_views.iter();
         for (j, (color, nearness)) in layers.zip(&images.nearness.layer_views).enumerate() {
             let colors = [
                 Some(cleared(color, frame.background)),
                 Some(cleared(nearness, [0.0; 4])),
             ];
-            self.draw_to(encoder, mesh, j as u32, &colors, &images.color.depth_view);
+            let view = (&views, j as u32);
+            self.draw_to(encoder, mesh, view, &colors, &images.color.depth_view);
         }
         Ok(())
     }

@@ -150,8 +150,8 @@ impl PointSplatter {
             None => (None, None, None),
         };
         let mut scratch = scratch.unwrap_or_else(|| Scratch {
-            eye_splats: GpuBuffer::new("eye splats", wgpu::BufferUsages::STORAGE),
-            rects: GpuBuffer::new("splat cover rects", wgpu::BufferUsages::STORAGE),
+            eye_splats: GpuBuffer::new(device, "eye splats", wgpu::BufferUsages::STORAGE),
+            rects: GpuBuffer::new(device, "splat cover rects", wgpu::BufferUsages::STORAGE),
         });
         let n = scene.count as u64;
         let what = |buffer| move || format!("{buffer} bytes ({n} splats)");

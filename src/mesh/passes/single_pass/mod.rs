@@ -144,7 +144,7 @@ impl MeshSinglePass {
             frame: FrameBinding::new(device, &layouts.frame),
             layouts,
             pipelines: PipelineCache::new("single-pass mesh"),
-            scratch: Scratch::default(),
+            scratch: Scratch::new(device),
             prepared: None,
             crop: crate::render::camera_crop::CameraCrop::new(device)?,
             fence: StorageFence::new(device)?,

@@ -28,11 +28,11 @@ pub(super) struct Scratch {
     keys: Option<GpuBuffer>,
 }
 
-impl Default for Scratch {
-    fn default() -> Self {
+impl Scratch {
+    pub fn new(device: &wgpu::Device) -> Self {
         Self {
-            eye_triangles: GpuBuffer::new("eye triangles", wgpu::BufferUsages::STORAGE),
-            rects: GpuBuffer::new("cover rects", wgpu::BufferUsages::STORAGE),
+            eye_triangles: GpuBuffer::new(device, "eye triangles", wgpu::BufferUsages::STORAGE),
+            rects: GpuBuffer::new(device, "cover rects", wgpu::BufferUsages::STORAGE),
             depth: None,
             triangle_ids: None,
             keys: None,
@@ -106,7 +106,7 @@ impl Scratch {
                 let bytes = w as u64 * h as u64 * k as u64 * KEY_BYTES;
                 let usage = wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST;
                 self.keys
-                    .get_or_insert_with(|| GpuBuffer::new("nearest keys", usage))
+                    .get_or_insert_with(|| GpuBuffer::new(device, "nearest keys", usage))
                     .ensure(
                         device,
                         || format!("nearest-hit key bytes for {w}x{h}"),
