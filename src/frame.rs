@@ -72,7 +72,7 @@ pub struct FrameUniform {
     light: LightUniform,
     background: [f32; 4],
 }
-const _: () = assert!(std::mem::size_of::<FrameUniform>() == 288);
+const _: () = assert!(std::mem::size_of::<FrameUniform>() == 352);
 crate::shader::gpu_layout!(FrameUniform, "Frame", [camera, mask, light, background]);
 
 impl FrameUniform {

@@ -31,10 +31,16 @@ fn run(target: &str, data: &[u8]) {
         "transfer" => drop(TransferFunction::parse(&text)),
         "calibration" => {
             if let Ok(calibration) = Calibration::from_json(&text, "visual.json".as_ref()) {
-                drop(Display::new(DisplayKind::LookingGlass {
+                let display = Display::new(DisplayKind::LookingGlass {
                     calibration,
                     views: 45,
-                }));
+                });
+                if let Ok(display) = display {
+                    let mask = display.mask();
+                    for (x, y) in [(0, 0), (7, 3), (u32::MAX, u32::MAX)] {
+                        let _ = mask.pixel_views(x, y);
+                    }
+                }
             }
         }
         "display_spec" => {

@@ -16,6 +16,15 @@ fn slanted(views: u32, pitch: f64, slant: f64, phase: f64) -> Display {
     .unwrap()
 }
 
+/// A sample calibration with subpixel cells (`data/`), 49 views.
+fn gen3(name: &str) -> DisplayKind {
+    let path = format!("{}/data/{name}", env!("CARGO_MANIFEST_DIR"));
+    DisplayKind::LookingGlass {
+        views: 49,
+        calibration: Calibration::load(path.as_ref()).unwrap(),
+    }
+}
+
 fn sample_calibration() -> Calibration {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/data/lkg_sample_visual.json");
     Calibration::load(path.as_ref()).unwrap()
@@ -133,7 +142,8 @@ fn looking_glass_mapping_reproduces_the_holoplay_formula() {
 }
 
 /// docs/DESIGN.md §1: the WGSL mask equals the Rust mask on every subpixel of a 7680×4320 panel with a
-/// non-zero window origin, for every display kind.
+/// non-zero window origin, for every display kind (Looking Glass with and without subpixel
+/// cells; the window reaches past the cells' panel, whose rows count from its bottom).
 #[test]
 fn wgsl_mask_equals_rust_mask_on_an_8k_panel() {
     let ctx = common::gpu();
@@ -153,6 +163,8 @@ fn wgsl_mask_equals_rust_mask_on_an_8k_panel() {
             phase: 3.3,
         },
         lkg,
+        gen3("lkg_sample_32in_landscape_gen3_visual.json"),
+        gen3("lkg_sample_go_gen3_visual.json"),
     ];
     let size = [7680, 4320];
     for (i, kind) in kinds.into_iter().enumerate() {
@@ -183,4 +195,248 @@ fn wgsl_mask_equals_rust_mask_on_an_8k_panel() {
         }
         assert_eq!(mismatches, 0, "{:?}", display.kind);
     }
+}
+
+/// A configVersion 3 calibration (subpixel cells) as Looking Glass writes it.
+fn gen3_json(
+    pattern: u32,
+    cells: &[[f64; 6]],
+    flip_x: bool,
+    inv_view: Option<bool>,
+    size: [u32; 2],
+) -> String {
+    let cells: Vec<serde_json::Value> = cells
+        .iter()
+        .map(|c| {
+            serde_json::json!({
+                "ROffsetX": c[0], "ROffsetY": c[1], "GOffsetX": c[2],
+                "GOffsetY": c[3], "BOffsetX": c[4], "BOffsetY": c[5],
+            })
+        })
+        .collect();
+    let mut json = serde_json::json!({
+        "configVersion": "3.0",
+        "pitch": {"value": 44.75058319896644},
+        "slope": {"value": -6.874565686767793},
+        "center": {"value": 0.16935753461833172},
+        "DPI": {"value": 283.0},
+        "screenW": {"value": size[0] as f64},
+        "screenH": {"value": size[1] as f64},
+        "flipImageX": {"value": if flip_x { 1.0 } else { 0.0 }},
+        "CellPatternMode": {"value": pattern as f64},
+        "subpixelCells": cells,
+    });
+    if let Some(inv) = inv_view {
+        json["invView"] = serde_json::json!({"value": if inv { 1.0 } else { 0.0 }});
+    }
+    json.to_string()
+}
+
+/// Cells as on the current panels: channels shifted by about a third of a pixel across and a
+/// quarter up or down, alternating between cells (four distinct cells for pattern 3).
+const GEN3_CELLS: [[f64; 6]; 4] = [
+    [-0.31, 0.25, 0.28, 0.25, 0.0, -0.25],
+    [-0.31, -0.25, 0.28, -0.25, 0.0, 0.25],
+    [0.31, 0.25, -0.28, 0.25, 0.0, -0.25],
+    [0.31, -0.25, -0.28, -0.25, 0.0, 0.25],
+];
+
+/// The Looking Glass lenticular shader with subpixel cells (WebXR library 0.6, Unity plugin),
+/// written out here independently of the library: the view of channel `c` of panel pixel
+/// (x, y top-down) and `N·f`, to judge closeness to a view boundary.
+#[allow(clippy::too_many_arguments)]
+fn gen3_reference_view(
+    pattern: u32,
+    cells: &[[f64; 6]],
+    flip_x: bool,
+    inv_view: bool,
+    size: [u32; 2],
+    views: u32,
+    x: u32,
+    y: u32,
+    c: usize,
+) -> (u32, f64) {
+    let (pitch, slope, center, dpi) = (
+        44.75058319896644,
+        -6.874565686767793,
+        0.16935753461833172,
+        283.0,
+    );
+    let (w, h) = (size[0] as f64, size[1] as f64);
+    let y_gl = size[1] - 1 - y;
+    let u = (x as f64 + 0.5) / w;
+    let v = (y_gl as f64 + 0.5) / h;
+    let pitch_adjusted = pitch * w / dpi * (1.0f64 / slope).atan().cos();
+    let tilt = h / (w * slope) * if flip_x { -1.0 } else { 1.0 };
+    let cell = match pattern {
+        0 => 0,
+        1 => u32::from(x % 2 != y_gl % 2),
+        2 => x % 2,
+        3 => (y_gl + 2 * (x % 2)) % 4,
+        4 => y_gl % 2,
+        _ => unreachable!(),
+    } as usize
+        % cells.len();
+    let (dx, dy) = (cells[cell][2 * c], cells[cell][2 * c + 1]);
+    let a = (u + dx / w) + (v + dy / h) * tilt;
+    let p = a * pitch_adjusted - center;
+    let mut f = p - p.floor();
+    if inv_view {
+        f = 1.0 - f;
+    }
+    let scaled = f * views as f64;
+    ((scaled.floor() as u32).min(views - 1), scaled)
+}
+
+/// A cell pattern, its cells, `flipImageX` and `invView` (absent: `None`).
+type Gen3Case = (u32, &'static [[f64; 6]], bool, Option<bool>);
+
+/// Every cell pattern (and more patterns than cells, flipped panels, `invView`) against the
+/// formula on every subpixel of a full 3840×2160 panel.
+#[test]
+fn subpixel_cell_masks_equal_the_looking_glass_formula_on_a_full_panel() {
+    let size = [3840, 2160];
+    let views = 49;
+    let cases: [Gen3Case; 7] = [
+        (0, &GEN3_CELLS[..1], false, None),
+        (1, &GEN3_CELLS[..2], false, Some(false)),
+        (2, &GEN3_CELLS[..2], false, None),
+        (3, &GEN3_CELLS, false, None),
+        (4, &GEN3_CELLS[..2], false, None),
+        // Three cells for pattern 3's four indices: index 3 is cell 0 again.
+        (3, &GEN3_CELLS[..3], true, None),
+        (2, &GEN3_CELLS[..2], true, Some(true)),
+    ];
+    for (pattern, cells, flip_x, inv) in cases {
+        let json = gen3_json(pattern, cells, flip_x, inv, size);
+        let calibration = Calibration::from_json(&json, "gen3.json".as_ref()).unwrap();
+        let mask = Display::new(DisplayKind::LookingGlass { views, calibration })
+            .unwrap()
+            .mask();
+        assert_eq!(mask.views_per_pixel(), 3);
+        let (mut checked, mut boundary) = (0u64, 0u64);
+        for y in 0..size[1] {
+            for x in 0..size[0] {
+                for c in 0..3 {
+                    let inv = inv.unwrap_or(false);
+                    let (reference, scaled) =
+                        gen3_reference_view(pattern, cells, flip_x, inv, size, views, x, y, c);
+                    let ours = mask.view(x, y, c as u32);
+                    // 0.32 fixed point: only subpixels within ~(x + y)·2⁻³² lens periods of a
+                    // view boundary may differ (there `⌊N(1 − f)⌋` and `N − 1 − ⌊Nf⌋` differ too).
+                    let on_boundary = (scaled - scaled.round()).abs() < 1e-4;
+                    boundary += u64::from(on_boundary);
+                    assert!(
+                        ours == reference || on_boundary,
+                        "pattern {pattern} ({} cells, flip {flip_x}, inv {inv}) at ({x},{y},{c}): \
+                         {ours} vs {reference}",
+                        cells.len()
+                    );
+                    checked += 1;
+                }
+            }
+        }
+        assert_eq!(checked, 3840 * 2160 * 3);
+        assert!(
+            boundary < checked / 1000,
+            "pattern {pattern}: {boundary} near boundaries"
+        );
+    }
+}
+
+/// The cells matter: the same lens with a stripe puts most subpixels in another view (what a
+/// tool that ignores the cells shows on these panels).
+#[test]
+fn subpixel_cells_change_most_views_against_the_stripe() {
+    let size = [3840, 2160];
+    let json = gen3_json(3, &GEN3_CELLS, false, Some(false), size);
+    let cells = Calibration::from_json(&json, "gen3.json".as_ref()).unwrap();
+    let mut stripe = cells.clone();
+    stripe.cells = None;
+    let mask = |calibration| {
+        Display::new(DisplayKind::LookingGlass {
+            views: 49,
+            calibration,
+        })
+        .unwrap()
+        .mask()
+    };
+    let (cells, stripe) = (mask(cells), mask(stripe));
+    let mut differ = 0;
+    let mut total = 0;
+    for y in (0..size[1]).step_by(5) {
+        for x in (0..size[0]).step_by(3) {
+            for c in 0..3 {
+                differ += u32::from(cells.view(x, y, c) != stripe.view(x, y, c));
+                total += 1;
+            }
+        }
+    }
+    assert!(differ * 2 > total, "{differ} of {total} differ");
+}
+
+/// Calibration files with cells: the sample set loads, and broken cell tables are refused by
+/// name.
+#[test]
+fn gen3_calibrations_load_and_broken_cells_are_refused_by_name() {
+    for name in [
+        "lkg_sample_16in_landscape_gen3_visual.json",
+        "lkg_sample_16in_portrait_gen3_visual.json",
+        "lkg_sample_32in_landscape_gen3_visual.json",
+        "lkg_sample_go_gen3_visual.json",
+    ] {
+        let path = format!("{}/data/{name}", env!("CARGO_MANIFEST_DIR"));
+        let calibration = Calibration::load(path.as_ref()).unwrap();
+        assert!(calibration.cells.is_some(), "{name}");
+        assert!(!calibration.inv_view, "{name}: no invView reads as 0");
+        Display::parse(&format!("lkg:{path}")).unwrap();
+    }
+    let good = gen3_json(2, &GEN3_CELLS[..2], false, None, [3840, 2160]);
+    let refused = |edit: &dyn Fn(&mut serde_json::Value), wanted: &str| {
+        let mut json: serde_json::Value = serde_json::from_str(&good).unwrap();
+        edit(&mut json);
+        let err = Calibration::from_json(&json.to_string(), "v.json".as_ref())
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains(wanted) && err.contains("v.json"), "{err}");
+    };
+    refused(
+        &|j| j["CellPatternMode"]["value"] = 5.0.into(),
+        "CellPatternMode",
+    );
+    refused(
+        &|j| j["CellPatternMode"]["value"] = 1.5.into(),
+        "CellPatternMode",
+    );
+    refused(
+        &|j| drop(j.as_object_mut().unwrap().remove("CellPatternMode")),
+        "CellPatternMode",
+    );
+    refused(
+        &|j| j["subpixelCells"][1]["GOffsetY"] = "x".into(),
+        "subpixelCells[1].GOffsetY",
+    );
+    refused(
+        &|j| {
+            drop(
+                j["subpixelCells"][0]
+                    .as_object_mut()
+                    .unwrap()
+                    .remove("BOffsetX"),
+            )
+        },
+        "BOffsetX",
+    );
+    refused(&|j| j["subpixelCells"] = 3.into(), "subpixelCells");
+    refused(&|j| j["screenH"]["value"] = 2160.5.into(), "screenH");
+    refused(
+        &|j| j["flipImageY"] = serde_json::json!({"value": 1.0}),
+        "flipImageY",
+    );
+    // An empty cell list is the stripe model, as Looking Glass's loaders read it.
+    let mut json: serde_json::Value = serde_json::from_str(&good).unwrap();
+    json["subpixelCells"] = serde_json::json!([]);
+    json["invView"] = serde_json::json!({"value": 1.0});
+    let stripe = Calibration::from_json(&json.to_string(), "v.json".as_ref()).unwrap();
+    assert!(stripe.cells.is_none());
 }

@@ -1,6 +1,7 @@
 //! Single-pass meshes against the N-pass oracle: focal plane in front of / through / behind the
 //! geometry, geometry far beyond 2·fd (where the paper's quad formula fails), the camera inside
-//! the scene (near-plane crossing), N = 1 … 64, all display kinds, every visibility mode.
+//! the scene (near-plane crossing), N = 1 … 64, all display kinds (Looking Glass's subpixel
+//! cells too), every visibility mode.
 
 mod common;
 
@@ -125,9 +126,15 @@ fn matches_npass_for_every_display_kind_and_view_count() {
         ("lenticular8", "lenticular:8", 8),
         ("slanted64", "slanted:64,9.5,-0.6,1.3", 64),
         ("slanted2", "slanted:2,4.5,0.5,0", 2),
+        (
+            "lkg-gen3-cells",
+            "lkg:data/lkg_sample_32in_landscape_gen3_visual.json",
+            45,
+        ),
     ];
     for (name, spec, views) in cases {
-        let frame = Frame::new(framed(&mesh, views, 0.05, 1.2), display(spec), SIZE).unwrap();
+        let spec = spec.replace("lkg:", concat!("lkg:", env!("CARGO_MANIFEST_DIR"), "/"));
+        let frame = Frame::new(framed(&mesh, views, 0.05, 1.2), display(&spec), SIZE).unwrap();
         assert_matches_npass(name, &mesh, &frame);
     }
 }

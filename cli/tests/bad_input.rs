@@ -256,8 +256,9 @@ fn calibration_with_missing_or_bad_fields_is_an_error() {
     assert!(Calibration::from_json(&zero.to_string(), "v.json".as_ref()).is_err());
 }
 
-/// What the 1.x interleaving does not model is refused by name, never ignored: the newer
-/// calibration format's per-cell subpixel layouts, and the vertical / subpixel-order flips.
+/// What the interleaving does not model is refused by name, never ignored: the vertical and
+/// subpixel-order flips, and a cell table that is incomplete (configVersion 3's subpixel cells
+/// themselves are read: tests/mask.rs).
 #[test]
 fn looking_glass_calibrations_the_model_does_not_cover_are_refused_clearly() {
     let (_, json) = sample_calibration();
@@ -275,10 +276,14 @@ fn looking_glass_calibrations_the_model_does_not_cover_are_refused_clearly() {
         &|v| {
             v["configVersion"] = "3.0".into();
             v["subpixelCells"] = serde_json::json!([{ "ROffsetX": 0.0 }]);
+            v["CellPatternMode"] = 2.0.into();
         },
-        "configVersion \"3.0\": 'subpixelCells'",
+        "subpixelCells[0]: missing field 'ROffsetY'",
     );
-    refused(&|v| v["CellPatternMode"] = 2.0.into(), "'CellPatternMode'");
+    refused(
+        &|v| v["subpixelCells"] = serde_json::json!([{ "ROffsetX": 0.0 }]),
+        "'subpixelCells' needs 'CellPatternMode'",
+    );
     refused(
         &|v| v["flipImageY"]["value"] = 1.0.into(),
         "'flipImageY' = 1",

@@ -10,9 +10,15 @@
 //! `φ = 1.5 + 3(H − ½)/slope − center·P` (σ = +1) or `φ = −½ − 3(H − ½)/slope − center·P` (σ = −1).
 //! `invView` becomes the view-order flip `N − 1 − v`, which differs from `⌊N(1 − f)⌋` only on
 //! exact view boundaries (a set of measure zero; the holoplay shader clamps those anyway).
+//!
+//! Calibrations with subpixel cells (`configVersion` "3.0") place each channel by its cell
+//! instead of the stripe (`subpixel_cells.rs`); the phase is then linear in the pixel column
+//! and row with a constant per cell and channel, which the mask takes directly
+//! ([`Calibration::cell_geometry`]).
 
 use std::path::{Path, PathBuf};
 
+use super::subpixel_cells::SubpixelCells;
 use crate::error::{Error, Result};
 
 /// The calibration values the interleaving uses. Field names follow `visual.json`.
@@ -32,8 +38,24 @@ pub struct Calibration {
     pub screen_h: f64,
     /// Panel mirrored horizontally (reverses subpixel order and slant).
     pub flip_image_x: bool,
-    /// Views run right to left.
+    /// Views run right to left. Calibrations with subpixel cells may leave `invView` out;
+    /// it is then 0, as Looking Glass's own loaders read it.
     pub inv_view: bool,
+    /// The subpixel cells of a `configVersion` "3.0" calibration; `None`: the RGB stripe.
+    pub cells: Option<SubpixelCells>,
+}
+
+/// The mask of a calibration with subpixel cells, in lens periods (before the fixed point):
+/// the phase of channel c of panel pixel (x, y top-down) is
+/// `x·step_x + y·step_y + phases[cell][c]`, the cell from `pattern` and `y_gl = panel_top − y`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct CellGeometry {
+    pub pattern: super::CellPattern,
+    pub panel_top: u32,
+    pub step_x: f64,
+    pub step_y: f64,
+    /// Per cell index 0…3 (already taken modulo the number of cells), per channel R, G, B.
+    pub phases: [[f64; 3]; 4],
 }
 
 /// The slanted-model parameters a calibration maps to.
@@ -72,23 +94,8 @@ impl Calibration {
                 .filter(|x| x.is_finite())
                 .ok_or_else(|| err(format!("field '{name}' is not a finite number: {v}")))
         };
-        // The newer format (configVersion "3.0", Looking Glass Go / 16" / 32" Spatial
-        // Displays) describes each lens cell's subpixel layout instead of one RGB stripe; the
-        // interleaving here is the 1.x model (one pitch, slope and centre for every subpixel).
-        for name in ["subpixelCells", "CellPatternMode"] {
-            if json.get(name).is_some() {
-                let version = json
-                    .get("configVersion")
-                    .map_or("?".into(), |v| v.to_string());
-                return Err(err(format!(
-                    "configVersion {version}: '{name}' (per-cell subpixel layouts of the newer \
-                     calibration format) is not supported; only the 1.x model of one pitch, \
-                     slope and center is"
-                )));
-            }
-        }
-        // Orientation flags the 1.x model does not cover: refused rather than ignored, so a
-        // panel mounted upside down or with BGR subpixels never gets a wrong mask silently.
+        // Orientation flags neither model covers: refused rather than ignored, so a panel
+        // mounted upside down or with BGR subpixels never gets a wrong mask silently.
         for (name, meaning) in [
             ("flipImageY", "a vertically flipped panel"),
             ("flipSubp", "reversed subpixel order"),
@@ -99,6 +106,11 @@ impl Calibration {
                 )));
             }
         }
+        let cells = SubpixelCells::from_json(&json, &err)?;
+        let inv_view = match json.get("invView") {
+            None if cells.is_some() => false,
+            _ => field("invView")? != 0.0,
+        };
         let calibration = Self {
             pitch: field("pitch")?,
             slope: field("slope")?,
@@ -107,7 +119,8 @@ impl Calibration {
             screen_w: field("screenW")?,
             screen_h: field("screenH")?,
             flip_image_x: field("flipImageX")? != 0.0,
-            inv_view: field("invView")? != 0.0,
+            inv_view,
+            cells,
         };
         for (name, v) in [
             ("pitch", calibration.pitch),
@@ -122,6 +135,13 @@ impl Calibration {
         if calibration.slope == 0.0 {
             return Err(err("field 'slope' must not be 0".into()));
         }
+        // The cell of a pixel counts rows from the panel's bottom.
+        let h = calibration.screen_h;
+        if calibration.cells.is_some() && (h.fract() != 0.0 || h > u32::MAX as f64) {
+            return Err(err(format!(
+                "field 'screenH' = {h}: subpixel cells need a whole number of rows"
+            )));
+        }
         Ok(calibration)
     }
 
@@ -131,15 +151,22 @@ impl Calibration {
     }
 
     /// The holoplay shader's lens phase `frac(a)` in f64 (before `invView`), for panel pixel
-    /// (x, y top-down) and subpixel i. The reference the slanted mapping is tested against.
+    /// (x, y top-down) and subpixel i (with cells: channel i at its cell's offset).
     pub fn holoplay_phase(&self, x: u32, y: u32, i: u32) -> f64 {
         let sigma = if self.flip_image_x { -1.0 } else { 1.0 };
         let (w, h) = (self.screen_w, self.screen_h);
         let u = (x as f64 + 0.5) / w;
-        let v = (h - 1.0 - y as f64 + 0.5) / h;
-        let subp = sigma / (3.0 * w);
+        let y_gl = h - 1.0 - y as f64;
+        let v = (y_gl + 0.5) / h;
         let tilt = sigma * h / (w * self.slope);
-        let a = (u + i as f64 * subp + v * tilt) * self.screen_pitch() - self.center;
+        let a = match &self.cells {
+            Some(cells) => {
+                let [dx, dy] = cells.cell(x, y_gl as i64 as u32).offsets[i as usize];
+                (u + dx / w) + (v + dy / h) * tilt
+            }
+            None => u + i as f64 * sigma / (3.0 * w) + v * tilt,
+        };
+        let a = a * self.screen_pitch() - self.center;
         a - a.floor()
     }
 
@@ -150,6 +177,30 @@ impl Calibration {
             f = 1.0 - f;
         }
         ((f * views as f64).floor() as u32).min(views.saturating_sub(1))
+    }
+
+    /// The mask of a calibration with cells (module docs): multiplying out
+    /// `(u + dx/W)·pitch′ + (v + dy/H)·tilt·pitch′ − center` with `y_gl = H − 1 − y`.
+    pub(crate) fn cell_geometry(&self) -> Option<CellGeometry> {
+        let cells = self.cells.as_ref()?;
+        let sigma = if self.flip_image_x { -1.0 } else { 1.0 };
+        let (w, h) = (self.screen_w, self.screen_h);
+        let per_x = self.screen_pitch() / w;
+        let per_y = sigma * self.screen_pitch() / (w * self.slope);
+        let mut phases = [[0.0; 3]; 4];
+        for (index, phase) in phases.iter_mut().enumerate() {
+            let cell = &cells.cells[index % cells.cells.len()];
+            for (c, [dx, dy]) in cell.offsets.iter().enumerate() {
+                phase[c] = per_x * (0.5 + dx) + per_y * (h - 0.5 + dy) - self.center;
+            }
+        }
+        Some(CellGeometry {
+            pattern: cells.pattern,
+            panel_top: (h as u32).wrapping_sub(1),
+            step_x: per_x,
+            step_y: -per_y,
+            phases,
+        })
     }
 
     pub(crate) fn slanted(&self) -> SlantedEquivalent {

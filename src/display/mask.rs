@@ -6,6 +6,10 @@
 //! `wgsl/shared/mask.wgsl` reproduces it bit for bit. A, B, C are rounded *up*: the fixed-point
 //! phase is never below the exact one, so a subpixel whose exact phase sits on a view boundary
 //! (every lenticular pixel, for instance) gets the exact view.
+//!
+//! Subpixel cells (`subpixel_cells.rs`) replace the subpixel column by the pixel column and the
+//! one phase C by one per cell and channel: `t = x·A + y·B + C[cell][c]`, the cell from the
+//! pattern, the column and the row counted from the panel's bottom.
 
 use bytemuck::{Pod, Zeroable};
 
@@ -20,6 +24,8 @@ pub(crate) struct MaskGeometry {
     pub origin: [u32; 2],
     pub flip_views: bool,
     pub bgr: bool,
+    /// Subpixel cells: the steps and phases in lens periods instead of pitch, slant and phase.
+    pub cells: Option<super::looking_glass::CellGeometry>,
 }
 
 /// A compiled display mask: `view(x, y, c)` for window pixel (x, y), channel c (0 = R).
@@ -31,6 +37,7 @@ pub struct Mask {
 const FLAG_SUBPIXEL: u32 = 1;
 const FLAG_FLIP: u32 = 2;
 const FLAG_BGR: u32 = 4;
+const FLAG_CELLS: u32 = 8;
 
 /// GPU form of [`Mask`]. Keep in sync with `struct DisplayMask` in `wgsl/shared/mask.wgsl`.
 #[repr(C)]
@@ -43,9 +50,17 @@ pub struct MaskUniform {
     origin_x: u32,
     origin_y: u32,
     flags: u32,
-    _pad: u32,
+    /// Subpixel cells: the `CellPatternMode`.
+    cell_pattern: u32,
+    /// Subpixel cells: the panel's last row (H − 1), from which rows count upwards.
+    panel_top: u32,
+    _pad: [u32; 3],
+    /// Subpixel cells: the phase of R, G, B for cell index 0…3.
+    cell_r: [u32; 4],
+    cell_g: [u32; 4],
+    cell_b: [u32; 4],
 }
-const _: () = assert!(std::mem::size_of::<MaskUniform>() == 32);
+const _: () = assert!(std::mem::size_of::<MaskUniform>() == 96);
 crate::shader::gpu_layout!(
     MaskUniform,
     "DisplayMask",
@@ -56,7 +71,12 @@ crate::shader::gpu_layout!(
         views,
         origin_x,
         origin_y,
-        flags
+        flags,
+        cell_pattern,
+        panel_top,
+        cell_r,
+        cell_g,
+        cell_b
     ]
 );
 
@@ -74,20 +94,33 @@ fn fixed_frac_ceil(v: f64) -> u32 {
 impl Mask {
     pub(crate) fn new(g: MaskGeometry) -> Self {
         let flag = |on: bool, bit: u32| if on { bit } else { 0 };
-        let flags =
-            flag(g.subpixel, FLAG_SUBPIXEL) | flag(g.flip_views, FLAG_FLIP) | flag(g.bgr, FLAG_BGR);
-        Self {
-            uniform: MaskUniform {
-                step_column: fixed_frac_ceil(1.0 / g.pitch),
-                step_row: fixed_frac_ceil(g.slant / g.pitch),
-                phase: fixed_frac_ceil(g.phase / g.pitch),
-                views: g.views,
-                origin_x: g.origin[0],
-                origin_y: g.origin[1],
-                flags,
-                _pad: 0,
-            },
+        let flags = flag(g.subpixel, FLAG_SUBPIXEL)
+            | flag(g.flip_views, FLAG_FLIP)
+            | flag(g.bgr, FLAG_BGR)
+            | flag(g.cells.is_some(), FLAG_CELLS);
+        let mut uniform = MaskUniform {
+            step_column: fixed_frac_ceil(1.0 / g.pitch),
+            step_row: fixed_frac_ceil(g.slant / g.pitch),
+            phase: fixed_frac_ceil(g.phase / g.pitch),
+            views: g.views,
+            origin_x: g.origin[0],
+            origin_y: g.origin[1],
+            flags,
+            ..Zeroable::zeroed()
+        };
+        if let Some(cells) = g.cells {
+            uniform.step_column = fixed_frac_ceil(cells.step_x);
+            uniform.step_row = fixed_frac_ceil(cells.step_y);
+            uniform.phase = 0;
+            uniform.cell_pattern = cells.pattern.mode();
+            uniform.panel_top = cells.panel_top;
+            for (i, phases) in cells.phases.iter().enumerate() {
+                uniform.cell_r[i] = fixed_frac_ceil(phases[0]);
+                uniform.cell_g[i] = fixed_frac_ceil(phases[1]);
+                uniform.cell_b[i] = fixed_frac_ceil(phases[2]);
+            }
         }
+        Self { uniform }
     }
 
     /// Number of views N.
@@ -116,16 +149,21 @@ impl Mask {
         let m = &self.uniform;
         let slot = if m.flags & FLAG_BGR != 0 { 2 - c } else { c };
         let px = x.wrapping_add(m.origin_x);
-        let column = if m.flags & FLAG_SUBPIXEL != 0 {
-            px.wrapping_mul(3).wrapping_add(slot)
-        } else {
-            px
-        };
         let row = y.wrapping_add(m.origin_y);
+        let (column, phase) = if m.flags & FLAG_CELLS != 0 {
+            let up = m.panel_top.wrapping_sub(row);
+            let cell = cell_index(m.cell_pattern, px, up) as usize;
+            let phases = [m.cell_r, m.cell_g, m.cell_b];
+            (px, phases[slot as usize][cell])
+        } else if m.flags & FLAG_SUBPIXEL != 0 {
+            (px.wrapping_mul(3).wrapping_add(slot), m.phase)
+        } else {
+            (px, m.phase)
+        };
         let t = column
             .wrapping_mul(m.step_column)
             .wrapping_add(row.wrapping_mul(m.step_row))
-            .wrapping_add(m.phase);
+            .wrapping_add(phase);
         let v = mul_high(t, m.views);
         if m.flags & FLAG_FLIP != 0 {
             m.views - 1 - v
@@ -137,6 +175,19 @@ impl Mask {
     /// The three channel views of pixel (x, y).
     pub fn pixel_views(&self, x: u32, y: u32) -> [u32; 3] {
         [self.view(x, y, 0), self.view(x, y, 1), self.view(x, y, 2)]
+    }
+}
+
+/// The cell index 0…3 of panel column `x`, row `up` from the bottom, for `CellPatternMode`
+/// `pattern` (`subpixel_cells.rs`; `mask_cell` in `wgsl/shared/mask.wgsl`).
+#[inline]
+fn cell_index(pattern: u32, x: u32, up: u32) -> u32 {
+    match pattern {
+        1 => (x ^ up) & 1,
+        2 => x & 1,
+        3 => up.wrapping_add(2 * (x & 1)) & 3,
+        4 => up & 1,
+        _ => 0,
     }
 }
 

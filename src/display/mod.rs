@@ -7,9 +7,11 @@
 mod looking_glass;
 mod mask;
 mod spec;
+mod subpixel_cells;
 
 pub use looking_glass::Calibration;
 pub use mask::{hubner8_paper_view, Mask, MaskUniform};
+pub use subpixel_cells::{CellPattern, SubpixelCell, SubpixelCells};
 
 use crate::error::{Error, Result};
 
@@ -167,6 +169,10 @@ impl Display {
 
     /// Compile to the mask evaluated on CPU and GPU.
     pub fn mask(&self) -> Mask {
+        let cells = match &self.kind {
+            DisplayKind::LookingGlass { calibration, .. } => calibration.cell_geometry(),
+            _ => None,
+        };
         let (pitch, slant, phase, subpixel, extra_bgr, extra_flip) = match &self.kind {
             DisplayKind::Lenticular { views } => (*views as f64, 0.0, 0.0, false, false, false),
             // Pitch 1: the phase advances by whole periods from pixel to pixel, so every pixel
@@ -187,9 +193,12 @@ impl Display {
                 phase,
                 ..
             } => (*pitch, *slant, *phase, true, false, false),
+            // With cells the channel order is the cells' (`cells` above), not a reversed
+            // stripe.
             DisplayKind::LookingGlass { calibration, .. } => {
                 let s = calibration.slanted();
-                (s.pitch, s.slant, s.phase, true, s.bgr, s.flip_views)
+                let bgr = s.bgr && cells.is_none();
+                (s.pitch, s.slant, s.phase, true, bgr, s.flip_views)
             }
         };
         Mask::new(mask::MaskGeometry {
@@ -201,6 +210,7 @@ impl Display {
             origin: self.origin,
             flip_views: self.flip_views ^ extra_flip,
             bgr: self.bgr ^ extra_bgr,
+            cells,
         })
     }
 }
