@@ -62,7 +62,8 @@ pub struct DisplayArgs {
     /// (view V of N on every pixel: one full-resolution view by any method)
     #[arg(long, default_value = "hubner8")]
     pub display: String,
-    /// Number of views (Looking Glass: the quilt's view count; others: must match the display).
+    /// Number of views (Looking Glass: default the family's, e.g. 49 for a 16" Spatial Display,
+    /// 45 where the serial names none; others: must match the display).
     #[arg(long)]
     pub views: Option<u32>,
     /// Window origin on the panel in pixels, X,Y.
@@ -77,6 +78,22 @@ pub struct DisplayArgs {
 }
 
 impl DisplayArgs {
+    /// These flags as a command line would repeat them, with the view count `views` the run
+    /// used (so that another command sees the same display).
+    pub fn flags(&self, views: u32) -> String {
+        let mut flags = format!("--display {} --views {views}", self.display);
+        if self.origin != [0, 0] {
+            flags += &format!(" --origin {},{}", self.origin[0], self.origin[1]);
+        }
+        if self.flip_views {
+            flags += " --flip-views";
+        }
+        if self.bgr {
+            flags += " --bgr";
+        }
+        flags
+    }
+
     /// Build the display these flags describe.
     pub fn display(&self) -> Result<Display> {
         let mut display = Display::parse(&self.display)?;
@@ -89,6 +106,15 @@ impl DisplayArgs {
         Ok(display)
     }
 }
+
+/// The image size: `--size`, else the display's panel (a Looking Glass calibration's), else
+/// [`DEFAULT_SIZE`].
+pub fn image_size(size: Option<[u32; 2]>, display: &Display) -> [u32; 2] {
+    size.or(display.panel_size()).unwrap_or(DEFAULT_SIZE)
+}
+
+/// The image size of displays that do not say theirs.
+pub const DEFAULT_SIZE: [u32; 2] = [512, 512];
 
 /// Create the GPU context (adapter from WGPU_BACKEND / WGPU_ADAPTER_NAME) and log it.
 pub fn gpu() -> Result<autostereo::gpu::GpuContext> {
@@ -117,7 +143,8 @@ pub fn check_output(path: &std::path::Path) -> Result<()> {
 /// Camera flags shared by the renderers.
 #[derive(clap::Args, Clone, Debug)]
 pub struct CameraArgs {
-    /// Separation of adjacent views, scene units (default: 5 % of the bounding radius).
+    /// Separation of adjacent views, scene units (default: a Looking Glass calibration's
+    /// viewCone, else 5 % of the bounding radius).
     #[arg(long, conflicts_with = "baseline")]
     separation: Option<f32>,
     /// Distance between the outermost views instead (separation = B / (N − 1)): keeps the
@@ -152,13 +179,15 @@ fn camera_model_parser(
 }
 
 impl CameraArgs {
-    /// Frame `bounds` with these settings.
+    /// Frame `bounds` with these settings for `display`: without --separation or --baseline,
+    /// a display's view cone (a Looking Glass calibration's `viewCone`) spreads the views.
     pub fn camera(
         &self,
         bounds: autostereo::camera::Bounds,
-        views: u32,
+        display: &Display,
         size: [u32; 2],
     ) -> Result<MultiViewCamera> {
+        let views = display.views();
         let aspect = size[0] as f32 / size[1] as f32;
         let separation = match self.baseline {
             Some(b) if views > 1 => Some(b / (views - 1) as f32),
@@ -174,6 +203,9 @@ impl CameraArgs {
             camera.focal_distance *= s;
         }
         camera.model = self.camera;
+        if let (None, Some(cone)) = (separation, display.view_cone()) {
+            camera.spread_over_cone(cone)?;
+        }
         camera.validate()?;
         Ok(camera)
     }
@@ -192,9 +224,9 @@ pub struct RenderArgs {
     pub display: DisplayArgs,
     #[command(flatten)]
     pub camera: CameraArgs,
-    /// Image size WxH in pixels.
-    #[arg(long, value_parser = parse_size, default_value = "512x512")]
-    pub size: [u32; 2],
+    /// Image size WxH in pixels (default: a Looking Glass calibration's panel, else 512x512).
+    #[arg(long, value_parser = parse_size)]
+    pub size: Option<[u32; 2]>,
     /// Rendering method: single-pass | n-pass | single-view | tiled | layered | mrt | warp
     /// (tiled, layered and mrt duplicate the geometry per view in one draw; warp renders
     /// --references views and synthesises the others; docs/USAGE.md compares them).
@@ -299,8 +331,9 @@ impl RenderArgs {
     /// The frame for a scene within `bounds`: display, camera framing, size.
     pub fn frame(&self, bounds: autostereo::camera::Bounds) -> Result<Frame> {
         let display = self.display.display()?;
-        let camera = self.camera.camera(bounds, display.views(), self.size)?;
-        let mut frame = Frame::new(camera, display, self.size)?;
+        let size = image_size(self.size, &display);
+        let camera = self.camera.camera(bounds, &display, size)?;
+        let mut frame = Frame::new(camera, display, size)?;
         frame.view_scale = self.view_scale;
         frame.validate()?;
         Ok(frame)

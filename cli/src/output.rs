@@ -73,9 +73,9 @@ impl OutputArg {
     }
 }
 
-/// The two views of the stereo formats: `eyes`, or the two nearest the middle.
+/// The two views of the stereo formats: `eyes`, or [`default_eyes`].
 pub fn eye_views(eyes: Option<[u32; 2]>, views: u32) -> Result<[u32; 2]> {
-    let [l, r] = eyes.unwrap_or([(views - 1) / 2, (views / 2).min(views - 1)]);
+    let [l, r] = eyes.unwrap_or(default_eyes(views));
     for v in [l, r] {
         if v >= views {
             bail!(
@@ -85,6 +85,17 @@ pub fn eye_views(eyes: Option<[u32; 2]>, views: u32) -> Result<[u32; 2]> {
         }
     }
     Ok([l, r])
+}
+
+/// The default stereo pair: two views a quarter of the cone apart (at least adjacent ones)
+/// around the middle, so that the pair has real disparity for any N (45 views: 16 and 27).
+pub fn default_eyes(views: u32) -> [u32; 2] {
+    if views < 2 {
+        return [0, 0];
+    }
+    let apart = ((views - 1) / 4).max(1);
+    let left = (views - 1 - apart) / 2;
+    [left, left + apart]
 }
 
 /// What a render command writes after its timed run: `--quilt-out` (the tiled method's atlas,
@@ -128,13 +139,18 @@ pub fn write<S: ?Sized>(
     out: &Path,
 ) -> Result<Vec<PathBuf>> {
     let views = frame.camera.views;
-    let mut one = |view: u32, size: [u32; 2]| -> Result<SpatialTarget> {
+    // `own_aspect`: seen at the image's own aspect (a quilt's tiles: a Looking Glass's are
+    // the panel's); else at the frame's (the half-size stereo formats are squeezed).
+    let mut one = |view: u32, size: [u32; 2], own_aspect: bool| -> Result<SpatialTarget> {
         let display = Display::parse(&format!("view:{views},{view}"))?;
-        let eye = Frame {
+        let mut eye = Frame {
             display,
             size,
             ..frame.clone()
         };
+        if own_aspect {
+            eye.camera.aspect = size[0] as f32 / size[1] as f32;
+        }
         let target = SpatialTarget::new(&ctx.device, size)?;
         renderer
             .render(&ctx.device, &ctx.queue, scene, &eye, &target)
@@ -143,7 +159,7 @@ pub fn write<S: ?Sized>(
     };
     if let Some((format, eye)) = common.output.stereo(frame.size) {
         let [l, r] = eye_views(common.eyes, views)?;
-        let (left, right) = (one(l, eye)?, one(r, eye)?);
+        let (left, right) = (one(l, eye, false)?, one(r, eye, false)?);
         let output = SpatialTarget::new(&ctx.device, format.output_size(eye))?;
         let mut encoder = ctx
             .device
@@ -168,7 +184,7 @@ pub fn write<S: ?Sized>(
             let mut written = Vec::new();
             for v in 0..views {
                 let path = PathBuf::from(format!("{}_view{v}.png", stem.display()));
-                one(v, frame.size)?
+                one(v, frame.size, false)?
                     .read(&ctx.device, &ctx.queue)?
                     .save_png(&path)?;
                 written.push(path);
@@ -176,17 +192,20 @@ pub fn write<S: ?Sized>(
             Ok(written)
         }
         OutputArg::Quilt => {
-            let layout = match common.quilt_grid {
-                Some([cols, rows]) => {
+            // A Looking Glass's own quilt unless --quilt says otherwise: the family's grid,
+            // tiles of the panel's aspect within the family's quilt size.
+            let layout = match (common.quilt_grid, frame.display.default_quilt(views)) {
+                (Some([cols, rows]), _) => {
                     QuiltLayout::with_grid(cols, rows, frame.size, views).context("--quilt")?
                 }
-                None => QuiltLayout::for_views(views, frame.size),
+                (None, Some(lkg)) => lkg,
+                (None, None) => QuiltLayout::for_views(views, frame.size),
             };
             let [w, h] = layout.size();
             RgbImage::check_size(w, h).context("--output quilt")?;
             let mut quilt = RgbImage::new(w, h);
             for v in 0..views {
-                let tile = one(v, frame.size)?.read(&ctx.device, &ctx.queue)?;
+                let tile = one(v, layout.tile, true)?.read(&ctx.device, &ctx.queue)?;
                 let [tx, ty] = layout.tile_origin(v);
                 for y in 0..tile.height {
                     let src = (y * tile.width * 3) as usize;
@@ -209,6 +228,23 @@ pub fn write<S: ?Sized>(
                 }
             }
             Ok(vec![out.to_path_buf()])
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn default_eyes_are_a_quarter_of_the_cone_apart() {
+        use super::default_eyes;
+        assert_eq!(default_eyes(45), [16, 27]);
+        assert_eq!(default_eyes(49), [18, 30]);
+        assert_eq!(default_eyes(8), [3, 4]);
+        assert_eq!(default_eyes(2), [0, 1]);
+        assert_eq!(default_eyes(1), [0, 0]);
+        for n in 2..=256 {
+            let [l, r] = default_eyes(n);
+            assert!(l < r && r < n, "{n}: {l},{r}");
         }
     }
 }

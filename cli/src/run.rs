@@ -102,7 +102,7 @@ pub fn run_fields(
         "views": frame.camera.views,
         "views_per_pixel": frame.display.views_per_pixel(),
         "display": common.display.display,
-        "size": common.size,
+        "size": frame.size,
         "adapter": ctx.adapter_label(),
         "ms": run.ms,
         "frames": common.frames,
@@ -121,16 +121,20 @@ pub fn how_to_look(out: &Path, common: &crate::args::RenderArgs, frame: &Frame) 
     if common.json {
         return;
     }
-    let n = frame.camera.views;
-    let (l, r) = ((n - 1) / 2, (n / 2).min(n - 1));
+    let [l, r] = crate::output::default_eyes(frame.camera.views);
+    let display = common.display.flags(frame.camera.views);
+    let stem = out
+        .file_stem()
+        .map_or("out".into(), |s| s.to_string_lossy());
     eprintln!(
-        "{} is interleaved for {} (it looks right only through that display). Without one: \
-         `autostereo views {} --display {} --anaglyph {l},{r} --out anaglyph.png` (red-cyan), \
-         or live in a window: `autostereo view --preview side-by-side`.",
+        "{} is interleaved for {display} (it looks right only through that display). Without \
+         one: render the same command with `--output anaglyph --out {stem}_anaglyph.png` (red-cyan \
+         glasses; views {l} and {r}, --eyes L,R chooses), or pick them from this image with \
+         `autostereo views {} {display} --anaglyph {l},{r} --out {stem}_anaglyph.png` (streaky: \
+         each view has only its own subpixels), or look live in a window: `autostereo view \
+         {display} --preview side-by-side`.",
         out.display(),
-        common.display.display,
         out.display(),
-        common.display.display,
     );
 }
 
@@ -151,8 +155,8 @@ pub fn run_summary(
     format!(
         "{} views, {}x{}, {:.2} ms/frame (median of {}, {:?}) on {}",
         frame.camera.views,
-        common.size[0],
-        common.size[1],
+        frame.size[0],
+        frame.size[1],
         run.ms,
         common.frames,
         run.timing,

@@ -261,8 +261,7 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         &run.image,
     )?;
     if let Some(path) = &args.anaglyph {
-        let n = frame.camera.views;
-        let (l, r) = (n.saturating_sub(1) / 2, (n / 2).min(n - 1));
+        let [l, r] = crate::output::default_eyes(frame.camera.views);
         anaglyph(&run.image, &frame.display.mask(), l, r).save_png(path)?;
     }
     if let Some(dir) = &args.views_out {

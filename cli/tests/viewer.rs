@@ -467,3 +467,32 @@ fn fullscreen_fills_the_monitor_and_a_missing_monitor_is_refused() {
         "{err}"
     );
 }
+
+/// The viewer says when its monitor is not the calibration's panel (the X screen here is
+/// 1024×768; the sample calibration's panel 2560×1600).
+#[test]
+fn the_viewer_checks_its_monitor_against_the_calibrations_panel() {
+    let Some(x) = xvfb_or_clear_error() else {
+        return;
+    };
+    let calibration = format!(
+        "lkg:{}/../data/lkg_sample_visual.json",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let (ok, _, err) = x.cli(&[
+        "view",
+        "--kind",
+        "mesh",
+        "--display",
+        &calibration,
+        "--size",
+        "160x120",
+        "--quit-after-frames",
+        "1",
+    ]);
+    assert!(ok, "{err}");
+    assert!(
+        err.contains("(1024x768), but the calibration's panel is 2560x1600"),
+        "{err}"
+    );
+}

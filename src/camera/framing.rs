@@ -89,6 +89,24 @@ impl MultiViewCamera {
         Ok(camera)
     }
 
+    /// Spread the views over the angle `cone` (radians) as Looking Glass software does with a
+    /// calibration's `viewCone`: the outermost views at ±cone/2 as seen from the focal point,
+    /// so the baseline is `2·focal_distance·tan(cone/2)` and the separation that over N − 1.
+    pub fn spread_over_cone(&mut self, cone: f32) -> Result<()> {
+        if !(cone > 0.0 && cone < std::f32::consts::PI) {
+            return Err(Error::invalid(
+                "view cone",
+                format!("{cone} rad: must be between 0 and π"),
+            ));
+        }
+        let baseline = 2.0 * self.focal_distance * (0.5 * cone).tan();
+        self.separation = match self.views {
+            0 | 1 => 0.0,
+            n => baseline / (n - 1) as f32,
+        };
+        self.validate()
+    }
+
     /// Eye-space depth of the world point `p` (distance in front of the camera plane).
     pub fn depth_of(&self, p: Vec3) -> f32 {
         -(self.eye_from_world.transform_point3(p)).z

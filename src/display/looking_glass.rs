@@ -18,6 +18,7 @@
 
 use std::path::{Path, PathBuf};
 
+use super::lkg_family::LookingGlassFamily;
 use super::subpixel_cells::SubpixelCells;
 use crate::error::{Error, Result};
 
@@ -43,6 +44,10 @@ pub struct Calibration {
     pub inv_view: bool,
     /// The subpixel cells of a `configVersion` "3.0" calibration; `None`: the RGB stripe.
     pub cells: Option<SubpixelCells>,
+    /// The device's serial number (its prefix names the family: [`LookingGlassFamily`]).
+    pub serial: Option<String>,
+    /// The angle in degrees the views span (`viewCone`), where the file gives one.
+    pub view_cone: Option<f64>,
 }
 
 /// The mask of a calibration with subpixel cells, in lens periods (before the fixed point):
@@ -111,7 +116,25 @@ impl Calibration {
             None if cells.is_some() => false,
             _ => field("invView")? != 0.0,
         };
+        let view_cone = match json.get("viewCone") {
+            None => None,
+            Some(_) => {
+                let degrees = field("viewCone")?;
+                if !(degrees > 0.0 && degrees < 180.0) {
+                    return Err(err(format!(
+                        "field 'viewCone' = {degrees}: must be an angle in degrees between 0 and 180"
+                    )));
+                }
+                Some(degrees)
+            }
+        };
+        let serial = json
+            .get("serial")
+            .and_then(|s| s.as_str())
+            .map(String::from);
         let calibration = Self {
+            serial,
+            view_cone,
             pitch: field("pitch")?,
             slope: field("slope")?,
             center: field("center")?,
@@ -143,6 +166,17 @@ impl Calibration {
             )));
         }
         Ok(calibration)
+    }
+
+    /// The device family its serial names, with Looking Glass's default views and quilt.
+    pub fn family(&self) -> Option<&'static LookingGlassFamily> {
+        LookingGlassFamily::of_serial(self.serial.as_deref()?)
+    }
+
+    /// The panel's size in pixels (`screenW` × `screenH`, rounded).
+    pub fn panel_size(&self) -> [u32; 2] {
+        let round = |v: f64| v.round().clamp(1.0, u32::MAX as f64) as u32;
+        [round(self.screen_w), round(self.screen_h)]
     }
 
     /// The lens pitch across the screen as the holoplay shader uses it (lenses per screen width).

@@ -4,11 +4,15 @@
 //! ([`Mask::view`]) and WGSL (`wgsl/shared/mask.wgsl`) evaluate with the same integer arithmetic,
 //! so CPU and GPU agree on every subpixel of any panel size.
 
+mod lkg_discovery;
+mod lkg_family;
 mod looking_glass;
 mod mask;
 mod spec;
 mod subpixel_cells;
 
+pub use lkg_discovery::{attached_calibrations, find_attached, mount_points};
+pub use lkg_family::LookingGlassFamily;
 pub use looking_glass::Calibration;
 pub use mask::{hubner8_paper_view, Mask, MaskUniform};
 pub use subpixel_cells::{CellPattern, SubpixelCell, SubpixelCells};
@@ -69,7 +73,8 @@ pub struct Display {
     pub bgr: bool,
 }
 
-/// Default view count for Looking Glass displays when none is given.
+/// Default view count for Looking Glass displays whose serial names no known family (those of
+/// a known family default to its quilt's: [`LookingGlassFamily::views`]).
 pub const LOOKING_GLASS_DEFAULT_VIEWS: u32 = 45;
 
 impl Display {
@@ -116,6 +121,52 @@ impl Display {
             self.kind,
             DisplayKind::Lenticular { .. } | DisplayKind::OneView { .. }
         )
+    }
+
+    /// The panel's own size in pixels where the display knows it (a Looking Glass calibration's
+    /// `screenW` × `screenH`): what its owner expects an image to have.
+    pub fn panel_size(&self) -> Option<[u32; 2]> {
+        match &self.kind {
+            DisplayKind::LookingGlass { calibration, .. } => Some(calibration.panel_size()),
+            _ => None,
+        }
+    }
+
+    /// The views' angular spread in radians where the display gives it (a Looking Glass
+    /// calibration's `viewCone`): the outermost views' directions as seen from the focal point.
+    pub fn view_cone(&self) -> Option<f32> {
+        match &self.kind {
+            DisplayKind::LookingGlass { calibration, .. } => {
+                calibration.view_cone.map(|d| (d as f32).to_radians())
+            }
+            _ => None,
+        }
+    }
+
+    /// The quilt Looking Glass software uses for this display with `views` views: the
+    /// family's grid (when it holds them) and, within the family's quilt size, tiles of the
+    /// panel's aspect; an unknown family gets the grid for the view count within 4096².
+    /// `None` for displays that are not Looking Glasses.
+    pub fn default_quilt(&self, views: u32) -> Option<crate::render::quilt::QuiltLayout> {
+        use crate::render::quilt::QuiltLayout;
+        let DisplayKind::LookingGlass { calibration, .. } = &self.kind else {
+            return None;
+        };
+        let [pw, ph] = calibration.panel_size().map(|v| v as f64);
+        let family = calibration.family();
+        let quilt = family.map_or([4096, 4096], |f| f.quilt_size);
+        let grid = family
+            .map(|f| f.grid)
+            .filter(|g| g[0] as u64 * g[1] as u64 >= views as u64)
+            .unwrap_or_else(|| {
+                let q = QuiltLayout::for_views(views, [pw as u32, ph as u32]);
+                [q.cols, q.rows]
+            });
+        // The widest tiles of the panel's aspect whose grid fits the quilt size.
+        let width =
+            (quilt[0] as f64 / grid[0] as f64).min(quilt[1] as f64 / grid[1] as f64 * pw / ph);
+        let tile = [width.floor().max(1.0), (width * ph / pw).floor().max(1.0)];
+        QuiltLayout::with_grid(grid[0], grid[1], [tile[0] as u32, tile[1] as u32], views).ok()
     }
 
     /// Set the view count where the display leaves it open (Looking Glass); elsewhere `n` must

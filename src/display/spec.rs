@@ -91,16 +91,17 @@ pub(super) fn parse_kind(spec: &str) -> Result<DisplayKind> {
             })
         }
         "lkg" => {
-            if args.is_empty() {
-                return Err(spec_error(
-                    spec,
-                    "lkg needs a calibration file: lkg:PATH.json",
-                ));
-            }
-            Ok(DisplayKind::LookingGlass {
-                views: LOOKING_GLASS_DEFAULT_VIEWS,
-                calibration: Calibration::load(args.as_ref())?,
-            })
+            // No path: the attached display's, where Looking Glass software finds it.
+            let path = match args.trim() {
+                "" => super::lkg_discovery::find_attached(&super::lkg_discovery::mount_points())?,
+                path => path.into(),
+            };
+            let calibration = Calibration::load(&path)?;
+            // The family's view count (its quilt's tiles), as Looking Glass software uses.
+            let views = calibration
+                .family()
+                .map_or(LOOKING_GLASS_DEFAULT_VIEWS, |f| f.views());
+            Ok(DisplayKind::LookingGlass { views, calibration })
         }
         other => Err(spec_error(spec, format!("unknown display kind '{other}'"))),
     }

@@ -179,6 +179,29 @@ impl ApplicationHandler for App {
     }
 }
 
+/// Say so when the window's monitor is not the display's panel (a Looking Glass calibration
+/// knows its panel's size): the mask then does not meet the lenses it was made for.
+fn check_monitor(window: &Window, display: &Display) {
+    let (Some(panel), Some(monitor)) = (display.panel_size(), window.current_monitor()) else {
+        return;
+    };
+    let size = monitor.size();
+    let name = monitor.name().unwrap_or_else(|| "?".into());
+    if [size.width, size.height] == panel {
+        eprintln!(
+            "monitor {name} ({}x{}) has the calibration's panel size",
+            size.width, size.height
+        );
+    } else {
+        eprintln!(
+            "note: this window is on monitor {name} ({}x{}), but the calibration's panel is \
+             {}x{}: the image matches the lenses only on the Looking Glass itself (--fullscreen \
+             N with N its monitor)",
+            size.width, size.height, panel[0], panel[1]
+        );
+    }
+}
+
 impl State {
     fn new(event_loop: &ActiveEventLoop, args: &ViewArgs) -> Result<Self> {
         let mut attributes = Window::default_attributes()
@@ -263,7 +286,9 @@ impl State {
             &scene.scene,
             &options(methods[method]),
         )?);
-        let mut displays = vec![(args.display.display.clone(), args.display.display()?)];
+        let display = args.display.display()?;
+        check_monitor(&window, &display);
+        let mut displays = vec![(args.display.display.clone(), display)];
         for spec in MORE_DISPLAYS.iter().filter(|d| **d != args.display.display) {
             displays.push((spec.to_string(), Display::parse(spec)?));
         }
@@ -321,9 +346,7 @@ impl State {
             self.position[0] + args.display.origin[0],
             self.position[1] + args.display.origin[1],
         ];
-        let base = args
-            .camera
-            .camera(self.scene.bounds, display.views(), size)?;
+        let base = args.camera.camera(self.scene.bounds, &display, size)?;
         let mut camera = self.orbit.apply(&base, self.scene.bounds.center());
         camera.separation *= self.separation_scale;
         camera.focal_distance *= self.focal_scale;
@@ -364,9 +387,13 @@ impl State {
                     StereoFormat::SideBySide => [(size[0] / 2).max(1), size[1]],
                     _ => size,
                 };
-                let right = (centre + 1).min(n - 1);
+                // The command line's default pair (a quarter of the cone apart), or from the
+                // chosen view on.
+                let [l, r] = crate::output::default_eyes(n);
+                let left = self.preview_view.map_or(l, |v| v.min(n - 1));
+                let right = (left + r - l).min(n - 1);
                 vec![
-                    (self.frame_on(args, one(centre)?, eye)?, 1, None),
+                    (self.frame_on(args, one(left)?, eye)?, 1, None),
                     (self.frame_on(args, one(right)?, eye)?, 2, None),
                 ]
             }
