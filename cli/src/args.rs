@@ -58,7 +58,8 @@ pub fn parse_pair(s: &str) -> Result<[u32; 2], String> {
 /// Display selection flags.
 #[derive(clap::Args, Clone, Debug)]
 pub struct DisplayArgs {
-    /// Display: hubner8 | lenticular:N | slanted:N,PITCH,SLANT,PHASE | lkg:PATH.json | view:N,V
+    /// Display: hubner8 | lenticular:N | slanted:N,PITCH,SLANT,PHASE | lkg:PATH.json | lkg (the
+    /// attached Looking Glass's calibration) | view:N,V
     /// (view V of N on every pixel: one full-resolution view by any method)
     #[arg(long, default_value = "hubner8")]
     pub display: String,

@@ -93,7 +93,11 @@ pub(super) fn parse_kind(spec: &str) -> Result<DisplayKind> {
         "lkg" => {
             // No path: the attached display's, where Looking Glass software finds it.
             let path = match args.trim() {
-                "" => super::lkg_discovery::find_attached(&super::lkg_discovery::mount_points())?,
+                "" => super::lkg_discovery::find_attached(&super::lkg_discovery::mount_points())
+                    .map_err(|e| match e {
+                        Error::InvalidParameter { reason, .. } => spec_error(spec, reason),
+                        other => other,
+                    })?,
                 path => path.into(),
             };
             let calibration = Calibration::load(&path)?;
