@@ -129,7 +129,7 @@ fn matches_npass_for_every_display_kind_and_view_count() {
         (
             "lkg-gen3-cells",
             "lkg:data/lkg_sample_32in_landscape_gen3_visual.json",
-            45,
+            49,
         ),
     ];
     for (name, spec, views) in cases {
