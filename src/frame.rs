@@ -176,6 +176,37 @@ impl Frame {
         }
     }
 
+    /// The part of this frame's image at `origin` of `size` pixels, as a frame of its own: the
+    /// same cameras looking through that part of the focal window (an off-centre window:
+    /// [`MultiViewCamera::window_offset`]) and the display's mask moved by `origin`, so that
+    /// rendering it gives exactly those pixels of the whole frame's image
+    /// ([`crate::render::Banded`] renders frames too large for the adapter this way).
+    pub fn band(&self, origin: [u32; 2], size: [u32; 2]) -> Frame {
+        let [w, h] = self.size.map(|v| v as f32);
+        let [bw, bh] = size.map(|v| v as f32);
+        let window = self.camera.focal_window();
+        let band = window * glam::Vec2::new(bw / w, bh / h);
+        let centre = glam::Vec2::new(
+            ((origin[0] as f32 + 0.5 * bw) / w - 0.5) * window.x,
+            (0.5 - (origin[1] as f32 + 0.5 * bh) / h) * window.y,
+        );
+        let mut camera = self.camera.clone();
+        camera.fov_y = 2.0 * (0.5 * band.y / camera.focal_distance).atan();
+        camera.aspect = band.x / band.y;
+        camera.window_offset += centre;
+        let mut display = self.display.clone();
+        display.origin = [
+            display.origin[0].wrapping_add(origin[0]),
+            display.origin[1].wrapping_add(origin[1]),
+        ];
+        Frame {
+            camera,
+            display,
+            size,
+            ..self.clone()
+        }
+    }
+
     /// Fail unless [`Frame::view_scale`] is 1: for `method`, which renders no view images.
     pub fn check_full_views(&self, method: &str) -> Result<()> {
         if self.view_scale == 1.0 {

@@ -10,7 +10,7 @@ use crate::mesh::{
 };
 use crate::points::SplatScene;
 use crate::points::{PointSplatter, SplatDepth, SplatOptions, DEFAULT_EPSILON_FRACTION};
-use crate::render::{Method, Renderer};
+use crate::render::{Banded, Method, Renderer};
 use crate::rgbd::RgbdScene;
 use crate::volume::{AlphaMode, VolumeRaycaster, VolumeSlicer};
 use crate::volume::{VolumeScene, VolumeSettings};
@@ -31,6 +31,9 @@ pub struct RendererOptions {
     /// [`Method::Warp`]: of rendered reference views (meshes, points, volumes) or of an RGB-D
     /// image (always warped: it holds one view).
     pub warp: WarpOptions,
+    /// Render every frame in bands of at most this many pixels ([`crate::render::Banded`]);
+    /// `None`: whole, falling back to bands only where a frame is too large for the adapter.
+    pub max_band_pixels: Option<u64>,
 }
 
 /// Mesh settings.
@@ -103,7 +106,7 @@ impl RendererOptions {
 
     /// The mesh renderer these options describe.
     pub fn mesh_renderer(&self, device: &wgpu::Device) -> Result<Box<dyn Renderer<MeshBuffers>>> {
-        Ok(match self.method {
+        Ok(self.banded(match self.method {
             Method::SinglePass => {
                 Box::new(MeshSinglePass::new(device, self.mesh_single_pass(device))?)
             }
@@ -112,7 +115,16 @@ impl RendererOptions {
             Method::Layered => Box::new(MeshLayered::new(device)?),
             Method::Mrt => Box::new(MeshMrt::new(device)?),
             Method::Warp => self.warp_of(device, MeshNPass::new(device, Method::Warp)?)?,
-        })
+        }))
+    }
+
+    /// `renderer` falling back to bands where a frame is too large for the adapter (every
+    /// method but the warp, which shifts pixels across band edges).
+    fn banded<S: ?Sized + 'static>(&self, renderer: Box<dyn Renderer<S>>) -> Box<dyn Renderer<S>> {
+        match self.method {
+            Method::Warp => renderer,
+            method => Box::new(Banded::new(renderer, method, self.max_band_pixels)),
+        }
     }
 
     /// The mesh single pass's options on `device` (visibility resolved).
@@ -133,10 +145,10 @@ impl RendererOptions {
         scene: &SplatScene,
     ) -> Result<Box<dyn Renderer<SplatScene>>> {
         let splatter = PointSplatter::new(device, self.method, self.points.for_scene(scene))?;
-        Ok(match self.method {
+        Ok(self.banded(match self.method {
             Method::Warp => self.warp_of(device, splatter)?,
             _ => Box::new(splatter),
-        })
+        }))
     }
 
     /// The volume renderer these options describe.
@@ -152,13 +164,14 @@ impl RendererOptions {
                     ),
                 ));
             }
-            return Ok(Box::new(VolumeSlicer::new(device, alpha, settings)?));
+            let slicer = VolumeSlicer::new(device, alpha, settings)?;
+            return Ok(self.banded(Box::new(slicer)));
         }
         let raycaster = VolumeRaycaster::new(device, self.method, settings)?;
-        Ok(match self.method {
+        Ok(self.banded(match self.method {
             Method::Warp => self.warp_of(device, raycaster)?,
             _ => Box::new(raycaster),
-        })
+        }))
     }
 
     /// The RGB-D renderer these options describe: an RGB-D image holds one view, so its one

@@ -11,7 +11,7 @@ pub const SPATIAL_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 
 /// An output image on the GPU.
 pub struct SpatialTarget {
-    /// The texture (render attachment, storage, copy source, sampled).
+    /// The texture (render attachment, storage, copy source and destination, sampled).
     pub texture: wgpu::Texture,
     /// A view of it.
     pub view: wgpu::TextureView,
@@ -37,7 +37,8 @@ impl SpatialTarget {
             wgpu::TextureUsages::RENDER_ATTACHMENT
                 | wgpu::TextureUsages::STORAGE_BINDING
                 | wgpu::TextureUsages::TEXTURE_BINDING
-                | wgpu::TextureUsages::COPY_SRC,
+                | wgpu::TextureUsages::COPY_SRC
+                | wgpu::TextureUsages::COPY_DST,
         )?;
         Ok(Self {
             texture,

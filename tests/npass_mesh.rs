@@ -29,6 +29,7 @@ fn camera(views: u32, separation: f32) -> MultiViewCamera {
         near: 1.0,
         far: 40.0,
         model: Default::default(),
+        window_offset: glam::Vec2::ZERO,
     }
 }
 

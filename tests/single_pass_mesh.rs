@@ -204,6 +204,7 @@ fn camera_inside_the_mesh_crossing_the_near_plane() {
         near: 0.5,
         far: 40.0,
         model: Default::default(),
+        window_offset: glam::Vec2::ZERO,
     };
     let frame = Frame::new(camera, display("hubner8"), SIZE).unwrap();
     // Some floor triangles really cross the near plane (z = −0.5).

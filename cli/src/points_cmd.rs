@@ -84,9 +84,6 @@ pub fn run(args: PointsArgs) -> Result<()> {
     let method = args.common.method;
     let mut renderer = options.points_renderer(device, &scene)?;
     let run = timed(&ctx, renderer.as_mut(), &scene, &frame, args.common.frames)?;
-    // Everything the render holds at once: the scene, the renderer's scratch, images and
-    // layers, the target.
-    let gpu_bytes = autostereo::budget::gpu_held();
     let turntable = crate::output::save_all(
         &ctx,
         renderer.as_mut(),
@@ -125,7 +122,6 @@ pub fn run(args: PointsArgs) -> Result<()> {
         "grouping_ms": scene.grouping_ms,
         "epsilon": splat_options.epsilon,
         "median_radius": scene.median_radius,
-        "gpu_bytes": gpu_bytes,
     });
     let mut extra = extra;
     if method == Method::Warp {
@@ -150,13 +146,12 @@ pub fn run(args: PointsArgs) -> Result<()> {
         ),
     };
     let summary = format!(
-        "{method_name} ({} depth): {} points{estimated}, {} groups ({} conflicts, {:.0} ms), GPU memory {:.1} MiB, {}",
+        "{method_name} ({} depth): {} points{estimated}, {} groups ({} conflicts, {:.0} ms), {}",
         splat_options.depth.name(),
         splats.len(),
         scene.groups(),
         scene.conflicts,
         scene.grouping_ms,
-        gpu_bytes as f64 / (1u64 << 20) as f64,
         run_summary(&ctx, &args.common, &frame, &run)
     );
     report(args.common.json, fields, diff, &summary);

@@ -18,6 +18,11 @@ pub struct Timed {
     pub image: RgbImage,
     pub ms: f64,
     pub timing: TimingSource,
+    /// GPU bytes the library held for the frame (scene, renderer, target).
+    pub gpu_bytes: u64,
+    /// How the renderer made it, where it says (the warp's references; a frame too large for
+    /// the adapter in one piece: its bands).
+    pub how: Option<String>,
 }
 
 /// Render `frames` timed frames after the warm-up; keep the last image.
@@ -42,6 +47,8 @@ pub fn timed<S: ?Sized>(
         }
     }
     Ok(Timed {
+        gpu_bytes: autostereo::budget::gpu_held(),
+        how: renderer.describe(),
         image: target.read(device, queue)?,
         ms: median(&times),
         timing: timer.source(),
@@ -110,6 +117,8 @@ pub fn run_fields(
         "timing": run.timing,
         "focal_distance": frame.camera.focal_distance,
         "separation": frame.camera.separation,
+        "gpu_bytes": run.gpu_bytes,
+        "rendered": run.how,
     });
     merge(&mut fields, extra);
     fields
@@ -152,11 +161,17 @@ pub fn run_summary(
     frame: &Frame,
     run: &Timed,
 ) -> String {
+    let bands = run
+        .how
+        .as_deref()
+        .filter(|how| how.contains("bands"))
+        .map_or(String::new(), |how| format!(" ({how})"));
     format!(
-        "{} views, {}x{}, {:.2} ms/frame (median of {}, {:?}) on {}",
+        "{} views, {}x{}{bands}, GPU memory {:.1} MiB, {:.2} ms/frame (median of {}, {:?}) on {}",
         frame.camera.views,
         frame.size[0],
         frame.size[1],
+        run.gpu_bytes as f64 / (1u64 << 20) as f64,
         run.ms,
         common.frames,
         run.timing,

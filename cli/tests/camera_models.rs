@@ -36,6 +36,7 @@ fn camera(views: u32, separation: f32, model: CameraModel) -> MultiViewCamera {
         near: 1.0,
         far: 40.0,
         model,
+        window_offset: glam::Vec2::ZERO,
     }
 }
 

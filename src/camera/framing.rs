@@ -74,6 +74,7 @@ impl MultiViewCamera {
             near: (distance - 2.0 * radius).max(distance * 0.01),
             far: distance + 2.0 * radius,
             model: CameraModel::Skewed,
+            window_offset: glam::Vec2::ZERO,
         };
         // Only the data decides this camera: say so, rather than blame a flag never given.
         camera.validate().map_err(|e| {

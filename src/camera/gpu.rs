@@ -30,8 +30,8 @@ pub struct CameraUniform {
     pub far: f32,
     /// The camera model (`CAMERA_*` in `wgsl/shared/camera.wgsl`).
     pub model: u32,
-    /// Padding.
-    pub _pad: [f32; 2],
+    /// The window's centre on the focal plane (`MultiViewCamera::window_offset`).
+    pub window_offset: [f32; 2],
 }
 const _: () = assert!(std::mem::size_of::<CameraUniform>() == 176);
 crate::shader::gpu_layout!(
@@ -47,7 +47,8 @@ crate::shader::gpu_layout!(
         views,
         near,
         far,
-        model
+        model,
+        window_offset
     ]
 );
 
@@ -65,7 +66,7 @@ impl CameraUniform {
             near: c.near,
             far: c.far,
             model: c.model.gpu(),
-            _pad: [0.0; 2],
+            window_offset: c.window_offset.to_array(),
         }
     }
 }

@@ -93,6 +93,10 @@ pub struct MultiViewCamera {
     pub far: f32,
     /// How the views' cameras are set up.
     pub model: CameraModel,
+    /// Where the rendered image's window sits on the focal plane: its centre relative to the
+    /// camera axis, eye-space units (y up). Zero for a whole image; a band of a frame rendered
+    /// in pieces ([`crate::frame::Frame::band`]) is an off-centre part of the whole window.
+    pub window_offset: Vec2,
 }
 
 impl MultiViewCamera {
@@ -133,6 +137,9 @@ impl MultiViewCamera {
         if !self.eye_from_world.is_finite() {
             return Err(Error::invalid("view matrix", "contains NaN or infinity"));
         }
+        if !self.window_offset.is_finite() {
+            return Err(Error::invalid("window offset", "must be finite"));
+        }
         Ok(())
     }
 
@@ -159,15 +166,19 @@ impl MultiViewCamera {
     /// `· RotateY(−φ) · Translate(−vd, 0, 0)`, `φ = atan(vd / fd)`.
     pub fn projection_for_offset(&self, vd: f32) -> Mat4 {
         let window = self.focal_window();
+        let c = self.window_offset;
         let s = self.near / self.focal_distance;
-        let (b, t) = (-window.y * 0.5 * s, window.y * 0.5 * s);
+        let (b, t) = ((c.y - window.y * 0.5) * s, (c.y + window.y * 0.5) * s);
         let to_camera = Mat4::from_translation(Vec3::new(-vd, 0.0, 0.0));
         if self.model == CameraModel::ToeIn {
-            let (l, r) = (-window.x * 0.5 * s, window.x * 0.5 * s);
+            let (l, r) = ((c.x - window.x * 0.5) * s, (c.x + window.x * 0.5) * s);
             let turn = Mat4::from_rotation_y(-self.toe_in_angle(vd));
             return frustum(l, r, b, t, self.near, self.far) * turn * to_camera;
         }
-        let (l, r) = ((-window.x * 0.5 - vd) * s, (window.x * 0.5 - vd) * s);
+        let (l, r) = (
+            (c.x - window.x * 0.5 - vd) * s,
+            (c.x + window.x * 0.5 - vd) * s,
+        );
         frustum(l, r, b, t, self.near, self.far) * to_camera
     }
 
@@ -212,10 +223,10 @@ impl MultiViewCamera {
     /// Focal-plane coordinates → continuous pixel coordinates of a `size` image
     /// (pixel (x, y) covers [x, x+1) × [y, y+1); y top-down).
     pub fn focal_to_pixel(&self, f: Vec2, size: [u32; 2]) -> Vec2 {
-        let w = self.focal_window();
+        let (w, c) = (self.focal_window(), self.window_offset);
         Vec2::new(
-            (f.x / w.x + 0.5) * size[0] as f32,
-            (0.5 - f.y / w.y) * size[1] as f32,
+            ((f.x - c.x) / w.x + 0.5) * size[0] as f32,
+            (0.5 - (f.y - c.y) / w.y) * size[1] as f32,
         )
     }
 

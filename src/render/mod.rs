@@ -20,6 +20,7 @@
 //! of them.
 
 pub mod atlas;
+mod bands;
 pub mod batches;
 pub(crate) mod camera_crop;
 pub(crate) mod composite;
@@ -41,6 +42,7 @@ pub(crate) mod storage_fence;
 pub(crate) mod texture;
 pub(crate) mod view_layers;
 
+pub use bands::Banded;
 pub use composite::Compositor;
 pub use mask_image::MaskImageRenderer;
 pub use method::Method;

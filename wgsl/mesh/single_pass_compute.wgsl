@@ -35,10 +35,12 @@ fn cs_main(@builtin(workgroup_id) group: vec3<u32>, @builtin(num_workgroups) gro
     // Focal-plane bounds → the pixels whose centre (x + ½, y + ½) lies inside (y top-down).
     let size = frame.camera.viewport;
     let scale = size / frame.camera.focal_window;
-    let x_lo = (b.lo.x * scale.x + 0.5 * size.x) - 0.5;
-    let x_hi = (b.hi.x * scale.x + 0.5 * size.x) - 0.5;
-    let y_lo = (0.5 * size.y - b.hi.y * scale.y) - 0.5;
-    let y_hi = (0.5 * size.y - b.lo.y * scale.y) - 0.5;
+    let lo = b.lo - frame.camera.window_offset;
+    let hi = b.hi - frame.camera.window_offset;
+    let x_lo = (lo.x * scale.x + 0.5 * size.x) - 0.5;
+    let x_hi = (hi.x * scale.x + 0.5 * size.x) - 0.5;
+    let y_lo = (0.5 * size.y - hi.y * scale.y) - 0.5;
+    let y_hi = (0.5 * size.y - lo.y * scale.y) - 0.5;
     if (x_hi < 0.0 || y_hi < 0.0 || x_lo > size.x - 1.0 || y_lo > size.y - 1.0) {
         return; // outside the image
     }

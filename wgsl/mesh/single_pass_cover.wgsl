@@ -40,7 +40,8 @@ fn cs_main(@builtin(workgroup_id) group: vec3<u32>, @builtin(num_workgroups) gro
     // Then to NDC (focal window ↦ [−1, 1]), clamped so that near triangles stay finite.
     let pad = COVER_PADDING_PX * frame.camera.focal_window / frame.camera.viewport;
     let half = 0.5 * frame.camera.focal_window;
-    let lo = clamp((b.lo - pad) / half, vec2<f32>(-2.0), vec2<f32>(2.0));
-    let hi = clamp((b.hi + pad) / half, vec2<f32>(-2.0), vec2<f32>(2.0));
+    let centre = frame.camera.window_offset;
+    let lo = clamp((b.lo - pad - centre) / half, vec2<f32>(-2.0), vec2<f32>(2.0));
+    let hi = clamp((b.hi + pad - centre) / half, vec2<f32>(-2.0), vec2<f32>(2.0));
     cover_rects[tri] = vec4<f32>(lo, hi);
 }

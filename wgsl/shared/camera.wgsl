@@ -11,8 +11,7 @@ struct Camera {
     near: f32,
     far: f32,
     model: u32,              // CAMERA_*
-    _pad1: f32,
-    _pad2: f32,
+    window_offset: vec2<f32>, // the window's centre on the focal plane (a band's: off-centre)
 }
 
 // Camera models (src/camera/mod.rs `CameraModel`).
@@ -31,8 +30,8 @@ struct View {
 fn camera_focal_point(cam: Camera, frag: vec2<f32>) -> vec3<f32> {
     let uv = frag / cam.viewport;
     return vec3<f32>(
-        (uv.x - 0.5) * cam.focal_window.x,
-        (0.5 - uv.y) * cam.focal_window.y,
+        (uv.x - 0.5) * cam.focal_window.x + cam.window_offset.x,
+        (0.5 - uv.y) * cam.focal_window.y + cam.window_offset.y,
         -cam.focal_distance,
     );
 }

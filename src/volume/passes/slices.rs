@@ -241,7 +241,7 @@ fn slices(scene: &VolumeScene, step: f32, frame: &Frame) -> Vec<SliceRect> {
         .fold(f32::NEG_INFINITY, f32::max)
         .min(camera.far);
     let (fd, spread) = (camera.focal_distance, camera.max_offset());
-    let window = camera.focal_window();
+    let (window, centre) = (camera.focal_window(), camera.window_offset);
     let pad = window / glam::Vec2::new(frame.size[0] as f32, frame.size[1] as f32) / 16.0;
     // The cross-section of the box at depth d, projected and widened for every view.
     let section = |d: f32, lo: &mut glam::Vec2, hi: &mut glam::Vec2| {
@@ -268,7 +268,7 @@ fn slices(scene: &VolumeScene, step: f32, frame: &Frame) -> Vec<SliceRect> {
         );
         if toe_in {
             // Turned views cut the box along turned planes: cover the whole image.
-            (lo, hi) = (-window * 0.5, window * 0.5);
+            (lo, hi) = (centre - window * 0.5, centre + window * 0.5);
         } else {
             section(d, &mut lo, &mut hi);
             section(d + step, &mut lo, &mut hi);
@@ -277,7 +277,7 @@ fn slices(scene: &VolumeScene, step: f32, frame: &Frame) -> Vec<SliceRect> {
             continue;
         }
         let to_ndc = |v: glam::Vec2| {
-            (v / (window * 0.5)).clamp(glam::Vec2::splat(-2.0), glam::Vec2::splat(2.0))
+            ((v - centre) / (window * 0.5)).clamp(glam::Vec2::splat(-2.0), glam::Vec2::splat(2.0))
         };
         let (lo, hi) = (to_ndc(lo - pad), to_ndc(hi + pad));
         out.push(SliceRect {

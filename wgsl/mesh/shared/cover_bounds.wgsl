@@ -37,7 +37,8 @@ fn extend_toe_in(b: Bounds, q: vec3<f32>) -> Bounds {
         let p = camera_project(frame.camera, q, view_offset(i));
         if (!(p.z > 0.0)) {
             let everything = 2.0 * frame.camera.focal_window;
-            return Bounds(-everything, everything);
+            let centre = frame.camera.window_offset;
+            return Bounds(centre - everything, centre + everything);
         }
         out = Bounds(min(out.lo, p.xy), max(out.hi, p.xy));
     }

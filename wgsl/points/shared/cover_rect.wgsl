@@ -62,7 +62,8 @@ fn splat_cover_rect(centre: vec3<f32>, radius: f32, normal: vec3<f32>, lo: f32, 
     }
     let pad = COVER_PADDING_PX * frame.camera.focal_window / frame.camera.viewport;
     let half = 0.5 * frame.camera.focal_window;
-    let ndc_lo = clamp((lo_xy - pad) / half, vec2<f32>(-2.0), vec2<f32>(2.0));
-    let ndc_hi = clamp((hi_xy + pad) / half, vec2<f32>(-2.0), vec2<f32>(2.0));
+    let window_centre = frame.camera.window_offset;
+    let ndc_lo = clamp((lo_xy - pad - window_centre) / half, vec2<f32>(-2.0), vec2<f32>(2.0));
+    let ndc_hi = clamp((hi_xy + pad - window_centre) / half, vec2<f32>(-2.0), vec2<f32>(2.0));
     return vec4<f32>(ndc_lo, ndc_hi);
 }
