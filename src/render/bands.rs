@@ -67,10 +67,11 @@ impl<S: ?Sized> Banded<S> {
     }
 }
 
-/// Whether `error` says the frame is too large for the adapter (so smaller pieces may fit).
+/// Whether `error` says the frame is too large for the adapter (so smaller pieces may fit). The
+/// caller's own memory budget (`crate::budget`) is not the adapter's: its refusal stands.
 fn too_large(error: &Error) -> bool {
     match error {
-        Error::LimitExceeded { .. } | Error::MemoryBudget { .. } => true,
+        Error::LimitExceeded { .. } => true,
         Error::Gpu { message, .. } => {
             let message = message.to_ascii_lowercase();
             message.contains("out of memory") || message.contains("outofmemory")
