@@ -22,7 +22,7 @@ pub struct InterleaveArgs {
     grid: Option<[u32; 2]>,
     #[command(flatten)]
     display: DisplayArgs,
-    /// Output size WxH (default: one tile's size).
+    /// Output size WxH (default: a Looking Glass calibration's panel, else one tile's size).
     #[arg(long, value_parser = parse_size)]
     size: Option<[u32; 2]>,
     /// Output PNG of the spatial image.
@@ -44,7 +44,8 @@ pub fn run(args: InterleaveArgs) -> Result<()> {
         args.grid,
         display.views(),
     )?;
-    let size = args.size.unwrap_or(layout.tile);
+    // A Looking Glass's panel, else the quilt's tile.
+    let size = args.size.or(display.panel_size()).unwrap_or(layout.tile);
     let frame = Frame::for_display(display, size)?;
     let ctx = crate::args::gpu()?;
     let (device, queue) = (&ctx.device, &ctx.queue);

@@ -120,6 +120,19 @@ fn the_quilt_is_the_familys_grid_with_tiles_of_the_panels_aspect() {
         (0..3).any(|c| image.get(x, y, c) > 0)
     };
     assert!((0..7).all(|tx| (0..7).all(|ty| lit(tx, ty))));
+    // Interleaved again for the display: the panel's size by default.
+    let spatial = out("lkg_16in_interleaved.png");
+    let (ok, _, stderr) = run(&[
+        "interleave",
+        quilt.to_str().unwrap(),
+        "--display",
+        &j,
+        "--out",
+        spatial.to_str().unwrap(),
+    ]);
+    assert!(ok, "{stderr}");
+    let image = autostereo::image_io::RgbImage::load_png(&spatial).unwrap();
+    assert_eq!([image.width, image.height], [3840, 2160]);
 }
 
 #[test]

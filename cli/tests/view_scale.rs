@@ -15,6 +15,7 @@ use autostereo::mesh::{
 use autostereo::points::DEFAULT_EPSILON_FRACTION;
 use autostereo::points::{GroupCount, PointCloud, SplatScene};
 use autostereo::points::{PointSplatter, SplatOptions};
+use autostereo::render::quilt::QuiltLayout;
 use autostereo::render::{Method, Renderer};
 use autostereo::volume::VolumeRaycaster;
 use autostereo::volume::VolumeSettings;
@@ -148,6 +149,55 @@ fn mesh_view_images_are_the_small_views_upsampled() {
     assert!(diff.frac_off_2 > 0.001 && diff.psnr_db > 20.0, "{diff:?}");
 }
 
+/// Duplication at a panel's size draws its views in chunks that reuse one set of group images
+/// (bands of tile rows, runs of views): forced here with caps that fit three tile rows of the
+/// 8-row atlas (bands of 3, 3 and 2 rows: the shorter band drawn into images sized for the
+/// taller) and about half the views, at a view scale.
+fn assert_chunked_splats_are_upsampled(
+    device: &wgpu::Device,
+    splats: &autostereo::points::Splats,
+    scene: &SplatScene,
+    options: SplatOptions,
+) {
+    let base = common::frame(
+        splats.bounds().unwrap(),
+        "slanted:45,7.5,1/6,0.2",
+        0.15,
+        1.0,
+        [80, 60],
+    );
+    let frame = scaled(&base, 0.5);
+    let groups = scene.groups() as u64;
+    assert!(groups > 3, "three rows fit only with more than 3 groups");
+    let [tw, th] = frame.view_size().map(u64::from);
+    let atlas = QuiltLayout::for_views(frame.camera.views, frame.view_size());
+    assert_eq!(atlas.rows, 8, "{atlas:?}");
+    // 16 bytes per group texel; one spare layer of slack (`ViewLayers` may add one).
+    let tiled_cap = 16 * atlas.cols as u64 * tw * 3 * th * (groups + 1);
+    let views = frame.camera.views as u64;
+    let layered_cap = 16 * tw * th * (groups * views / 2 + 1);
+    let mut alone = PointSplatter::new(device, Method::NPass, options).unwrap();
+    let expected = oracle(&mut alone, scene, &frame);
+    for (method, cap, chunks) in [
+        (Method::Tiled, tiled_cap, "3 bands"),
+        (Method::Layered, layered_cap, "runs"),
+    ] {
+        let mut renderer = PointSplatter::new(device, method, options).unwrap();
+        renderer.set_max_image_bytes(cap);
+        let image = common::render(&mut renderer, scene, &frame);
+        let how = renderer.describe();
+        // Without multiview (GL) layered is the N-pass itself: one view's images at a time.
+        let single_views = method == Method::Layered && how.contains("no multiview");
+        assert!(single_views || how.contains(chunks), "{method}: {how}");
+        let diff = compare(&image, &expected).unwrap();
+        if diff.max_abs_err > 1 {
+            let tag = format!("points_{method}_chunked_S{}", frame.view_scale);
+            let path = common::save_diff(&tag, &image, &expected);
+            panic!("{tag} ({how}): {diff:?} (diff image {})", path.display());
+        }
+    }
+}
+
 #[test]
 fn points_and_volume_view_images_are_the_small_views_upsampled() {
     let device = common::gpu().device.clone();
@@ -170,6 +220,7 @@ fn points_and_volume_view_images_are_the_small_views_upsampled() {
     ];
     let mut alone = PointSplatter::new(&device, Method::NPass, options).unwrap();
     assert_upsampled("points", &mut renderers, &mut alone, &scene, &frame);
+    assert_chunked_splats_are_upsampled(&device, &splats, &scene, options);
 
     let (volume, bounds) = common::head_scene();
     let base = common::frame(bounds, "hubner8", 0.1, 1.0, [64, 64]);

@@ -148,6 +148,7 @@ impl PointSplatter {
                     (&quilt_group, &[]),
                 ],
                 band.views(),
+                Some(band.layout.size()),
             );
             // ε-z compositing of every tile of the band at once: it only looks at texels.
             let color = if i == 0 {

@@ -64,6 +64,9 @@ impl GroupImages {
 /// One geometry pass per splat group (`group_ranges`), each into its own layer of `images`
 /// with their shared depth buffer, cleared first: `pipeline` with `bind_groups` (group index =
 /// position; each with its dynamic offsets), every group's splats × 6 vertices, `instances`.
+/// `area`: the top-left part of the images the draws' clip space maps onto (a tiled band
+/// shorter than the images, which are sized for the tallest band); all of them when `None`.
+#[allow(clippy::too_many_arguments)]
 pub(super) fn draw_groups(
     encoder: &mut wgpu::CommandEncoder,
     label: &str,
@@ -72,6 +75,7 @@ pub(super) fn draw_groups(
     pipeline: &wgpu::RenderPipeline,
     bind_groups: &[(&wgpu::BindGroup, &[u32])],
     instances: Range<u32>,
+    area: Option<[u32; 2]>,
 ) {
     for (range, layer) in group_ranges.iter().zip(&images.layer_views) {
         let mut pass = begin_pass(
@@ -80,6 +84,9 @@ pub(super) fn draw_groups(
             cleared(layer, [0.0; 4]),
             Some(&images.depth_view),
         );
+        if let Some([w, h]) = area {
+            pass.set_viewport(0.0, 0.0, w as f32, h as f32, 0.0, 1.0);
+        }
         pass.set_pipeline(pipeline);
         for (i, (group, offsets)) in bind_groups.iter().enumerate() {
             pass.set_bind_group(i as u32, *group, offsets);

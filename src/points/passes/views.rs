@@ -80,6 +80,7 @@ impl PointSplatter {
                     (&params_group, &offset),
                 ],
                 0..1,
+                None,
             );
             let colors = match (&output, &self.npass) {
                 (SplatOutput::References(images), _) => vec![
