@@ -103,6 +103,15 @@ pub enum Error {
         /// What is wrong with it.
         reason: String,
     },
+    /// A file of an unknown format, of another kind of data than the command renders, or of
+    /// a format this build does not read.
+    #[error("{path}: {reason}")]
+    Format {
+        /// The file.
+        path: PathBuf,
+        /// What it is and what reads it.
+        reason: String,
+    },
     /// An image could not be read or written.
     #[error("image {path}: {reason}")]
     Image {

@@ -19,6 +19,7 @@ pub mod camera;
 pub mod display;
 mod error;
 pub mod file;
+pub mod formats;
 pub mod frame;
 pub mod gpu;
 pub mod image_io;
