@@ -60,7 +60,8 @@ fn every_subpixel_shows_the_tile_of_its_view() {
         ("lenticular:8", &[], [40, 30]),
         ("hubner8", &[], [48, 32]),
         ("slanted:45,7.5,1/6,0.2", &[], [60, 40]),
-        (&lkg, &["--views", "48"], [64, 48]),
+        // The panel is the default size of a calibration's output: this checks the tiles' size.
+        (&lkg, &["--views", "48", "--size", "64x48"], [64, 48]),
     ];
     for (i, &(spec, extra, size)) in cases.iter().enumerate() {
         let mut display = Display::parse(spec).unwrap();

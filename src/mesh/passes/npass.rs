@@ -14,7 +14,7 @@ use crate::render::texture::{cached_texture_2d, Texture2d};
 use crate::render::view_layers::{nearest_depth_test, DEPTH_FORMAT};
 use crate::render::Method;
 use crate::render::ViewLayers;
-use crate::render::{begin_prepare, check_prepared, check_target, Made, Renderer};
+use crate::render::{begin_prepare, check_target, prepared_state, Made, Prepared, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 use crate::warp::references::{ReferenceImages, ReferenceRenderer, REFERENCE_NEARNESS_FORMAT};
 
@@ -25,10 +25,10 @@ pub struct MeshNPass {
     view_layout: wgpu::BindGroupLayout,
     frame: FrameBinding,
     npass: NPassHarness,
-    single_view_depth: Option<Texture2d>,
     /// This frame's view uniforms (one per view, dynamic offsets).
     views: PassParams<ViewUniform>,
-    prepared: Option<PreparedFor>,
+    /// What `prepare` made for its frame: the single view's depth (`None` for the others).
+    prepared: Option<Prepared<PreparedFor, Option<Texture2d>>>,
     /// The parallel camera model's crop, recorded last.
     crop: crate::render::camera_crop::CameraCrop,
 }
@@ -102,7 +102,6 @@ impl MeshNPass {
             npass: NPassHarness::new(device, &frame_layout)?,
             frame: FrameBinding::new(device, &frame_layout),
             view_layout,
-            single_view_depth: None,
             views: PassParams::new(device, "view uniforms"),
             prepared: None,
             crop: crate::render::camera_crop::CameraCrop::new(device)?,
@@ -147,7 +146,9 @@ impl MeshNPass {
         let camera = &frame.camera;
         let views = self.write_views(device, &[0.0], |vd| camera.view_uniform(vd));
         let depth = self
-            .single_view_depth
+            .prepared
+            .as_ref()
+            .and_then(|p| p.made.as_ref())
             .made("MeshNPass single-view depth")?
             .view
             .clone();
@@ -258,14 +259,19 @@ impl Renderer<MeshBuffers> for MeshNPass {
         _mesh: &MeshBuffers,
         frame: &Frame,
     ) -> Result<()> {
+        let mut depth = self.prepared.take().and_then(|p| p.made);
         begin_prepare(device, frame, &mut self.prepared)?;
         match self.method {
-            Method::NPass => self.npass.prepare(device, frame)?,
+            Method::NPass => {
+                depth = None;
+                self.npass.prepare(device, frame)?
+            }
             Method::Warp => return Err(crate::warp::references::not_a_frame_renderer("MeshNPass")),
             _ => {
                 frame.check_full_views("single-view")?;
+                // The last frame's depth where it fits, else a new one.
                 cached_texture_2d(
-                    &mut self.single_view_depth,
+                    &mut depth,
                     device,
                     "single-view depth",
                     frame.size,
@@ -274,7 +280,10 @@ impl Renderer<MeshBuffers> for MeshNPass {
                 )?;
             }
         }
-        self.prepared = Some(PreparedFor::of(frame));
+        self.prepared = Some(Prepared {
+            key: PreparedFor::of(frame),
+            made: depth,
+        });
         Ok(())
     }
 
@@ -287,7 +296,7 @@ impl Renderer<MeshBuffers> for MeshNPass {
         target: &SpatialTarget,
     ) -> Result<()> {
         check_target(frame, target)?;
-        check_prepared("MeshNPass", &self.prepared, &PreparedFor::of(frame))?;
+        prepared_state("MeshNPass", &self.prepared, &PreparedFor::of(frame))?;
         match self.method {
             Method::NPass => self.encode_npass(device, encoder, mesh, frame, target),
             _ => self.encode_single_view(device, encoder, mesh, frame, target),
@@ -305,7 +314,10 @@ impl ReferenceRenderer<MeshBuffers> for MeshNPass {
     ) -> Result<()> {
         begin_prepare(device, frame, &mut self.prepared)?;
         crate::warp::references::check_reference_method("MeshNPass", self.method)?;
-        self.prepared = Some(PreparedFor::of(frame));
+        self.prepared = Some(Prepared {
+            key: PreparedFor::of(frame),
+            made: None,
+        });
         Ok(())
     }
 
@@ -317,7 +329,7 @@ impl ReferenceRenderer<MeshBuffers> for MeshNPass {
         frame: &Frame,
         images: &ReferenceImages,
     ) -> Result<()> {
-        check_prepared("MeshNPass", &self.prepared, &PreparedFor::of(frame))?;
+        prepared_state("MeshNPass", &self.prepared, &PreparedFor::of(frame))?;
         let views = self.write_frame_views(device, frame);
         let layers = images.color.layer_views.iter();
         for (j, (color, nearness)) in layers.zip(&images.nearness.layer_views).enumerate() {

@@ -21,7 +21,7 @@ use crate::render::quilt::QuiltLayout;
 use crate::render::specialize::Specialization;
 use crate::render::Method;
 use crate::render::ViewLayers;
-use crate::render::{begin_prepare, Made, Renderer};
+use crate::render::{begin_prepare, Made, Prepared, Renderer};
 use crate::target::SpatialTarget;
 use crate::volume::{VolumeScene, VolumeSettings};
 
@@ -34,17 +34,12 @@ pub struct VolumeRaycaster {
     pipelines: PipelineCache<RaycastPipelineKey, wgpu::ComputePipeline>,
     /// N-pass and layered only.
     npass: Option<NPassHarness>,
-    /// Tiled only.
-    tiled: Option<Tiled>,
-    prepared: Option<PreparedFor>,
+    /// Tiled only: composites the quilt atlas into the spatial image.
+    compositor: Option<AtlasCompositor>,
+    /// What `prepare` made for its frame: the tiled method's atlas (`None` for the others).
+    prepared: Option<Prepared<PreparedFor, Option<Atlas>>>,
     /// The parallel camera model's crop, recorded last.
     crop: crate::render::camera_crop::CameraCrop,
-}
-
-/// The tiled method's atlas and its compositor.
-struct Tiled {
-    compositor: AtlasCompositor,
-    atlas: Option<Atlas>,
 }
 
 /// Where a dispatch writes.
@@ -147,11 +142,8 @@ impl VolumeRaycaster {
             }
             _ => None,
         };
-        let tiled = match output {
-            Output::Atlas => Some(Tiled {
-                compositor: AtlasCompositor::new(device, &resources.frame_layout)?,
-                atlas: None,
-            }),
+        let compositor = match output {
+            Output::Atlas => Some(AtlasCompositor::new(device, &resources.frame_layout)?),
             _ => None,
         };
         Ok(Self {
@@ -161,7 +153,7 @@ impl VolumeRaycaster {
             output_layout,
             pipelines: PipelineCache::new("volume ray-marching"),
             npass,
-            tiled,
+            compositor,
             prepared: None,
             crop: crate::render::camera_crop::CameraCrop::new(device)?,
         })
@@ -198,10 +190,16 @@ impl VolumeRaycaster {
         Ok(())
     }
 
-    /// The end of every prepare: the pipeline for `key`, then `key` is what was prepared.
-    fn finish_prepare(&mut self, device: &wgpu::Device, key: PreparedFor) -> Result<()> {
+    /// The end of every prepare: the pipeline for `key`, then `key` (with `atlas`, the tiled
+    /// method's) is what was prepared.
+    fn finish_prepare(
+        &mut self,
+        device: &wgpu::Device,
+        key: PreparedFor,
+        atlas: Option<Atlas>,
+    ) -> Result<()> {
         self.ensure_pipeline(device, RaycastPipelineKey::from(key))?;
-        self.prepared = Some(key);
+        self.prepared = Some(Prepared { key, made: atlas });
         Ok(())
     }
 
@@ -266,6 +264,7 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         scene: &VolumeScene,
         frame: &Frame,
     ) -> Result<()> {
+        let last_atlas = self.prepared.take().and_then(|p| p.made);
         begin_prepare(device, frame, &mut self.prepared)?;
         if self.method == Method::Warp {
             return Err(crate::warp::references::not_a_frame_renderer(
@@ -279,14 +278,18 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         if let Some(npass) = &mut self.npass {
             npass.prepare(device, frame)?;
         }
-        if let Some(tiled) = &mut self.tiled {
-            let layout = QuiltLayout::for_views(frame.camera.views, frame.size);
-            if !tiled.atlas.as_ref().is_some_and(|a| a.fits(&layout, false)) {
-                tiled.atlas = None; // free before allocating the replacement
-                tiled.atlas = Some(Atlas::new(device, layout, false)?);
+        let atlas = match self.compositor {
+            Some(_) => {
+                let layout = QuiltLayout::for_views(frame.camera.views, frame.size);
+                Some(match last_atlas {
+                    Some(atlas) if atlas.fits(&layout, false) => atlas,
+                    // The last one is freed before its replacement is allocated.
+                    _ => Atlas::new(device, layout, false)?,
+                })
             }
-        }
-        self.finish_prepare(device, key)
+            None => None,
+        };
+        self.finish_prepare(device, key, atlas)
     }
 
     fn encode(
@@ -300,12 +303,14 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         let own = self.own_frame(frame)?;
         VolumeEncode {
             renderer: "VolumeRaycaster",
-            prepared: self.prepared,
+            prepared: self.prepared.as_ref().map(|p| p.key),
             resources: &self.resources,
             settings: &self.settings,
             wanted: PreparedFor::of(&self.settings, &own, self.method),
         }
         .check(scene, frame, target)?;
+        // Checked just above: prepared for this frame.
+        let atlas = self.prepared.as_ref().and_then(|p| p.made.as_ref());
         let full = frame;
         let frame = &own;
         let camera = &frame.camera;
@@ -342,9 +347,9 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         };
         let view = wgpu::BindingResource::TextureView;
         // (output group, views in the dispatch's z) per dispatch.
-        let outputs: Vec<(wgpu::BindGroup, u32)> = match (&self.npass, &self.tiled) {
-            (_, Some(tiled)) => {
-                let atlas = tiled.atlas.made("VolumeRaycaster atlas")?;
+        let outputs: Vec<(wgpu::BindGroup, u32)> = match (&self.npass, &self.compositor) {
+            (_, Some(_)) => {
+                let atlas = atlas.made("VolumeRaycaster atlas")?;
                 let quilt = atlas.layout.uniform_buffer(device, atlas.layout.uniform());
                 let group = output(&[view(&atlas.color.view), quilt.as_entire_binding()]);
                 vec![(group, camera.views)]
@@ -378,9 +383,9 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
         if let Some(npass) = &self.npass {
             npass.composite(device, encoder, &self.resources.frame, target)?;
         }
-        if let Some(tiled) = &self.tiled {
-            let atlas = tiled.atlas.made("VolumeRaycaster atlas")?;
-            tiled.compositor.encode(
+        if let Some(compositor) = &self.compositor {
+            let atlas = atlas.made("VolumeRaycaster atlas")?;
+            compositor.encode(
                 device,
                 encoder,
                 &self.resources.frame,
@@ -396,7 +401,7 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
     }
 
     fn atlas(&self) -> Option<&Atlas> {
-        self.tiled.as_ref()?.atlas.as_ref()
+        self.prepared.as_ref()?.made.as_ref()
     }
 }
 

@@ -25,7 +25,7 @@ impl ReferenceRenderer<VolumeScene> for VolumeRaycaster {
         let key = PreparedFor::of(&self.settings, frame, Method::Warp);
         self.resources
             .upload(device, queue, scene, &self.settings, key.skip_empty)?;
-        self.finish_prepare(device, key)
+        self.finish_prepare(device, key, None)
     }
 
     fn encode_references(
@@ -40,7 +40,7 @@ impl ReferenceRenderer<VolumeScene> for VolumeRaycaster {
         self.settings.validate_for(scene)?;
         let encode = VolumeEncode {
             renderer: "VolumeRaycaster",
-            prepared: self.prepared,
+            prepared: self.prepared.as_ref().map(|p| p.key),
             resources: &self.resources,
             settings: &self.settings,
             wanted: PreparedFor::of(&self.settings, frame, Method::Warp),
