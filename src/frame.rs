@@ -96,10 +96,13 @@ pub struct Frame {
     /// Background colour (linear RGBA).
     pub background: [f32; 4],
     /// Per-view resolution (Yalçın & Çapın's view LOD): the methods that render view images
-    /// (N-pass, tiled, layered, MRT) render them at this share of `size` in each direction and
-    /// up-sample them bilinearly when compositing; 1 = full size (exact). In (0, 1]. The
-    /// single pass and the single view have no view images and refuse anything but 1.
-    pub view_scale: f32,
+    /// (N-pass, tiled, layered, MRT) render them at this share of `size` in x and in y and
+    /// up-sample them bilinearly when compositing; `[1, 1]` = full size (exact). Each in
+    /// (0, 1]. The two may differ: the view images keep the camera's aspect whatever their
+    /// own, so e.g. Looking Glass's square 857×857 quilt tiles of a 16:9 panel are
+    /// `[857/3840, 857/2160]` ([`Frame::scale_views_to`]). The single pass and the single view
+    /// have no view images and refuse anything but `[1, 1]`.
+    pub view_scale: [f32; 2],
 }
 
 impl Frame {
@@ -111,7 +114,7 @@ impl Frame {
             light: Light::default(),
             size,
             background: [0.0, 0.0, 0.0, 1.0],
-            view_scale: 1.0,
+            view_scale: [1.0; 2],
         };
         frame.validate()?;
         Ok(frame)
@@ -141,10 +144,10 @@ impl Frame {
                 ),
             ));
         }
-        if !(self.view_scale > 0.0 && self.view_scale <= 1.0) {
+        if !self.view_scale.iter().all(|s| *s > 0.0 && *s <= 1.0) {
             return Err(Error::invalid(
                 "view scale",
-                format!("{}: must be in (0, 1]", self.view_scale),
+                format!("{}: each must be in (0, 1]", self.view_scale_text()),
             ));
         }
         if self.camera.views != self.display.views() {
@@ -160,10 +163,33 @@ impl Frame {
         Ok(())
     }
 
-    /// Size of the view images at [`Frame::view_scale`]: each side rounded up, at least 1.
+    /// Size of the view images at [`Frame::view_scale`]: each side rounded up (a thousandth
+    /// of a pixel forgiven, so that `scale_views_to` gives back its size), at least 1.
     pub fn view_size(&self) -> [u32; 2] {
-        self.size
-            .map(|side| ((side as f32 * self.view_scale).ceil() as u32).clamp(1, side))
+        let side = |size: u32, scale: f32| {
+            ((size as f64 * scale as f64 - 1e-3).ceil() as u32).clamp(1, size)
+        };
+        [
+            side(self.size[0], self.view_scale[0]),
+            side(self.size[1], self.view_scale[1]),
+        ]
+    }
+
+    /// Set [`Frame::view_scale`] so that the view images are `size` pixels (each side at most
+    /// the frame's: view images are never larger than the spatial image).
+    pub fn scale_views_to(&mut self, size: [u32; 2]) -> Result<()> {
+        if size.contains(&0) || size[0] > self.size[0] || size[1] > self.size[1] {
+            return Err(Error::invalid(
+                "view image size",
+                format!(
+                    "{}x{}: each side must be in 1 ..= the frame's {}x{}",
+                    size[0], size[1], self.size[0], self.size[1]
+                ),
+            ));
+        }
+        self.view_scale = [0, 1].map(|i| size[i] as f32 / self.size[i] as f32);
+        debug_assert_eq!(self.view_size(), size);
+        Ok(())
     }
 
     /// The frame the view images are rendered with: this one at [`Frame::view_size`] (the
@@ -171,7 +197,7 @@ impl Frame {
     pub fn for_view_images(&self) -> Frame {
         Frame {
             size: self.view_size(),
-            view_scale: 1.0,
+            view_scale: [1.0; 2],
             ..self.clone()
         }
     }
@@ -209,7 +235,7 @@ impl Frame {
 
     /// Fail unless [`Frame::view_scale`] is 1: for `method`, which renders no view images.
     pub fn check_full_views(&self, method: &str) -> Result<()> {
-        if self.view_scale == 1.0 {
+        if self.view_scale == [1.0; 2] {
             return Ok(());
         }
         Err(Error::invalid(
@@ -217,9 +243,17 @@ impl Frame {
             format!(
                 "{}: the {method} method renders no view images to scale (only n-pass, tiled, \
                  layered and mrt do)",
-                self.view_scale
+                self.view_scale_text()
             ),
         ))
+    }
+
+    /// The view scale as the user gave it: one number when x and y agree, else `x,y`.
+    pub fn view_scale_text(&self) -> String {
+        match self.view_scale {
+            [x, y] if x == y => format!("{x}"),
+            [x, y] => format!("{x},{y}"),
+        }
     }
 
     /// The uniform bound at group 0.

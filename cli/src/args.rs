@@ -255,7 +255,8 @@ pub struct RenderArgs {
     /// Looking Glass software also reads e.g. 8x6 for 48 views, the last tiles empty).
     #[arg(long = "quilt", value_name = "COLSxROWS", value_parser = parse_size)]
     pub quilt_grid: Option<[u32; 2]>,
-    /// The left and right views of the stereo outputs (default: the two nearest the middle).
+    /// The left and right views of the stereo outputs (default: two views a quarter of the
+    /// views apart, about the middle).
     #[arg(long, value_parser = parse_pair)]
     pub eyes: Option<[u32; 2]>,
     /// Per-view resolution: the n-pass, tiled, layered and mrt methods render their view
@@ -263,6 +264,11 @@ pub struct RenderArgs {
     /// compositing; 1 = full size. In (0, 1].
     #[arg(long, value_name = "S", default_value_t = 1.0, value_parser = parse_view_scale)]
     pub view_scale: f32,
+    /// The view images' size instead of --view-scale (each side at most --size's; the views
+    /// keep the camera's aspect, so tiles of another aspect stretch as Looking Glass's quilts
+    /// do: e.g. --method tiled --view-size 857x857 renders a 16" panel's 7x7 quilt of 857x857).
+    #[arg(long, value_name = "WxH", value_parser = parse_size, conflicts_with = "view_scale")]
+    pub view_size: Option<[u32; 2]>,
     /// Print one JSON object with the run's parameters and timing on stdout.
     #[arg(long)]
     pub json: bool,
@@ -303,11 +309,14 @@ impl RenderArgs {
             }
         }
         let scaled = [Method::NPass, Method::Tiled, Method::Layered, Method::Mrt];
-        if self.view_scale != 1.0 && !scaled.contains(&self.method) {
+        let flag = match self.view_size {
+            Some([w, h]) => Some(format!("--view-size {w}x{h}")),
+            None => (self.view_scale != 1.0).then(|| format!("--view-scale {}", self.view_scale)),
+        };
+        if let Some(flag) = flag.filter(|_| !scaled.contains(&self.method)) {
             bail!(
-                "--view-scale {}: the {} method renders no view images to scale (only n-pass, \
-                 tiled, layered and mrt do)",
-                self.view_scale,
+                "{flag}: the {} method renders no view images to scale (only n-pass, tiled, \
+                 layered and mrt do)",
                 self.method
             );
         }
@@ -335,7 +344,12 @@ impl RenderArgs {
         let size = image_size(self.size, &display);
         let camera = self.camera.camera(bounds, &display, size)?;
         let mut frame = Frame::new(camera, display, size)?;
-        frame.view_scale = self.view_scale;
+        match self.view_size {
+            Some(views) => frame
+                .scale_views_to(views)
+                .map_err(|e| anyhow::anyhow!("--view-size: {e}"))?,
+            None => frame.view_scale = [self.view_scale; 2],
+        }
         frame.validate()?;
         Ok(frame)
     }

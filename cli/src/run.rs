@@ -65,7 +65,7 @@ pub fn compare_with<S: ?Sized>(
     image: &RgbImage,
 ) -> Result<ImageDiff> {
     let full = Frame {
-        view_scale: 1.0,
+        view_scale: [1.0; 2],
         ..frame.clone()
     };
     let target = SpatialTarget::new(&ctx.device, frame.size)?;
@@ -113,7 +113,8 @@ pub fn run_fields(
         "adapter": ctx.adapter_label(),
         "ms": run.ms,
         "frames": common.frames,
-        "view_scale": common.view_scale,
+        "view_scale": frame.view_scale,
+        "view_size": frame.view_size(),
         "timing": run.timing,
         "focal_distance": frame.camera.focal_distance,
         "separation": frame.camera.separation,

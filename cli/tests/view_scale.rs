@@ -59,7 +59,7 @@ fn oracle<S: ?Sized>(alone: &mut dyn Renderer<S>, scene: &S, frame: &Frame) -> R
             let one = Frame {
                 display: Display::parse(&format!("view:{n},{v}")).unwrap(),
                 size: frame.view_size(),
-                view_scale: 1.0,
+                view_scale: [1.0; 2],
                 ..frame.clone()
             };
             upsample(&common::render(alone, scene, &one), frame.size)
@@ -93,11 +93,11 @@ fn assert_upsampled<S: ?Sized>(
         let image = common::render(renderer.as_mut(), scene, frame);
         let diff = compare(&image, &expected).unwrap();
         let full = Frame {
-            view_scale: 1.0,
+            view_scale: [1.0; 2],
             ..frame.clone()
         };
         let at_full = common::render(renderer.as_mut(), scene, &full);
-        let tag = format!("{name} {method} S={}", frame.view_scale);
+        let tag = format!("{name} {method} S={}", frame.view_scale_text());
         if diff.max_abs_err > 1 {
             let path = common::save_diff(&tag.replace(' ', "_"), &image, &expected);
             panic!("{tag}: {diff:?} (diff image {})", path.display());
@@ -111,7 +111,7 @@ fn assert_upsampled<S: ?Sized>(
 
 fn scaled(frame: &Frame, s: f32) -> Frame {
     let mut frame = frame.clone();
-    frame.view_scale = s;
+    frame.view_scale = [s; 2];
     frame.validate().unwrap();
     frame
 }
@@ -122,9 +122,11 @@ fn mesh_view_images_are_the_small_views_upsampled() {
     let device = common::gpu().device.clone();
     let buffers = MeshBuffers::new(&device, &mesh).unwrap();
     let base = common::frame(mesh.bounds().unwrap(), "hubner8", 0.15, 1.0, [96, 64]);
-    // 0.3 rounds up to 29×20: a different aspect than the panel's, same camera.
-    for s in [0.5, 0.3] {
-        let frame = scaled(&base, s);
+    // 0.3 rounds up to 29×20: a different aspect than the panel's, same camera; 32×48 scales
+    // x and y apart (tall tiles of a wide frame, as Looking Glass's square quilt tiles are).
+    let mut anisotropic = base.clone();
+    anisotropic.scale_views_to([32, 48]).unwrap();
+    for frame in [scaled(&base, 0.5), scaled(&base, 0.3), anisotropic] {
         let mut renderers: Vec<(&str, Box<dyn Renderer<MeshBuffers>>)> = vec![
             (
                 "n-pass",
@@ -191,7 +193,7 @@ fn assert_chunked_splats_are_upsampled(
         assert!(single_views || how.contains(chunks), "{method}: {how}");
         let diff = compare(&image, &expected).unwrap();
         if diff.max_abs_err > 1 {
-            let tag = format!("points_{method}_chunked_S{}", frame.view_scale);
+            let tag = format!("points_{method}_chunked_S{}", frame.view_scale_text());
             let path = common::save_diff(&tag, &image, &expected);
             panic!("{tag} ({how}): {diff:?} (diff image {})", path.display());
         }
@@ -244,9 +246,21 @@ fn view_sizes_round_up_and_methods_without_view_images_refuse_a_scale() {
     assert_eq!(scaled(&base, 1.0).view_size(), [96, 64]);
     assert_eq!(scaled(&base, 0.3).view_size(), [29, 20]);
     assert_eq!(scaled(&base, 1e-6).view_size(), [1, 1]);
+    // Any view size, of any aspect, is what it asks for (Looking Glass's square tiles of a
+    // 16:9 panel among them); larger than the frame is refused by name.
+    let mut panel = common::frame(mesh.bounds().unwrap(), "hubner8", 0.15, 1.0, [3840, 2160]);
+    for size in [[857, 857], [1, 2160], [3840, 1], [3839, 2159], [420, 560]] {
+        panel.scale_views_to(size).unwrap();
+        assert_eq!(panel.view_size(), size);
+    }
+    let error = panel.scale_views_to([857, 2161]).unwrap_err().to_string();
+    assert!(
+        error.contains("view image size") && error.contains("857x2161"),
+        "{error}"
+    );
     for bad in [0.0, -0.5, 1.5, f32::NAN] {
         let mut frame = base.clone();
-        frame.view_scale = bad;
+        frame.view_scale = [bad, 0.5];
         let error = frame.validate().unwrap_err().to_string();
         assert!(
             error.contains("view scale") && error.contains("(0, 1]"),

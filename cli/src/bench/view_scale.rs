@@ -48,7 +48,7 @@ pub fn measure(
             let mut r = AnyRenderer::new(&ctx.device, &scene.data, &options)?;
             for s in SCALES {
                 let mut frame = full.clone();
-                frame.view_scale = s;
+                frame.view_scale = [s; 2];
                 let ms = time_frame(ctx, timer, scene, &mut r, &frame, plan.study_frames())?;
                 let d = compare(&image(ctx, scene, &mut r, &frame)?, &oracle)?;
                 let [w, h] = frame.view_size();
