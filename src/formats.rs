@@ -156,10 +156,13 @@ impl Format {
     /// they are read, so that the error says what the file is).
     pub fn is_read_as(self, kind: DataKind) -> bool {
         self.kinds().contains(&kind)
-            && matches!(
-                self,
-                Self::Obj | Self::Ply | Self::Nrrd | Self::Den | Self::Raw | Self::Png
-            )
+            && match self {
+                Self::Obj | Self::Ply | Self::Nrrd | Self::Den | Self::Raw | Self::Png => true,
+                Self::Stl => cfg!(feature = "stl"),
+                Self::Gltf => cfg!(feature = "gltf"),
+                Self::Jpeg => cfg!(feature = "jpeg"),
+                Self::Las | Self::Nifti | Self::Dicom | Self::MetaImage | Self::Vtk => false,
+            }
     }
 }
 
@@ -216,6 +219,30 @@ pub fn expect(path: &Path, kind: DataKind) -> Result<Format> {
         });
     }
     Ok(format)
+}
+
+/// What the file at `path` holds: its format and kind — the format's usual kind, except that
+/// a PLY whose header declares faces is a mesh (its vertices alone are a point cloud).
+pub fn kind(path: &Path) -> Result<(Format, DataKind)> {
+    let format = detect(path)?;
+    let kind = match format {
+        Format::Ply if ply_faces(path)? > 0 => DataKind::Mesh,
+        Format::Ply => DataKind::Points,
+        other => other.kinds()[0],
+    };
+    Ok((format, kind))
+}
+
+/// How many faces the PLY header of `path` declares (its first 64 KiB hold the header).
+pub(crate) fn ply_faces(path: &Path) -> Result<usize> {
+    let mut head = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(64 << 10).read_to_end(&mut head))
+        .map_err(|e| Error::io(path, e))?;
+    crate::points::ply::face_count(&head).map_err(|reason| Error::Points {
+        path: path.into(),
+        reason,
+    })
 }
 
 /// The formats this build reads, per kind, for error messages.

@@ -98,7 +98,20 @@ impl RgbImage {
         std::fs::write(path, png).map_err(|e| Error::io(path, e))
     }
 
-    /// Read any PNG as RGB8.
+    /// Read an image file as RGB8: PNG, or JPEG with the `jpeg` feature (told by its first
+    /// bytes; its size checked against the image limits and the memory budget before it is
+    /// decoded). A file of another kind is refused naming the command that reads it.
+    pub fn load(path: &Path) -> Result<Self> {
+        let rgb = crate::rgbd::decode(path)?.to_rgb8();
+        Ok(Self {
+            width: rgb.width(),
+            height: rgb.height(),
+            data: rgb.into_raw(),
+        })
+    }
+
+    /// Read a PNG this project wrote (tests, examples) as RGB8, without the input checks of
+    /// [`RgbImage::load`].
     pub fn load_png(path: &Path) -> Result<Self> {
         let img = image::open(path).map_err(|e| Error::Image {
             path: path.to_path_buf(),

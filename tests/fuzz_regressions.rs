@@ -6,6 +6,7 @@
 use std::path::{Path, PathBuf};
 
 use autostereo::display::{Calibration, Display, DisplayKind};
+use autostereo::formats::Format;
 use autostereo::mesh::Mesh;
 use autostereo::volume::load::{parse_den, parse_nrrd, parse_raw, RawSpec};
 use autostereo::volume::TransferFunction;
@@ -86,6 +87,9 @@ fn run(target: &str, data: &[u8]) {
                 }
             }
         }
+        "ply_mesh" => drop(Mesh::parse(data, Format::Ply, "fuzz.ply".as_ref())),
+        "stl" => drop(Mesh::parse(data, Format::Stl, "fuzz.stl".as_ref())),
+        "gltf" => drop(Mesh::parse(data, Format::Gltf, "fuzz.glb".as_ref())),
         other => panic!("no fuzz target '{other}'"),
     }
 }
@@ -118,6 +122,9 @@ fn seeds_and_found_crashes_replay_without_panics() {
         "quilt_name",
         "rgbd",
         "quilt_image",
+        "ply_mesh",
+        "stl",
+        "gltf",
     ];
     let mut replayed = 0;
     for target in targets {
@@ -153,6 +160,15 @@ fn seeds_are_valid_inputs() {
     }
     for file in inputs("seeds", "ply") {
         autostereo::points::ply::parse(&std::fs::read(&file).unwrap()).unwrap();
+    }
+    for (target, format) in [
+        ("ply_mesh", Format::Ply),
+        ("stl", Format::Stl),
+        ("gltf", Format::Gltf),
+    ] {
+        for file in inputs("seeds", target) {
+            Mesh::parse(&std::fs::read(&file).unwrap(), format, &file).unwrap();
+        }
     }
     for file in inputs("seeds", "display_spec") {
         Display::parse(&std::fs::read_to_string(&file).unwrap()).unwrap();

@@ -14,7 +14,7 @@ use crate::args::{check_output, parse_size, DisplayArgs};
 
 #[derive(clap::Args)]
 pub struct InterleaveArgs {
-    /// The quilt PNG: view 0 bottom-left, left → right then bottom → top; its grid from the
+    /// The quilt image (PNG or JPEG): view 0 bottom-left, left → right then bottom → top; its grid from the
     /// name (`…_qs{cols}x{rows}a{aspect}.png`) unless --quilt gives it.
     quilt: PathBuf,
     /// The quilt's grid, COLSxROWS (overrides the name).
@@ -33,7 +33,7 @@ pub struct InterleaveArgs {
 pub fn run(args: InterleaveArgs) -> Result<()> {
     check_output(&args.out)?;
     let display = args.display.display()?;
-    let image = RgbImage::load_png(&args.quilt)?;
+    let image = RgbImage::load(&args.quilt)?;
     let name = args
         .quilt
         .file_name()

@@ -67,7 +67,7 @@ pub struct MeshArgs {
 pub fn run(args: MeshArgs) -> Result<()> {
     args.common.check()?;
     let mut mesh = match &args.obj {
-        Some(path) => Mesh::load_obj(path)?,
+        Some(path) => Mesh::load(path)?,
         None => Mesh::torus_scene(),
     };
     if args.sort_triangles {

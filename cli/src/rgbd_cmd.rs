@@ -17,9 +17,10 @@ use crate::args::{check_output, parse_size, DisplayArgs};
 
 #[derive(clap::Args)]
 pub struct RgbdArgs {
-    /// Colour PNG (with --sbs: the side-by-side RGB-D PNG, colour left, depth right).
+    /// Colour image, PNG or JPEG (with --sbs: the side-by-side RGB-D image, colour left, depth
+    /// right).
     color: PathBuf,
-    /// Depth PNG, 8 or 16 bit (its luma; white = near unless --depth-invert).
+    /// Depth image (PNG, 8 or 16 bit; or JPEG) (its luma; white = near unless --depth-invert).
     #[arg(required_unless_present = "sbs")]
     depth: Option<PathBuf>,
     /// COLOR is one side-by-side image: colour in the left half, depth in the right.

@@ -30,7 +30,7 @@ pub fn run(args: ViewsArgs) -> Result<()> {
     let display = args.display.display()?;
     let mask = display.mask();
     let n = mask.views();
-    let spatial = RgbImage::load_png(&args.spatial)?;
+    let spatial = RgbImage::load(&args.spatial)?;
     let check = |v: u32| -> Result<()> {
         if v >= n {
             bail!(

@@ -310,6 +310,7 @@ fn cli_reports_bad_input_without_panicking() {
     );
     let calibration = temp_file("cli_calibration.json", r#"{"pitch": {"value": 50}}"#);
     let tiny_raw = temp_file("cli_tiny.raw", "ab");
+    let xyz = temp_file("cli_cloud.xyz", "1 2 3\n");
     let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../target/test-input/cli_out.png");
     let out = out.to_str().unwrap();
     let lkg = format!("lkg:{}", calibration.display());
@@ -369,7 +370,10 @@ fn cli_reports_bad_input_without_panicking() {
         (vec!["volume", "missing.nrrd"], "missing.nrrd"),
         (vec!["points", "missing.ply"], "missing.ply"),
         (vec!["points", bad_ply.to_str().unwrap()], "truncated"),
-        (vec!["points", "cloud.xyz"], "unknown extension"),
+        (
+            vec!["points", xyz.to_str().unwrap()],
+            "unknown format; read here: meshes .obj .ply",
+        ),
         (
             vec!["points", "--groups", "0", "--size", "8x8"],
             "group count",

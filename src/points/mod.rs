@@ -67,19 +67,28 @@ pub struct Completion {
 
 impl PointCloud {
     /// Load a `.ply` (its `vertex` element) or `.obj` (its `v` lines, with `v x y z r g b`
-    /// colours when present; faces, normals and texture coordinates are ignored).
+    /// colours when present; faces, normals and texture coordinates are ignored), told by
+    /// its first bytes, else its extension ([`crate::formats`]); a file of another kind is
+    /// refused naming the command that reads it. A PLY mesh's vertices are read as points,
+    /// and the log says that its faces are not drawn.
     pub fn load(path: &Path) -> Result<Self> {
-        match path
-            .extension()
-            .and_then(|e| e.to_str())
-            .map(str::to_ascii_lowercase)
-        {
-            Some(e) if e == "ply" => ply::load(path),
-            Some(e) if e == "obj" => obj_vertices(path),
-            _ => Err(Error::Points {
-                path: path.into(),
-                reason: "unknown extension (expected .ply or .obj)".into(),
-            }),
+        use crate::formats::{expect, ply_faces, DataKind, Format};
+        match expect(path, DataKind::Points)? {
+            Format::Ply => {
+                let faces = ply_faces(path)?;
+                let cloud = ply::load(path)?;
+                if faces > 0 {
+                    log::warn!(
+                        "{}: a mesh of {faces} faces; its {} vertices are drawn as points \
+                         (`autostereo mesh {}` draws its surface)",
+                        path.display(),
+                        cloud.len(),
+                        path.display()
+                    );
+                }
+                Ok(cloud)
+            }
+            _ => obj_vertices(path),
         }
     }
 

@@ -184,8 +184,11 @@ impl RgbdImage {
 /// uncompressed, is 2 GiB: no real picture or depth map comes near).
 pub const MAX_IMAGE_FILE_BYTES: u64 = 1 << 31;
 
-/// A PNG file decoded: its bytes read with a bound, then [`decode_bytes`].
-fn decode(path: &Path) -> Result<image::DynamicImage> {
+/// An image file (PNG; JPEG with the `jpeg` feature) decoded: its format checked
+/// ([`crate::formats`]: a file of another kind names the command that reads it), its bytes
+/// read with a bound, then [`decode_bytes`].
+pub(crate) fn decode(path: &Path) -> Result<image::DynamicImage> {
+    crate::formats::expect(path, crate::formats::DataKind::Image)?;
     let bytes = crate::file::read_bounded(path, MAX_IMAGE_FILE_BYTES, "the image-file limit")?;
     decode_bytes(&bytes, path)
 }

@@ -23,19 +23,16 @@ pub enum KindArg {
 }
 
 impl KindArg {
-    /// The kind a file's extension says: .obj mesh, .ply points, .nrrd/.nhdr/.den volume.
+    /// The kind of data the file holds (autostereo::formats::kind: its first bytes, else
+    /// its extension; a PLY with faces is a mesh).
     pub fn of(path: &Path) -> Result<Self> {
-        let ext = path
-            .extension()
-            .and_then(|e| e.to_str())
-            .unwrap_or("")
-            .to_ascii_lowercase();
-        Ok(match ext.as_str() {
-            "obj" => KindArg::Mesh,
-            "ply" => KindArg::Points,
-            "nrrd" | "nhdr" | "den" => KindArg::Volume,
-            _ => bail!(
-                "{}: no kind for '.{ext}' files; say --kind mesh|points|volume",
+        use autostereo::formats::DataKind;
+        Ok(match autostereo::formats::kind(path)? {
+            (_, DataKind::Mesh) => KindArg::Mesh,
+            (_, DataKind::Points) => KindArg::Points,
+            (_, DataKind::Volume) => KindArg::Volume,
+            (format, DataKind::Image) => bail!(
+                "{}: {format} is an image; `autostereo rgbd` or `autostereo interleave` reads it",
                 path.display()
             ),
         })
@@ -69,7 +66,7 @@ pub fn load(
     let (scene, bounds) = match kind {
         KindArg::Mesh => {
             let mesh = match file {
-                Some(path) => Mesh::load_obj(path)?,
+                Some(path) => Mesh::load(path)?,
                 None => Mesh::torus_scene(),
             };
             let Some(bounds) = mesh.bounds() else {

@@ -207,3 +207,50 @@ pub(super) fn read_vertices(
     }
     Ok(cloud)
 }
+
+/// The triangles of the `face` element: each polygon's `vertex_indices` (or `vertex_index`)
+/// list as a fan from its first corner, every index checked against `vertices`.
+pub(super) fn read_faces(
+    reader: &mut dyn ValueReader,
+    element: &Element,
+    vertices: usize,
+) -> std::result::Result<Vec<u32>, String> {
+    let corners = element
+        .properties
+        .iter()
+        .position(|p| {
+            p.list.is_some() && matches!(p.name.as_str(), "vertex_indices" | "vertex_index")
+        })
+        .ok_or("the face element has no 'vertex_indices' list")?;
+    check_count(reader, element)?;
+    let mut triangles = Vec::new();
+    let mut polygon = Vec::new();
+    for i in 0..element.count {
+        for (j, p) in element.properties.iter().enumerate() {
+            if j != corners {
+                read_property(reader, p, |_| {}).map_err(|e| format!("face {i}: {e}"))?;
+                continue;
+            }
+            let count_type = p.list.unwrap_or(Scalar::U8);
+            let n = reader.next(count_type)?;
+            if !(0.0..=1e9).contains(&n) || n.fract() != 0.0 {
+                return Err(format!("face {i} has a bad corner count {n}"));
+            }
+            polygon.clear();
+            for _ in 0..n as usize {
+                let index = reader.next(p.value)?;
+                if !(0.0..vertices as f64).contains(&index) || index.fract() != 0.0 {
+                    return Err(format!(
+                        "face {i}: corner {index} is not one of the {vertices} vertices"
+                    ));
+                }
+                polygon.push(index as u32);
+            }
+        }
+        // A polygon of n corners is n − 2 triangles; points and lines have none.
+        for k in 1..polygon.len().saturating_sub(1) {
+            triangles.extend([polygon[0], polygon[k], polygon[k + 1]]);
+        }
+    }
+    Ok(triangles)
+}

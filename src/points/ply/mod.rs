@@ -7,7 +7,7 @@ mod header;
 
 use std::path::Path;
 
-use self::body::{read_vertices, skip_element, AsciiReader, BinaryReader, ValueReader};
+use self::body::{read_faces, read_vertices, skip_element, AsciiReader, BinaryReader, ValueReader};
 use self::header::{parse_header, Format};
 use super::PointCloud;
 use crate::error::{Error, Result};
@@ -23,11 +23,40 @@ pub fn load(path: &Path) -> Result<PointCloud> {
 
 /// Parse PLY `bytes` (errors are plain reasons; [`load`] adds the path).
 pub fn parse(bytes: &[u8]) -> std::result::Result<PointCloud, String> {
+    Ok(parse_elements(bytes, false)?.vertices)
+}
+
+/// A PLY file's `vertex` element and, when asked for, its `face` element's polygons as
+/// triangles (fans, three vertex indices each).
+pub(crate) struct PlyMesh {
+    pub vertices: PointCloud,
+    pub triangles: Vec<u32>,
+}
+
+/// Parse PLY `bytes` with its faces (errors are plain reasons).
+pub(crate) fn parse_mesh(bytes: &[u8]) -> std::result::Result<PlyMesh, String> {
+    parse_elements(bytes, true)
+}
+
+/// How many faces the header of PLY `bytes` declares (a mesh's vertices read as points say so).
+pub(crate) fn face_count(bytes: &[u8]) -> std::result::Result<usize, String> {
     let header = parse_header(bytes)?;
-    let vertex_index = header
+    Ok(header
         .elements
         .iter()
-        .position(|e| e.name == "vertex")
+        .filter(|e| e.name == "face")
+        .map(|e| e.count)
+        .sum())
+}
+
+/// The vertices and, with `faces`, the triangles; elements are read in the file's order (the
+/// vertex count from the header, so faces may come first) and the others skipped.
+fn parse_elements(bytes: &[u8], faces: bool) -> std::result::Result<PlyMesh, String> {
+    let header = parse_header(bytes)?;
+    let vertex = header
+        .elements
+        .iter()
+        .find(|e| e.name == "vertex")
         .ok_or("no 'vertex' element")?;
     let body = &bytes[header.body_start..];
     let mut reader: Box<dyn ValueReader> = match header.format {
@@ -38,10 +67,25 @@ pub fn parse(bytes: &[u8]) -> std::result::Result<PointCloud, String> {
             format: f,
         }),
     };
-    for element in &header.elements[..vertex_index] {
-        skip_element(reader.as_mut(), element)?;
+    let (mut vertices, mut triangles) = (None, Vec::new());
+    for element in &header.elements {
+        match element.name.as_str() {
+            "vertex" if vertices.is_none() => {
+                vertices = Some(read_vertices(reader.as_mut(), element)?);
+                if !faces {
+                    break;
+                }
+            }
+            "face" if faces => {
+                triangles.extend(read_faces(reader.as_mut(), element, vertex.count)?);
+            }
+            _ => skip_element(reader.as_mut(), element)?,
+        }
     }
-    read_vertices(reader.as_mut(), &header.elements[vertex_index])
+    Ok(PlyMesh {
+        vertices: vertices.ok_or("no 'vertex' element")?,
+        triangles,
+    })
 }
 
 #[cfg(test)]

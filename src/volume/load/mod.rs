@@ -123,20 +123,18 @@ pub(crate) fn format_error(path: &Path, reason: impl Into<String>) -> Error {
     }
 }
 
-/// Load by extension: `.nrrd`/`.nhdr` → NRRD, `.den` → VolPack. Raw files need [`load_raw`].
+/// Load a volume file of any format this build reads ([`crate::formats`]: NRRD `.nrrd`/`.nhdr`
+/// and VolPack `.den`), told by its first bytes, else its extension. Raw files need their
+/// dimensions and sample type ([`load_raw`]); a file of another kind is refused naming the
+/// command that reads it.
 pub fn load_any(path: &Path) -> Result<Volume> {
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .unwrap_or("")
-        .to_ascii_lowercase();
-    match ext.as_str() {
-        "nrrd" | "nhdr" => load_nrrd(path),
-        "den" => load_den(path),
+    use crate::formats::{expect, DataKind, Format};
+    match expect(path, DataKind::Volume)? {
+        Format::Nrrd => load_nrrd(path),
+        Format::Den => load_den(path),
         _ => Err(format_error(
             path,
-            "unknown volume format: expected .nrrd, .nhdr or .den (raw files need their \
-             dimensions and sample type: RawSpec)",
+            "raw voxels need their dimensions and sample type (RawSpec, load_raw)",
         )),
     }
 }
