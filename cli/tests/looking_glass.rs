@@ -95,8 +95,8 @@ fn the_quilt_is_the_familys_grid_with_tiles_of_the_panels_aspect() {
         sample("lkg_sample_16in_landscape_gen3_visual.json")
     );
     let base = out("lkg_16in.png");
-    // --size sets the spatial image only (small here: lavapipe's 128 MiB storage binding
-    // cannot hold the exact visibility's keys of a 3840×2160 frame yet).
+    // --size sets the spatial image only (small here, to keep the test fast; the panel's own
+    // size renders in bands: docs/panel_sizes.md).
     let (ok, _, stderr) = run(&[
         "mesh",
         "--display",

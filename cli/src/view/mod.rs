@@ -31,9 +31,10 @@ pub enum Preview {
     /// One view on every pixel (the centre view; keys , and . step through the views), for
     /// ordinary monitors.
     View,
-    /// Red-cyan anaglyph (Dubois) of the centre view and the next.
+    /// Red-cyan anaglyph (Dubois) of two views a quarter of the views apart about the middle
+    /// (the render commands' default `--eyes`).
     Anaglyph,
-    /// The centre view and the next side by side, each half the window's width.
+    /// The same two views side by side, each half the window's width.
     SideBySide,
     /// Every view in a Looking Glass quilt (view 0 bottom-left).
     Quilt,
