@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # The pipeline Looking Glass owners run today against the single pass, on a 16" Spatial Display
 # (3840×2160, 49 views: data/lkg_sample_16in_landscape_gen3_visual.json, subpixel cells):
-#   quilt    every view rendered into the family's quilt (7×7 tiles of 857×482 in 5999²),
-#            then interleaved: the tiled method at --view-scale 857/3840 (its atlas is that
-#            quilt; the compositing samples the tiles bilinearly as Looking Glass's shader does);
+#   quilt    every view rendered into the family's default quilt (5999², 7×7 tiles of 857×857,
+#            each tile seeing the panel's 16:9 through square texels, as Looking Glass's
+#            renderers make it), then interleaved: the tiled method at --view-size 857x857 (its
+#            atlas is that quilt; the compositing samples the tiles bilinearly, as Looking
+#            Glass's lenticular shader does);
 #   single   the single pass at the panel's size (one ray per subpixel);
 # each against the N-pass at full resolution (--compare: PSNR), for meshes, points and volumes;
 # time (one timed frame, a software rasteriser's: compare the rows, not machines) and the GPU
@@ -18,7 +20,6 @@ bin="${AUTOSTEREO_BIN:-target/release/autostereo}"
 out="$(mktemp -d)"
 trap 'rm -rf "$out"' EXIT
 cal=data/lkg_sample_16in_landscape_gen3_visual.json
-scale=$(python3 -c 'print(857 / 3840)')
 
 declare -A input=([mesh]="" [points]="" [volume]="")
 [ -f data/fetched/bunny.obj ] && input[mesh]=data/fetched/bunny.obj
@@ -33,7 +34,7 @@ for kind in mesh points volume; do
     [ -n "$file" ] && args+=("$file")
     args+=(--display "lkg:$cal" --compare --json --out "$out/x.png")
     case $pipeline in
-      quilt) args+=(--method tiled --view-scale "$scale") ;;
+      quilt) args+=(--method tiled --view-size 857x857) ;;
       single) args+=(--method single-pass) ;;
     esac
     echo "$kind $pipeline" >&2

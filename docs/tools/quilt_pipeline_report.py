@@ -23,9 +23,22 @@ def psnr_text(db):
     return "identical" if db >= IDENTICAL else f"{db:.1f}"
 
 
+def grid(views, tile):
+    """The atlas grid the tiled method picks (src/render/quilt.rs, QuiltLayout::for_views)."""
+    return min(((c, -(-views // c)) for c in range(1, views + 1)),
+               key=lambda cr: (max(cr[0] * tile[0], cr[1] * tile[1]), cr[0] * cr[1] - views, cr[1]))
+
+
+first = next(r for r in rows if r["pipeline"] == "quilt")
+tile, views, panel_size = first["view_size"], first["views"], first["size"]
+cols, rows_ = grid(views, tile)
+quilt_size = [cols * tile[0], rows_ * tile[1]]
+quilt_rays = views * tile[0] * tile[1]
+subpixels = 3 * panel_size[0] * panel_size[1]
 names = {
-    "quilt": "quilt (Looking Glass's: 7×7 tiles of 857×482, then interleaved)",
-    "single": "single pass (3840×2160, one ray per subpixel)",
+    "quilt": f"quilt ({quilt_size[0]}×{quilt_size[1]}: {cols}×{rows_} tiles of {tile[0]}×{tile[1]}, "
+             "then interleaved)",
+    "single": f"single pass ({panel_size[0]}×{panel_size[1]}, one ray per subpixel)",
 }
 lines = [
     "# The quilt pipeline against the single pass",
@@ -53,16 +66,19 @@ lines += [
     "",
     "![PSNR and time per primitive](images/quilt_pipeline.svg)",
     "",
-    "Looking Glass's own default quilt for this panel is 5999×5999 with 7×7 tiles of 857×857, "
-    "each stretched to the panel's 16:9 when interleaved; the quilt row here renders tiles of "
-    "857×482 (the panel's aspect at the same width: the tiled method at `--view-scale 857/3840`), "
-    "so it shades 0.56× the rays of Looking Glass's quilt and its vertical sharpness is lower by "
-    "that much. Neither quilt shades fewer rays than the panel has subpixels (49 × 857 × 482 = "
-    "20.2 M here, 49 × 857 × 857 = 36.0 M for Looking Glass's, against 3 × 3840 × 2160 = "
-    "24.9 M): where the quilt is faster it is because each view rasterises its own image with "
-    "no widened covering quads to test, and what it costs is the resampling — each subpixel "
-    "reads its view's tile bilinearly between the tile's texels, which blurs — measured above "
-    "as PSNR against the full-resolution N-pass.",
+    f"The quilt row is the pipeline Looking Glass owners run: the family's default quilt "
+    f"({quilt_size[0]}×{quilt_size[1]}, {cols}×{rows_} tiles of {tile[0]}×{tile[1]}; "
+    "src/display/lkg_family.rs), every tile rendered with the panel's camera (so its texels are "
+    f"stretched to the panel's {panel_size[0]}:{panel_size[1]} when interleaved, as in Looking "
+    f"Glass's own renderers), then interleaved: `--method tiled --view-size {tile[0]}x{tile[1]}`. "
+    f"The quilt shades {quilt_rays / 1e6:.1f} M rays ({views} × {tile[0]} × {tile[1]}), "
+    f"{quilt_rays / subpixels:.2f}× the {subpixels / 1e6:.1f} M subpixels the single pass shades "
+    f"(3 × {panel_size[0]} × {panel_size[1]}): where the quilt is faster, it is not because it "
+    "shades fewer rays but because each view rasterises its own small image with no widened "
+    "covering quads to test; what it costs is the resampling — each subpixel reads its view's "
+    "tile bilinearly between the tile's texels (horizontally "
+    f"{panel_size[0] / tile[0]:.1f} panel pixels per texel), which blurs — measured above as PSNR "
+    "against the full-resolution N-pass.",
     "",
 ]
 
