@@ -157,11 +157,18 @@ impl Format {
     pub fn is_read_as(self, kind: DataKind) -> bool {
         self.kinds().contains(&kind)
             && match self {
-                Self::Obj | Self::Ply | Self::Nrrd | Self::Den | Self::Raw | Self::Png => true,
+                Self::Obj
+                | Self::Ply
+                | Self::Nrrd
+                | Self::Den
+                | Self::Raw
+                | Self::MetaImage
+                | Self::Png => true,
                 Self::Stl => cfg!(feature = "stl"),
                 Self::Gltf => cfg!(feature = "gltf"),
                 Self::Jpeg => cfg!(feature = "jpeg"),
-                Self::Las | Self::Nifti | Self::Dicom | Self::MetaImage | Self::Vtk => false,
+                Self::Nifti => cfg!(feature = "nifti"),
+                Self::Las | Self::Dicom | Self::Vtk => false,
             }
     }
 }
@@ -376,9 +383,11 @@ mod tests {
         assert!(e.contains("unknown format; read here: meshes .obj"), "{e}");
         let ply = file("cloud.ply", b"ply\nformat ascii 1.0\n");
         assert_eq!(expect(&ply, DataKind::Points).unwrap(), Format::Ply);
-        let nifti = file("brain.nii.gz", &[0x1f, 0x8b, 8, 0]);
-        let e = expect(&nifti, DataKind::Volume).unwrap_err().to_string();
-        assert!(e.contains("NIfTI is not read yet"), "{e}");
+        let mut dicom = vec![0u8; 132];
+        dicom[128..].copy_from_slice(b"DICM");
+        let dicom = file("slice.dcm", &dicom);
+        let e = expect(&dicom, DataKind::Volume).unwrap_err().to_string();
+        assert!(e.contains("DICOM is not read yet"), "{e}");
         let e = expect(&dir, DataKind::Volume).unwrap_err().to_string();
         assert!(e.contains("a directory"), "{e}");
     }

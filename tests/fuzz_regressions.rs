@@ -90,6 +90,15 @@ fn run(target: &str, data: &[u8]) {
         "ply_mesh" => drop(Mesh::parse(data, Format::Ply, "fuzz.ply".as_ref())),
         "stl" => drop(Mesh::parse(data, Format::Stl, "fuzz.stl".as_ref())),
         "gltf" => drop(Mesh::parse(data, Format::Gltf, "fuzz.glb".as_ref())),
+        "nifti" | "metaimage" => {
+            let dir = std::env::temp_dir().join("autostereo-fuzz-empty");
+            std::fs::create_dir_all(&dir).unwrap();
+            let path = dir.join(format!("fuzz.{target}"));
+            drop(match target {
+                "nifti" => autostereo::volume::load::parse_nifti(data, &path),
+                _ => autostereo::volume::load::parse_metaimage(data, &path),
+            });
+        }
         other => panic!("no fuzz target '{other}'"),
     }
 }
@@ -125,6 +134,8 @@ fn seeds_and_found_crashes_replay_without_panics() {
         "ply_mesh",
         "stl",
         "gltf",
+        "nifti",
+        "metaimage",
     ];
     let mut replayed = 0;
     for target in targets {
@@ -169,6 +180,12 @@ fn seeds_are_valid_inputs() {
         for file in inputs("seeds", target) {
             Mesh::parse(&std::fs::read(&file).unwrap(), format, &file).unwrap();
         }
+    }
+    for file in inputs("seeds", "nifti") {
+        autostereo::volume::load::parse_nifti(&std::fs::read(&file).unwrap(), &file).unwrap();
+    }
+    for file in inputs("seeds", "metaimage") {
+        autostereo::volume::load::parse_metaimage(&std::fs::read(&file).unwrap(), &file).unwrap();
     }
     for file in inputs("seeds", "display_spec") {
         Display::parse(&std::fs::read_to_string(&file).unwrap()).unwrap();

@@ -44,7 +44,8 @@ pub enum BoundsArg {
 
 #[derive(clap::Args)]
 pub struct MeshArgs {
-    /// OBJ file; a generated torus scene when omitted.
+    /// Mesh file: OBJ, PLY with faces, STL, glTF (.gltf, .glb); a generated torus scene when
+    /// omitted.
     obj: Option<PathBuf>,
     #[command(flatten)]
     common: RenderArgs,

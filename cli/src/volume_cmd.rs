@@ -47,8 +47,8 @@ pub enum AlphaArg {
 
 #[derive(clap::Args)]
 pub struct VolumeArgs {
-    /// Volume file (.nrrd, .nhdr, .den, or raw with --raw-dims/--raw-type); a built-in data set
-    /// when omitted.
+    /// Volume file (NRRD, NIfTI .nii/.nii.gz, MetaImage .mha/.mhd, .den, or raw with
+    /// --raw-dims/--raw-type); a built-in data set when omitted.
     file: Option<PathBuf>,
     /// Built-in data set used when no file is given.
     #[arg(long, value_enum, default_value = "head")]
@@ -150,6 +150,16 @@ fn parse_f32_triple(s: &str) -> Result<[f32; 3], String> {
     }
 }
 
+/// The transfer-function preset a file gets without --tf: `mri` for the formats of MR studies
+/// (NIfTI, VolPack's MRI brain), else `ct-skin`.
+pub fn default_preset(path: &std::path::Path) -> &'static str {
+    use autostereo::formats::Format;
+    match autostereo::formats::detect(path) {
+        Ok(Format::Nifti | Format::Den) => "mri",
+        _ => "ct-skin",
+    }
+}
+
 fn load(args: &VolumeArgs) -> Result<(Volume, String)> {
     let (mut volume, default_tf) = match &args.file {
         None => match args.builtin {
@@ -173,12 +183,7 @@ fn load(args: &VolumeArgs) -> Result<(Volume, String)> {
                 (None, None) => load_any(path)?,
                 _ => bail!("raw volumes need both --raw-dims and --raw-type"),
             };
-            let tf = if path.extension().is_some_and(|e| e == "den") {
-                "mri"
-            } else {
-                "ct-skin"
-            };
-            (volume, tf)
+            (volume, default_preset(path))
         }
     };
     if let Some(spacing) = args.spacing {

@@ -436,3 +436,67 @@ fn jpeg_images_are_read_where_pngs_are() {
     let b = interleaved(&quilt_png, "interleave_png.png");
     assert_eq!(compare(&a, &b).unwrap().max_abs_err, 0);
 }
+
+/// `autostereo volume` reads a MetaImage as the same scan in NRRD (LPS geometry as a
+/// TransformMatrix against RAS space directions): the same image; and the geometry is used:
+/// the NRRD's axes flipped render another picture.
+#[test]
+fn a_volume_renders_alike_from_nrrd_and_metaimage() {
+    let n = 16usize;
+    let voxels: Vec<u8> = (0..n * n * n)
+        .map(|i| {
+            let (x, y, z) = (i % n, i / n % n, i / (n * n));
+            let d = (x as f32 - 5.0).powi(2) + (y as f32 - 8.0).powi(2) + (z as f32 - 10.0).powi(2);
+            if d < 20.0 {
+                200
+            } else if x < 3 {
+                120
+            } else {
+                0
+            }
+        })
+        .collect();
+    // Voxel axes in RAS+: i posterior, j right, k superior.
+    let nrrd = |directions: &str| {
+        let mut b = format!(
+            "NRRD0004\ntype: uchar\ndimension: 3\nspace: RAS\nsizes: {n} {n} {n}\n\
+             space directions: {directions}\nencoding: raw\n\n"
+        )
+        .into_bytes();
+        b.extend(&voxels);
+        b
+    };
+    let mut mha = format!(
+        "ObjectType = Image\nNDims = 3\nTransformMatrix = 0 1 0 -1 0 0 0 0 1\n\
+         ElementSpacing = 1 1 1\nDimSize = {n} {n} {n}\nElementType = MET_UCHAR\n\
+         ElementDataFile = LOCAL\n"
+    )
+    .into_bytes();
+    mha.extend(&voxels);
+    let render = |file: &Path, name: &str| {
+        let image = out(&format!("{name}.png"));
+        let (ok, err) = common::cli(&[
+            "volume",
+            s(file),
+            "--size",
+            "48x48",
+            "--tf",
+            "ct-bone",
+            "--out",
+            s(&image),
+        ]);
+        assert!(ok, "{name}: {err}");
+        RgbImage::load_png(&image).unwrap()
+    };
+    let from_nrrd = render(
+        &write("scan.nrrd", &nrrd("(0,-1,0) (1,0,0) (0,0,1)")),
+        "nrrd",
+    );
+    let from_mha = render(&write("scan.mha", &mha), "mha");
+    assert_eq!(compare(&from_mha, &from_nrrd).unwrap().max_abs_err, 0);
+    let flipped = render(
+        &write("flipped.nrrd", &nrrd("(0,1,0) (-1,0,0) (0,0,1)")),
+        "flipped",
+    );
+    assert!(compare(&flipped, &from_nrrd).unwrap().frac_off_2 > 0.01);
+}

@@ -366,6 +366,7 @@ mod tests {
             dims: [1, 3, 2],
             spacing: [1.0; 3],
             data: vec![0.0; 6],
+            axes: glam::Mat3::IDENTITY,
         };
         assert_eq!(CellRanges::new(&v).grid, [1, 2, 1]);
     }

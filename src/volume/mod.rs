@@ -1,9 +1,11 @@
-//! Scalar volumes: loading (raw, NRRD, VolPack .den), built-in data sets, gradients, transfer
-//! functions with pre-integration, and their GPU textures.
+//! Scalar volumes: loading (raw, NRRD, VolPack .den, NIfTI, MetaImage), where a volume is in
+//! the world (its voxel axes: [`Volume::axes`], docs/VOLUMES.md), built-in data sets,
+//! gradients, transfer functions with pre-integration, and their GPU textures.
 
 pub(crate) mod empty_space;
 mod gradient;
 pub mod load;
+pub mod orientation;
 pub(crate) mod passes;
 pub mod phantom;
 mod scene;
@@ -19,7 +21,7 @@ pub use scene::{
 pub use settings::VolumeSettings;
 pub use transfer::{PreintegrationTable, TransferFunction, PRESETS};
 
-use glam::Vec3;
+use glam::{Mat3, Vec3};
 
 use crate::camera::Bounds;
 use crate::error::{Error, Result};
@@ -36,6 +38,11 @@ pub struct Volume {
     pub spacing: [f32; 3],
     /// `dims[0]·dims[1]·dims[2]` scalars in 0..1.
     pub data: Vec<f32>,
+    /// Where the voxel axes point on screen: column a is the unit direction of voxel axis a
+    /// (x, y, z fastest first) in the renderer's world (x right, y up, z toward the viewer).
+    /// The identity for files without a patient geometry; from the file's geometry for the
+    /// others ([`orientation`], docs/VOLUMES.md "Where a volume is"). Orthonormal.
+    pub axes: Mat3,
 }
 
 /// Peak CPU bytes per voxel from file to GPU upload: the decoded samples (f32), their
@@ -89,9 +96,18 @@ impl Volume {
             dims,
             spacing,
             data,
+            axes: Mat3::IDENTITY,
         };
         volume.validate()?;
         Ok(volume)
+    }
+
+    /// This volume with its voxel axes pointing along `axes` ([`Volume::axes`]; checked
+    /// orthonormal).
+    pub fn with_axes(mut self, axes: Mat3) -> Result<Self> {
+        self.axes = axes;
+        orientation::check_axes(axes)?;
+        Ok(self)
     }
 
     /// Check what [`Volume::new`] checks, for a volume whose public fields were set or changed
@@ -99,6 +115,7 @@ impl Volume {
     pub fn validate(&self) -> Result<()> {
         let count = check_dims(self.dims.map(u64::from))?;
         check_spacing(self.spacing)?;
+        orientation::check_axes(self.axes)?;
         if self.data.len() as u64 != count {
             return Err(Error::invalid(
                 "volume data",
@@ -162,9 +179,11 @@ impl Volume {
             )
     }
 
-    /// Bounds of the box, centred at the origin.
+    /// Bounds of the box as its axes place it, centred at the origin.
     pub fn bounds(&self) -> Bounds {
-        let half = self.extent() * 0.5;
+        let a = self.axes;
+        let abs = Mat3::from_cols(a.x_axis.abs(), a.y_axis.abs(), a.z_axis.abs());
+        let half = abs * (self.extent() * 0.5);
         Bounds {
             min: -half,
             max: half,
@@ -200,7 +219,7 @@ impl Volume {
                 }
             }
         }
-        Volume::new(dims, self.spacing.map(|s| s * factor as f32), data)
+        Volume::new(dims, self.spacing.map(|s| s * factor as f32), data)?.with_axes(self.axes)
     }
 
     /// Smallest voxel spacing: the natural sampling distance.

@@ -182,7 +182,8 @@ pub struct VolumeScene {
     pub voxel: f32,
     /// Transfer function.
     pub transfer: TransferFunction,
-    /// Volume → world transform (rotation of the volume).
+    /// Volume → world transform: the caller's rotation after the volume's own axes
+    /// ([`super::Volume::axes`]).
     pub model: Mat4,
     /// The exact image's sampling distance ([`VolumeScene::default_step`]), world units.
     default_step: f32,
@@ -212,7 +213,8 @@ pub const MAX_EMPTY_STRIDE: u32 = 64;
 pub const MAX_SAMPLES_PER_RAY: f32 = 16384.0;
 
 impl VolumeScene {
-    /// Upload `volume`, classified by `transfer` and placed by `model`.
+    /// Upload `volume`, classified by `transfer`, its voxel axes placed by its own
+    /// [`super::Volume::axes`], then by `model`.
     pub fn new(
         device: &wgpu::Device,
         queue: &wgpu::Queue,
@@ -232,7 +234,7 @@ impl VolumeScene {
             extent: volume.extent(),
             voxel,
             transfer,
-            model,
+            model: model * Mat4::from_mat3(volume.axes),
             default_step,
             cells: CellRanges::new(volume),
             id: NEXT_ID.fetch_add(1, Ordering::Relaxed),

@@ -65,7 +65,8 @@ impl Preview {
 
 #[derive(clap::Args)]
 pub struct ViewArgs {
-    /// OBJ (mesh), PLY (points), NRRD/.den (volume); the built-in head volume when omitted.
+    /// A mesh, point cloud or volume file (its kind told by its first bytes, else its
+    /// extension; a PLY with faces is a mesh); the built-in head volume when omitted.
     file: Option<PathBuf>,
     /// What the file holds, where its extension does not say.
     #[arg(long, value_enum)]

@@ -86,14 +86,7 @@ pub fn load(
         }
         KindArg::Volume => {
             let (volume, tf) = match file {
-                Some(path) => {
-                    let tf = if path.extension().is_some_and(|e| e == "den") {
-                        "mri"
-                    } else {
-                        "ct-skin"
-                    };
-                    (load_any(path)?, tf)
-                }
+                Some(path) => (load_any(path)?, crate::volume_cmd::default_preset(path)),
                 None => (phantom::ct_head(96)?, "ct-skin"),
             };
             let tf = TransferFunction::preset(tf)?;

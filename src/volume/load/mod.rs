@@ -3,10 +3,16 @@
 //! checked against the file before anything large is allocated.
 
 mod den;
+mod metaimage;
+#[cfg(feature = "nifti")]
+mod nifti;
 mod nrrd;
 mod raw;
 
 pub use den::{load_den, parse_den};
+pub use metaimage::{load_metaimage, parse_metaimage};
+#[cfg(feature = "nifti")]
+pub use nifti::{load_nifti, parse_nifti};
 pub use nrrd::{load_nrrd, parse_nrrd};
 pub use raw::{load_raw, parse_raw, RawSpec};
 
@@ -123,8 +129,9 @@ pub(crate) fn format_error(path: &Path, reason: impl Into<String>) -> Error {
     }
 }
 
-/// Load a volume file of any format this build reads ([`crate::formats`]: NRRD `.nrrd`/`.nhdr`
-/// and VolPack `.den`), told by its first bytes, else its extension. Raw files need their
+/// Load a volume file of any format this build reads ([`crate::formats`]: NRRD `.nrrd`/`.nhdr`,
+/// VolPack `.den`, MetaImage `.mha`/`.mhd`, NIfTI-1 `.nii`/`.nii.gz` with the `nifti` feature),
+/// told by its first bytes, else its extension. Raw files need their
 /// dimensions and sample type ([`load_raw`]); a file of another kind is refused naming the
 /// command that reads it.
 pub fn load_any(path: &Path) -> Result<Volume> {
@@ -132,6 +139,9 @@ pub fn load_any(path: &Path) -> Result<Volume> {
     match expect(path, DataKind::Volume)? {
         Format::Nrrd => load_nrrd(path),
         Format::Den => load_den(path),
+        Format::MetaImage => load_metaimage(path),
+        #[cfg(feature = "nifti")]
+        Format::Nifti => load_nifti(path),
         _ => Err(format_error(
             path,
             "raw voxels need their dimensions and sample type (RawSpec, load_raw)",

@@ -1,5 +1,6 @@
 //! NRRD (teem) volumes: 3D, raw or gzip encoding, attached or detached (`data file:`) data,
-//! the common sample types, `spacings` or `space directions`.
+//! the common sample types, `spacings` or `space directions`; with a patient `space` (RAS, LAS,
+//! LPS), the directions place the voxel axes (`crate::volume::orientation`).
 
 use std::io::Read;
 use std::path::Path;
@@ -19,6 +20,20 @@ struct Header {
     spacing: [f32; 3],
     data_file: Option<String>,
     byte_skip: u64,
+    /// The voxel axes on screen, from `space` and `space directions` (None: as they are).
+    axes: Option<glam::Mat3>,
+}
+
+/// A patient `space` as the matrix from it to RAS+ (NRRD's names, long and short).
+fn space_to_ras(space: &str) -> Option<glam::Mat3> {
+    use glam::{Mat3, Vec3};
+    let flip = |x: f32, y: f32| Mat3::from_diagonal(Vec3::new(x, y, 1.0));
+    Some(match space.to_ascii_lowercase().as_str() {
+        "right-anterior-superior" | "ras" => Mat3::IDENTITY,
+        "left-anterior-superior" | "las" => flip(-1.0, 1.0),
+        "left-posterior-superior" | "lps" => flip(-1.0, -1.0),
+        _ => return None,
+    })
 }
 
 fn parse_header(path: &Path, text: &str) -> Result<Header> {
@@ -34,6 +49,7 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
     let (mut kind, mut dims, mut dimension) = (None, None, None);
     let (mut endian, mut encoding, mut spacing, mut data_file, mut byte_skip) =
         (None, None, None, None, 0u64);
+    let (mut space, mut directions) = (None, None);
     for line in lines {
         if line.is_empty() {
             break;
@@ -80,7 +96,7 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
             }
             "space directions" => {
                 // "(dx,0,0) (0,dy,0) (0,0,dz)": the spacing of each axis is its vector's length.
-                let v: Vec<f32> = value
+                let v: Vec<Vec<f32>> = value
                     .split(')')
                     .filter(|s| s.contains('('))
                     .map(|s| {
@@ -94,11 +110,17 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
                                     .map_err(|_| err(format!("bad space directions '{value}'")))
                             })
                             .collect::<Result<_>>()?;
-                        Ok(comps.iter().map(|c| c * c).sum::<f32>().sqrt())
+                        Ok(comps)
                     })
                     .collect::<Result<_>>()?;
-                spacing = Some(v);
+                spacing = Some(
+                    v.iter()
+                        .map(|c| c.iter().map(|c| c * c).sum::<f32>().sqrt())
+                        .collect(),
+                );
+                directions = Some(v);
             }
+            "space" => space = Some(value.to_string()),
             "data file" | "datafile" => data_file = Some(value.to_string()),
             "byte skip" | "byteskip" => {
                 byte_skip = value
@@ -142,6 +164,20 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
         }
         Some(v) => return Err(err(format!("spacings {v:?}: need 3 positive values"))),
     };
+    let axes = match (space.as_deref().and_then(space_to_ras), &directions) {
+        (Some(to_ras), Some(d)) if d.iter().all(|c| c.len() == 3) => {
+            let column = |c: &Vec<f32>| to_ras * glam::Vec3::new(c[0], c[1], c[2]);
+            let ras = glam::Mat3::from_cols(column(&d[0]), column(&d[1]), column(&d[2]));
+            Some(
+                crate::volume::orientation::screen_axes_from_ras(ras)
+                    .map_err(|e| err(format!("space directions: {e}")))?,
+            )
+        }
+        (Some(_), Some(_)) => {
+            return Err(err("space directions: need three 3D vectors".into()));
+        }
+        _ => None,
+    };
     Ok(Header {
         kind,
         dims,
@@ -150,6 +186,7 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
         spacing,
         data_file,
         byte_skip,
+        axes,
     })
 }
 
@@ -242,5 +279,9 @@ pub fn parse_nrrd(bytes: &[u8], path: &Path) -> Result<Volume> {
         header.kind,
         header.big_endian,
     );
-    to_volume(path, header.dims, header.spacing, samples, header.kind)
+    let volume = to_volume(path, header.dims, header.spacing, samples, header.kind)?;
+    match header.axes {
+        Some(axes) => volume.with_axes(axes),
+        None => Ok(volume),
+    }
 }
