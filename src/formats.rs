@@ -168,7 +168,9 @@ impl Format {
                 Self::Gltf => cfg!(feature = "gltf"),
                 Self::Jpeg => cfg!(feature = "jpeg"),
                 Self::Nifti => cfg!(feature = "nifti"),
-                Self::Las | Self::Dicom | Self::Vtk => false,
+                Self::Las => cfg!(feature = "las"),
+                Self::Dicom => cfg!(feature = "dicom"),
+                Self::Vtk => false,
             }
     }
 }
@@ -231,6 +233,9 @@ pub fn expect(path: &Path, kind: DataKind) -> Result<Format> {
 /// What the file at `path` holds: its format and kind — the format's usual kind, except that
 /// a PLY whose header declares faces is a mesh (its vertices alone are a point cloud).
 pub fn kind(path: &Path) -> Result<(Format, DataKind)> {
+    if path.is_dir() && Format::Dicom.is_read_as(DataKind::Volume) {
+        return Ok((Format::Dicom, DataKind::Volume)); // a series folder
+    }
     let format = detect(path)?;
     let kind = match format {
         Format::Ply if ply_faces(path)? > 0 => DataKind::Mesh,
@@ -383,11 +388,9 @@ mod tests {
         assert!(e.contains("unknown format; read here: meshes .obj"), "{e}");
         let ply = file("cloud.ply", b"ply\nformat ascii 1.0\n");
         assert_eq!(expect(&ply, DataKind::Points).unwrap(), Format::Ply);
-        let mut dicom = vec![0u8; 132];
-        dicom[128..].copy_from_slice(b"DICM");
-        let dicom = file("slice.dcm", &dicom);
-        let e = expect(&dicom, DataKind::Volume).unwrap_err().to_string();
-        assert!(e.contains("DICOM is not read yet"), "{e}");
+        let vti = file("image.vti", b"<VTKFile type=\"ImageData\">");
+        let e = expect(&vti, DataKind::Volume).unwrap_err().to_string();
+        assert!(e.contains("VTK image data is not read yet"), "{e}");
         let e = expect(&dir, DataKind::Volume).unwrap_err().to_string();
         assert!(e.contains("a directory"), "{e}");
     }
@@ -397,6 +400,6 @@ mod tests {
         let list = supported();
         assert!(list.contains("meshes .obj .ply"), "{list}");
         assert!(list.contains("volumes .nrrd .nhdr .den .raw"), "{list}");
-        assert!(!list.contains(".dcm"), "{list}");
+        assert!(!list.contains(".vti"), "{list}");
     }
 }

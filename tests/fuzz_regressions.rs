@@ -90,6 +90,11 @@ fn run(target: &str, data: &[u8]) {
         "ply_mesh" => drop(Mesh::parse(data, Format::Ply, "fuzz.ply".as_ref())),
         "stl" => drop(Mesh::parse(data, Format::Stl, "fuzz.stl".as_ref())),
         "gltf" => drop(Mesh::parse(data, Format::Gltf, "fuzz.glb".as_ref())),
+        "las" => drop(autostereo::points::las::parse(data.to_vec())),
+        "dicom" => drop(autostereo::volume::load::parse_dicom(
+            data,
+            "fuzz.dcm".as_ref(),
+        )),
         "nifti" | "metaimage" => {
             let dir = std::env::temp_dir().join("autostereo-fuzz-empty");
             std::fs::create_dir_all(&dir).unwrap();
@@ -136,6 +141,8 @@ fn seeds_and_found_crashes_replay_without_panics() {
         "gltf",
         "nifti",
         "metaimage",
+        "las",
+        "dicom",
     ];
     let mut replayed = 0;
     for target in targets {
@@ -186,6 +193,12 @@ fn seeds_are_valid_inputs() {
     }
     for file in inputs("seeds", "metaimage") {
         autostereo::volume::load::parse_metaimage(&std::fs::read(&file).unwrap(), &file).unwrap();
+    }
+    for file in inputs("seeds", "las") {
+        autostereo::points::las::parse(std::fs::read(&file).unwrap()).unwrap();
+    }
+    for file in inputs("seeds", "dicom") {
+        autostereo::volume::load::parse_dicom(&std::fs::read(&file).unwrap(), &file).unwrap();
     }
     for file in inputs("seeds", "display_spec") {
         Display::parse(&std::fs::read_to_string(&file).unwrap()).unwrap();

@@ -24,7 +24,8 @@ pub enum DepthArg {
 
 #[derive(clap::Args)]
 pub struct PointsArgs {
-    /// PLY (ASCII or binary) or OBJ (its vertices); a generated torus scene when omitted.
+    /// PLY (ASCII or binary), LAS/LAZ, or OBJ (its vertices); a generated torus scene when
+    /// omitted.
     file: Option<PathBuf>,
     #[command(flatten)]
     common: RenderArgs,

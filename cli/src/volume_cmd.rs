@@ -47,8 +47,8 @@ pub enum AlphaArg {
 
 #[derive(clap::Args)]
 pub struct VolumeArgs {
-    /// Volume file (NRRD, NIfTI .nii/.nii.gz, MetaImage .mha/.mhd, .den, or raw with
-    /// --raw-dims/--raw-type); a built-in data set when omitted.
+    /// Volume file or DICOM series folder (NRRD, NIfTI .nii/.nii.gz, MetaImage .mha/.mhd,
+    /// DICOM, .den, or raw with --raw-dims/--raw-type); a built-in data set when omitted.
     file: Option<PathBuf>,
     /// Built-in data set used when no file is given.
     #[arg(long, value_enum, default_value = "head")]

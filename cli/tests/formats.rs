@@ -305,6 +305,13 @@ fn a_file_of_another_kind_names_the_command_that_reads_it() {
     );
     let png = write("spatial.png", b"\x89PNG\r\n\x1a\n");
     let laz = write("scan.laz", b"LASF\0\0\0\0");
+    let mut dicom = vec![0u8; 132];
+    dicom[128..].copy_from_slice(b"DICM");
+    let dicom = write("slice.dcm", &dicom);
+    let vti = write(
+        "image.vti",
+        b"<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\">\n",
+    );
     let notes = write("notes.txt", b"hello");
     let target = s(&out("never.png")).to_string();
     let cases: Vec<(Vec<&str>, String)> = vec![
@@ -345,9 +352,11 @@ fn a_file_of_another_kind_names_the_command_that_reads_it() {
             vec!["interleave", s(&obj), "--out", &target],
             "a mesh (OBJ), not an image".into(),
         ),
+        (vec!["points", s(&laz)], "malformed LAS header".into()),
+        (vec!["volume", s(&dicom)], "malformed DICOM".into()),
         (
-            vec!["points", s(&laz)],
-            "LAS/LAZ is not read yet; read here:".into(),
+            vec!["volume", s(&vti)],
+            "VTK image data is not read yet; read here:".into(),
         ),
         (
             vec!["volume", s(&notes)],

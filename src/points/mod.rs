@@ -9,6 +9,8 @@ pub mod estimate;
 mod generate;
 mod grid;
 pub(crate) mod groups;
+#[cfg(feature = "las")]
+pub mod las;
 pub(crate) mod passes;
 pub mod ply;
 mod scene;
@@ -66,8 +68,9 @@ pub struct Completion {
 }
 
 impl PointCloud {
-    /// Load a `.ply` (its `vertex` element) or `.obj` (its `v` lines, with `v x y z r g b`
-    /// colours when present; faces, normals and texture coordinates are ignored), told by
+    /// Load a `.ply` (its `vertex` element), `.las`/`.laz` (with the `las` feature) or `.obj`
+    /// (its `v` lines, with `v x y z r g b` colours when present; faces, normals and texture
+    /// coordinates are ignored), told by
     /// its first bytes, else its extension ([`crate::formats`]); a file of another kind is
     /// refused naming the command that reads it. A PLY mesh's vertices are read as points,
     /// and the log says that its faces are not drawn.
@@ -88,6 +91,8 @@ impl PointCloud {
                 }
                 Ok(cloud)
             }
+            #[cfg(feature = "las")]
+            Format::Las => las::load(path),
             _ => obj_vertices(path),
         }
     }

@@ -160,3 +160,27 @@ pub fn render_volume(
     let mut renderer = autostereo::volume::VolumeRaycaster::new(&device, method, settings).unwrap();
     render(&mut renderer, scene, frame)
 }
+
+/// `got` is `want`: dimensions, spacing, voxel axes and voxels (to float rounding); `name`
+/// labels the failure.
+pub fn assert_same_volume(
+    name: &str,
+    got: &autostereo::volume::Volume,
+    want: &autostereo::volume::Volume,
+) {
+    assert_eq!(got.dims, want.dims, "{name}: dims");
+    assert_eq!(got.spacing, want.spacing, "{name}: spacing");
+    assert!(
+        got.axes.abs_diff_eq(want.axes, 1e-6),
+        "{name}: axes {} vs {}",
+        got.axes,
+        want.axes
+    );
+    let off = got
+        .data
+        .iter()
+        .zip(&want.data)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f32::max);
+    assert!(off < 1e-6, "{name}: voxels differ by {off}");
+}

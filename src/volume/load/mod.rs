@@ -1,8 +1,11 @@
 //! Volume file formats: raw (dimensions, type, endianness, spacing given), NRRD (raw and gzip
-//! encodings, attached or detached data), VolPack `.den`. Headers are validated and sizes
+//! encodings, attached or detached data), VolPack `.den`, MetaImage, NIfTI-1 and DICOM series
+//! (features `nifti`, `dicom`). Headers are validated and sizes
 //! checked against the file before anything large is allocated.
 
 mod den;
+#[cfg(feature = "dicom")]
+mod dicom;
 mod metaimage;
 #[cfg(feature = "nifti")]
 mod nifti;
@@ -10,6 +13,8 @@ mod nrrd;
 mod raw;
 
 pub use den::{load_den, parse_den};
+#[cfg(feature = "dicom")]
+pub use dicom::{load_dicom, parse_dicom};
 pub use metaimage::{load_metaimage, parse_metaimage};
 #[cfg(feature = "nifti")]
 pub use nifti::{load_nifti, parse_nifti};
@@ -130,16 +135,24 @@ pub(crate) fn format_error(path: &Path, reason: impl Into<String>) -> Error {
 }
 
 /// Load a volume file of any format this build reads ([`crate::formats`]: NRRD `.nrrd`/`.nhdr`,
-/// VolPack `.den`, MetaImage `.mha`/`.mhd`, NIfTI-1 `.nii`/`.nii.gz` with the `nifti` feature),
+/// VolPack `.den`, MetaImage `.mha`/`.mhd`, NIfTI-1 `.nii`/`.nii.gz` with the `nifti` feature,
+/// a DICOM series — a folder or one of its files — with the `dicom` feature),
 /// told by its first bytes, else its extension. Raw files need their
 /// dimensions and sample type ([`load_raw`]); a file of another kind is refused naming the
 /// command that reads it.
 pub fn load_any(path: &Path) -> Result<Volume> {
     use crate::formats::{expect, DataKind, Format};
+    // A folder is a DICOM series (the only format stored as one).
+    #[cfg(feature = "dicom")]
+    if path.is_dir() {
+        return load_dicom(path);
+    }
     match expect(path, DataKind::Volume)? {
         Format::Nrrd => load_nrrd(path),
         Format::Den => load_den(path),
         Format::MetaImage => load_metaimage(path),
+        #[cfg(feature = "dicom")]
+        Format::Dicom => load_dicom(path),
         #[cfg(feature = "nifti")]
         Format::Nifti => load_nifti(path),
         _ => Err(format_error(
