@@ -17,6 +17,8 @@ use crate::error::{Error, Result};
 
 /// Deepest node nesting followed (a cycle or a pathological tree is refused, not recursed).
 const MAX_NODE_DEPTH: usize = 64;
+/// Most node visits of a scene (a tree whose nodes share children grows exponentially).
+const MAX_NODE_VISITS: usize = 1 << 20;
 /// Peak CPU bytes per vertex instance and per index: the mesh's position, normal and colour
 /// and the uploaded vertex (≈ 112, as for OBJ: src/mesh/obj.rs), and one u32 index.
 const BYTES_PER_VERTEX: u64 = 112;
@@ -35,7 +37,12 @@ pub(super) fn parse(bytes: &[u8], path: &Path, dir: Option<&Path>) -> Result<Mes
         path: path.to_path_buf(),
         reason,
     };
-    let gltf = gltf::Gltf::from_slice(bytes).map_err(|e| fail(format!("malformed glTF: {e}")))?;
+    // The crate's own validation indexes accessors before it has checked that they exist (a
+    // panic); so the document is read unvalidated and every index and accessor this reader
+    // follows is checked here first.
+    let gltf = gltf::Gltf::from_slice_without_validation(bytes)
+        .map_err(|e| fail(format!("malformed glTF: {e}")))?;
+    check_document(gltf.document.as_json()).map_err(&fail)?;
     let buffers = buffer_data(&gltf, dir).map_err(&fail)?;
     let scene = gltf
         .document
@@ -43,8 +50,9 @@ pub(super) fn parse(bytes: &[u8], path: &Path, dir: Option<&Path>) -> Result<Mes
         .or_else(|| gltf.document.scenes().next())
         .ok_or_else(|| fail("no scene".into()))?;
     let mut instances = Vec::new();
+    let mut visits = 0;
     for node in scene.nodes() {
-        collect(node, Mat4::IDENTITY, 0, &mut instances).map_err(&fail)?;
+        collect(node, Mat4::IDENTITY, 0, &mut visits, &mut instances).map_err(&fail)?;
     }
     check_budget(&instances).map_err(|e| fail(e.to_string()))?;
     let mut mesh = Mesh::default();
@@ -53,7 +61,11 @@ pub(super) fn parse(bytes: &[u8], path: &Path, dir: Option<&Path>) -> Result<Mes
     for (node_mesh, transform) in &instances {
         for primitive in node_mesh.primitives() {
             let pbr = primitive.material().pbr_metallic_roughness();
-            textured |= pbr.base_color_texture().is_some();
+            textured |= primitive
+                .material()
+                .index()
+                .and_then(|m| gltf.document.as_json().materials.get(m))
+                .is_some_and(|m| m.pbr_metallic_roughness.base_color_texture.is_some());
             // Without a material glTF's default is white; the project's grey is kept then.
             let factor = match primitive.material().index() {
                 Some(_) => pbr.base_color_factor(),
@@ -87,17 +99,127 @@ pub(super) fn parse(bytes: &[u8], path: &Path, dir: Option<&Path>) -> Result<Mes
     Ok(mesh)
 }
 
-/// The bytes of every buffer, each at least its declared length.
-fn buffer_data(gltf: &gltf::Gltf, dir: Option<&Path>) -> std::result::Result<Vec<Vec<u8>>, String> {
+/// Every index the reader follows names an object that exists; modes, component types and
+/// accessor types are ones glTF defines; no sparse accessors.
+fn check_document(root: &gltf::json::Root) -> std::result::Result<(), String> {
+    use gltf::json::validation::Checked;
+    let exists = |i: usize, len: usize, what: &str| match i < len {
+        true => Ok(()),
+        false => Err(format!("{what} {i} does not exist (there are {len})")),
+    };
+    if let Some(scene) = root.scene {
+        exists(scene.value(), root.scenes.len(), "scene")?;
+    }
+    for scene in &root.scenes {
+        for node in &scene.nodes {
+            exists(node.value(), root.nodes.len(), "node")?;
+        }
+    }
+    for node in &root.nodes {
+        for child in node.children.iter().flatten() {
+            exists(child.value(), root.nodes.len(), "node")?;
+        }
+        if let Some(mesh) = node.mesh {
+            exists(mesh.value(), root.meshes.len(), "mesh")?;
+        }
+    }
+    for mesh in &root.meshes {
+        for p in &mesh.primitives {
+            if matches!(p.mode, Checked::Invalid) {
+                return Err("a primitive of an unknown mode".into());
+            }
+            for accessor in p.attributes.values().chain(&p.indices) {
+                exists(accessor.value(), root.accessors.len(), "accessor")?;
+            }
+            if let Some(material) = p.material {
+                exists(material.value(), root.materials.len(), "material")?;
+            }
+        }
+    }
+    for (i, a) in root.accessors.iter().enumerate() {
+        if a.sparse.is_some() || a.buffer_view.is_none() {
+            return Err(format!("accessor {i}: sparse accessors are not read"));
+        }
+        if matches!(a.component_type, Checked::Invalid) || matches!(a.type_, Checked::Invalid) {
+            return Err(format!(
+                "accessor {i}: an unknown component or element type"
+            ));
+        }
+        if let Some(view) = a.buffer_view {
+            exists(view.value(), root.buffer_views.len(), "buffer view")?;
+        }
+    }
+    for view in &root.buffer_views {
+        exists(view.buffer.value(), root.buffers.len(), "buffer")?;
+    }
+    Ok(())
+}
+
+/// An accessor the reader may read: one of `types` (component type and dimensions), at least
+/// one element (`count` of them when given), its elements within its view and the view within
+/// its buffer, strides no shorter than an element.
+fn check_accessor(
+    a: &gltf::Accessor,
+    buffers: &[std::borrow::Cow<'_, [u8]>],
+    what: &str,
+    types: &[(gltf::accessor::DataType, gltf::accessor::Dimensions)],
+    count: Option<usize>,
+) -> std::result::Result<(), String> {
+    let fail = |reason: String| Err(format!("{what} (accessor {}): {reason}", a.index()));
+    if !types.contains(&(a.data_type(), a.dimensions())) {
+        return fail(format!(
+            "{:?} {:?} is not read",
+            a.data_type(),
+            a.dimensions()
+        ));
+    }
+    if a.count() == 0 || count.is_some_and(|n| n != a.count()) {
+        return fail(format!(
+            "{} elements ({} wanted)",
+            a.count(),
+            count.unwrap_or(1)
+        ));
+    }
+    let Some(view) = a.view() else {
+        return fail("no buffer view".into());
+    };
+    let element = a.size() as u64;
+    let stride = view.stride().map_or(element, |s| s as u64);
+    if stride < element {
+        return fail(format!(
+            "a stride of {stride} bytes for elements of {element}"
+        ));
+    }
+    let buffer = buffers
+        .get(view.buffer().index())
+        .map_or(0, |b| b.len() as u64);
+    let view_end = (view.offset() as u64).checked_add(view.length() as u64);
+    let last = (a.count() as u64 - 1)
+        .checked_mul(stride)
+        .and_then(|v| v.checked_add(a.offset() as u64))
+        .and_then(|v| v.checked_add(element));
+    match (view_end, last) {
+        (Some(end), Some(last)) if end <= buffer && last <= view.length() as u64 => Ok(()),
+        _ => fail("its elements run past its view or its view past its buffer".into()),
+    }
+}
+
+/// The bytes of every buffer, each at least its declared length (the GLB's binary chunk
+/// borrowed, however many buffers name it).
+fn buffer_data<'a>(
+    gltf: &'a gltf::Gltf,
+    dir: Option<&Path>,
+) -> std::result::Result<Vec<std::borrow::Cow<'a, [u8]>>, String> {
     gltf.document
         .buffers()
         .map(|buffer| {
-            let data = match buffer.source() {
+            let data: std::borrow::Cow<'a, [u8]> = match buffer.source() {
                 gltf::buffer::Source::Bin => gltf
                     .blob
-                    .clone()
-                    .ok_or("buffer 0 is the GLB binary chunk, which is missing")?,
-                gltf::buffer::Source::Uri(uri) => uri_data(uri, dir)?,
+                    .as_deref()
+                    .ok_or("buffer 0 is the GLB binary chunk, which is missing")?
+                    .into(),
+                gltf::buffer::Source::Uri(uri) => uri_data(uri, dir)?.into(),
             };
             if data.len() < buffer.length() {
                 return Err(format!(
@@ -152,6 +274,7 @@ fn percent_decode(uri: &str) -> std::result::Result<String, String> {
         if bytes[i] == b'%' {
             let hex = uri
                 .get(i + 1..i + 3)
+                .filter(|h| h.bytes().all(|b| b.is_ascii_hexdigit()))
                 .and_then(|h| u8::from_str_radix(h, 16).ok())
                 .ok_or_else(|| format!("buffer '{uri}': a bad %-escape"))?;
             out.push(hex);
@@ -169,8 +292,15 @@ fn collect<'a>(
     node: gltf::Node<'a>,
     parent: Mat4,
     depth: usize,
+    visits: &mut usize,
     out: &mut Vec<(gltf::Mesh<'a>, Mat4)>,
 ) -> std::result::Result<(), String> {
+    *visits += 1;
+    if *visits > MAX_NODE_VISITS {
+        return Err(format!(
+            "more than {MAX_NODE_VISITS} node visits in the scene"
+        ));
+    }
     if depth > MAX_NODE_DEPTH {
         return Err(format!(
             "nodes nested deeper than {MAX_NODE_DEPTH} (a cycle?) at node {}",
@@ -182,7 +312,7 @@ fn collect<'a>(
         out.push((mesh, transform));
     }
     for child in node.children() {
-        collect(child, transform, depth + 1, out)?;
+        collect(child, transform, depth + 1, visits, out)?;
     }
     Ok(())
 }
@@ -219,9 +349,11 @@ struct Part {
 
 fn triangles(
     primitive: &gltf::Primitive,
-    buffers: &[Vec<u8>],
+    buffers: &[std::borrow::Cow<'_, [u8]>],
 ) -> std::result::Result<Option<Part>, String> {
+    use gltf::accessor::{DataType as T, Dimensions as D};
     use gltf::mesh::Mode;
+    use gltf::Semantic;
     let mode = primitive.mode();
     if !matches!(
         mode,
@@ -229,7 +361,26 @@ fn triangles(
     ) {
         return Ok(None);
     }
-    let reader = primitive.reader(|buffer| buffers.get(buffer.index()).map(Vec::as_slice));
+    let i = primitive.index();
+    let positions = primitive
+        .get(&Semantic::Positions)
+        .ok_or_else(|| format!("primitive {i} has no POSITION"))?;
+    check_accessor(&positions, buffers, "POSITION", &[(T::F32, D::Vec3)], None)?;
+    let n = positions.count();
+    // Normals and colours of another count or type are left out (computed, default colour).
+    let usable = |semantic: Semantic, types: &[(T, D)]| {
+        primitive
+            .get(&semantic)
+            .is_some_and(|a| check_accessor(&a, buffers, "attribute", types, Some(n)).is_ok())
+    };
+    let normals_ok = usable(Semantic::Normals, &[(T::F32, D::Vec3)]);
+    let colour_types = [T::U8, T::U16, T::F32].map(|t| [(t, D::Vec3), (t, D::Vec4)]);
+    let colors_ok = usable(Semantic::Colors(0), colour_types.as_flattened());
+    if let Some(indices) = primitive.indices() {
+        let types = [(T::U8, D::Scalar), (T::U16, D::Scalar), (T::U32, D::Scalar)];
+        check_accessor(&indices, buffers, "indices", &types, None)?;
+    }
+    let reader = primitive.reader(|buffer| buffers.get(buffer.index()).map(|b| &b[..]));
     let positions: Vec<Vec3> = reader
         .read_positions()
         .ok_or_else(|| format!("primitive {} has no POSITION", primitive.index()))?
@@ -238,10 +389,12 @@ fn triangles(
     let n = positions.len();
     let normals = reader
         .read_normals()
+        .filter(|_| normals_ok)
         .map(|it| it.map(Vec3::from).collect::<Vec<_>>())
         .filter(|v| v.len() == n);
     let colors = reader
         .read_colors(0)
+        .filter(|_| colors_ok)
         .map(|it| it.into_rgba_f32().collect::<Vec<_>>())
         .filter(|v| v.len() == n);
     let order: Vec<u32> = match reader.read_indices() {
@@ -308,4 +461,77 @@ fn append(mesh: &mut Mesh, part: Part, transform: Mat4, factor: [f32; 4]) {
     mesh.colors.extend(part_mesh.colors);
     mesh.indices
         .extend(part_mesh.indices.iter().map(|i| i + base));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A glTF of one triangle at the origin (36 zero bytes in a data: URI) with `primitive`,
+    /// `accessor` (POSITION's) and `view` JSON spliced in, and `nodes`.
+    fn gltf(primitive: &str, accessor: &str, view: &str, nodes: &str) -> String {
+        format!(
+            r#"{{"asset":{{"version":"2.0"}},"scenes":[{{"nodes":[0]}}],"nodes":[{nodes}],
+"meshes":[{{"primitives":[{{{primitive}}}]}}],
+"buffers":[{{"byteLength":36,"uri":"data:application/octet-stream;base64,{zeros}"}}],
+"bufferViews":[{{"buffer":0,"byteLength":36{view}}}],
+"accessors":[{{"bufferView":0,"componentType":5126,"type":"VEC3"{accessor}}}]}}"#,
+            zeros = "A".repeat(48)
+        )
+    }
+
+    #[test]
+    fn a_good_triangle_parses() {
+        let text = gltf(
+            r#""attributes":{"POSITION":0}"#,
+            r#","count":3"#,
+            "",
+            r#"{"mesh":0}"#,
+        );
+        let mesh = parse(text.as_bytes(), Path::new("ok.gltf"), None).unwrap();
+        assert_eq!(mesh.triangle_count(), 1);
+    }
+
+    /// Each of these panicked or allocated without bound inside the crates before the checks.
+    #[test]
+    fn hostile_documents_are_refused_by_name() {
+        let ok_prim = r#""attributes":{"POSITION":0}"#;
+        let node = r#"{"mesh":0}"#;
+        // 40 levels, each node's two children the same next node: 2^40 paths.
+        let doubling: Vec<String> = (0..40)
+            .map(|i| format!(r#"{{"mesh":0,"children":[{},{}]}}"#, i + 1, i + 1))
+            .chain([node.to_string()])
+            .collect();
+        let cases = [
+            (
+                gltf(r#""attributes":{"POSITION":9}"#, r#","count":3"#, "", node),
+                "accessor 9 does not exist",
+            ),
+            (
+                gltf(ok_prim, r#","count":3"#, r#","byteStride":4"#, node),
+                "a stride of 4 bytes",
+            ),
+            (gltf(ok_prim, r#","count":0"#, "", node), "0 elements"),
+            (gltf(ok_prim, r#","count":4"#, "", node), "past its view"),
+            (
+                gltf(
+                    r#""attributes":{"POSITION":0},"mode":99"#,
+                    r#","count":3"#,
+                    "",
+                    node,
+                ),
+                "unknown mode",
+            ),
+            (
+                gltf(ok_prim, r#","count":3"#, "", &doubling.join(",")),
+                "node visits",
+            ),
+        ];
+        for (text, expected) in cases {
+            let e = parse(text.as_bytes(), Path::new("bad.gltf"), None)
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains(expected), "'{e}' lacks '{expected}'");
+        }
+    }
 }

@@ -35,7 +35,7 @@ pub(super) fn load(path: &Path) -> Result<Mesh> {
 /// Parse STL `bytes` (`path` names it in errors).
 pub(super) fn parse(bytes: &[u8], path: &Path) -> Result<Mesh> {
     check_binary_count(bytes).map_err(|e| fail(path, e))?;
-    let stl = stl_io::read_stl(&mut std::io::Cursor::new(bytes))
+    let stl = stl_io::read_stl(&mut std::io::Cursor::new(as_read_by_stl_io(bytes)))
         .map_err(|e| fail(path, format!("malformed STL: {e}")))?;
     if stl.faces.is_empty() {
         return Err(fail(path, "no triangles"));
@@ -93,6 +93,29 @@ fn check_binary_count(bytes: &[u8]) -> std::result::Result<(), String> {
     Ok(())
 }
 
+/// `bytes` as `stl_io` will read them right: it takes a file starting with `solid ` for ASCII
+/// and anything else for binary, but binary files whose 80-byte header starts with `solid`
+/// exist (several CAD exporters write them), and ASCII files may have `solid` alone on its
+/// line. A file whose size is exactly a binary STL's for its count is binary; one that starts
+/// with `solid` otherwise is ASCII.
+fn as_read_by_stl_io(bytes: &[u8]) -> std::borrow::Cow<'_, [u8]> {
+    let binary_size = bytes.get(80..84).map(|c| {
+        BINARY_HEADER + u64::from(u32::from_le_bytes([c[0], c[1], c[2], c[3]])) * BINARY_TRIANGLE
+    });
+    let solid = bytes.starts_with(b"solid");
+    if solid && binary_size == Some(bytes.len() as u64) {
+        let mut copy = bytes.to_vec();
+        copy[0] = b'S'; // no longer `solid `: read as binary (the header is not used)
+        return copy.into();
+    }
+    if solid && bytes.get(5) != Some(&b' ') {
+        let mut copy = b"solid ".to_vec();
+        copy.extend_from_slice(&bytes[5..]);
+        return copy.into();
+    }
+    bytes.into()
+}
+
 fn fail(path: &Path, reason: impl Into<String>) -> Error {
     Error::Mesh {
         path: path.to_path_buf(),
@@ -137,6 +160,25 @@ mod tests {
         // Shared corners are merged: 4 vertices, 2 triangles.
         assert_eq!(from_binary.positions.len(), 4);
         assert_eq!(from_binary.triangle_count(), 2);
+    }
+
+    #[test]
+    fn a_binary_header_starting_with_solid_and_a_bare_solid_line_are_read() {
+        let triangle = [[[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]];
+        let mut cad = binary(&triangle);
+        cad[..11].copy_from_slice(b"solid part ");
+        assert_eq!(
+            parse(&cad, Path::new("cad.stl")).unwrap().triangle_count(),
+            1
+        );
+        let bare = "solid\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n\
+                    vertex 0 1 0\nendloop\nendfacet\nendsolid\n";
+        assert_eq!(
+            parse(bare.as_bytes(), Path::new("bare.stl"))
+                .unwrap()
+                .triangle_count(),
+            1
+        );
     }
 
     #[test]

@@ -223,6 +223,15 @@ pub(super) fn read_faces(
         })
         .ok_or("the face element has no 'vertex_indices' list")?;
     check_count(reader, element)?;
+    // A polygon of n corners is 3(n − 2) indices: at most three per corner value the data
+    // holds, four bytes each, against the memory budget before any is kept.
+    let corner_type = element.properties[corners].value;
+    let most = (reader.remaining_values(corner_type) as u64).saturating_mul(3);
+    crate::budget::check(
+        || format!("a PLY face element of up to {most} triangle corners"),
+        most.saturating_mul(4),
+    )
+    .map_err(|e| e.to_string())?;
     let mut triangles = Vec::new();
     let mut polygon = Vec::new();
     for i in 0..element.count {

@@ -46,7 +46,7 @@ pub(crate) fn face_count(bytes: &[u8]) -> std::result::Result<usize, String> {
         .iter()
         .filter(|e| e.name == "face")
         .map(|e| e.count)
-        .sum())
+        .fold(0, usize::saturating_add))
 }
 
 /// The vertices and, with `faces`, the triangles; elements are read in the file's order (the
@@ -75,6 +75,9 @@ fn parse_elements(bytes: &[u8], faces: bool) -> std::result::Result<PlyMesh, Str
                 if !faces {
                     break;
                 }
+            }
+            "face" if faces && triangles.is_empty() => {
+                triangles = read_faces(reader.as_mut(), element, vertex.count)?;
             }
             "face" if faces => {
                 triangles.extend(read_faces(reader.as_mut(), element, vertex.count)?);

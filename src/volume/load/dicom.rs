@@ -36,10 +36,12 @@ pub fn load_dicom(path: &Path) -> Result<Volume> {
     } else {
         crate::file::check_regular(path)?;
         let slice = read_slice(path)?;
-        (
-            path.parent().unwrap_or(Path::new(".")).to_path_buf(),
-            Some(slice.series.clone()),
-        )
+        // A bare file name's folder is the working directory.
+        let dir = match path.parent() {
+            Some(p) if !p.as_os_str().is_empty() => p,
+            _ => Path::new("."),
+        };
+        (dir.to_path_buf(), Some(slice.series.clone()))
     };
     let mut series: BTreeMap<String, Vec<Slice>> = BTreeMap::new();
     let mut names: Vec<PathBuf> = std::fs::read_dir(&dir)
@@ -145,14 +147,9 @@ fn parse_object(bytes: &[u8], path: &Path, whole: bool) -> Result<DefaultDicomOb
         .map_err(|e| format_error(path, format!("malformed DICOM: {e}")))
 }
 
-/// The uncompressed transfer syntaxes: implicit and explicit VR little endian, explicit VR big
-/// endian (retired), deflated explicit VR little endian's data is not read.
-fn byte_order(uid: &str) -> Option<bool> {
-    match uid {
-        "1.2.840.10008.1.2" | "1.2.840.10008.1.2.1" => Some(false),
-        "1.2.840.10008.1.2.2" => Some(true),
-        _ => None,
-    }
+/// The transfer syntaxes whose pixel data is read: implicit and explicit VR little endian.
+fn native_little_endian(uid: &str) -> bool {
+    matches!(uid, "1.2.840.10008.1.2" | "1.2.840.10008.1.2.1")
 }
 
 /// One DICOM file's `bytes` as a volume: a slice, or a multi-frame file's frames (`path` names
@@ -171,12 +168,20 @@ fn read_slice(path: &Path) -> Result<Slice> {
 fn slice_of(obj: DefaultDicomObject, path: &Path) -> Result<Slice> {
     let err = |m: String| format_error(path, m);
     let ts = obj.meta().transfer_syntax().to_string();
-    let big_endian = byte_order(&ts).ok_or_else(|| {
-        err(format!(
+    if ts == "1.2.840.10008.1.2.2" {
+        return Err(err(
+            "transfer syntax 1.2.840.10008.1.2.2 (explicit VR big endian, retired) is not read \
+             (convert it, e.g. with gdcmconv --raw)"
+                .into(),
+        ));
+    }
+    if !native_little_endian(&ts) {
+        return Err(err(format!(
             "transfer syntax {ts}: compressed pixel data is not read (decompress the series, \
              e.g. with dcmdjpeg or gdcmconv --raw)"
-        ))
-    })?;
+        )));
+    }
+    let big_endian = false;
     let text = |tag: Tag, name: &str| -> Result<String> {
         obj.element(tag)
             .ok()
@@ -232,10 +237,10 @@ fn slice_of(obj: DefaultDicomObject, path: &Path) -> Result<Slice> {
         .filter(|&f| f >= 1)
         .ok_or_else(|| err(format!("NumberOfFrames {frames}")))?;
     let orientation = floats(tags::IMAGE_ORIENTATION_PATIENT)
-        .filter(|v| v.len() == 6)
+        .filter(|v| v.len() == 6 && v.iter().all(|x| x.is_finite()))
         .ok_or_else(|| err("no ImageOrientationPatient (6 numbers)".into()))?;
     let position = floats(tags::IMAGE_POSITION_PATIENT)
-        .filter(|v| v.len() == 3)
+        .filter(|v| v.len() == 3 && v.iter().all(|x| x.is_finite()))
         .ok_or_else(|| err("no ImagePositionPatient (3 numbers)".into()))?;
     let spacing = floats(tags::PIXEL_SPACING)
         .filter(|v| v.len() == 2 && v.iter().all(|s| s.is_finite() && *s > 0.0))
@@ -252,7 +257,8 @@ fn slice_of(obj: DefaultDicomObject, path: &Path) -> Result<Slice> {
             .and_then(|v| v.first().copied())
             .unwrap_or(0.0),
     ];
-    let expected = u64::from(size[0]) * u64::from(size[1]) * u64::from(frames) * kind.size();
+    let expected = super::data_bytes([size[0], size[1], frames].map(u64::from), kind)
+        .map_err(|e| err(e.to_string()))?;
     let pixels = obj
         .element(tags::PIXEL_DATA)
         .map_err(|_| err("no PixelData".into()))?

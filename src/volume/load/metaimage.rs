@@ -152,7 +152,13 @@ fn parse_header(bytes: &[u8]) -> std::result::Result<(Header, usize), String> {
             "HeaderSize" if value != "0" => {
                 return Err(format!("HeaderSize {value}: a header skip is not read"));
             }
-            "TransformMatrix" | "Rotation" | "Orientation" => matrix = Some(numbers(9)?),
+            // 2D images carry 4 numbers: used only as 3D's 9.
+            "TransformMatrix" | "Rotation" | "Orientation" => {
+                matrix = Some(numbers(1)?).filter(|m| m.len() == 9)
+            }
+            "BinaryData" if !boolean() => {
+                return Err("BinaryData = False: voxels as text are not read".into());
+            }
             "ElementDataFile" => {
                 let ndims = ndims.ok_or("missing NDims")?;
                 if !(2..=3).contains(&ndims) {

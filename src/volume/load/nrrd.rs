@@ -165,7 +165,7 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
         Some(v) => return Err(err(format!("spacings {v:?}: need 3 positive values"))),
     };
     let axes = match (space.as_deref().and_then(space_to_ras), &directions) {
-        (Some(to_ras), Some(d)) if d.iter().all(|c| c.len() == 3) => {
+        (Some(to_ras), Some(d)) if d.len() == 3 && d.iter().all(|c| c.len() == 3) => {
             let column = |c: &Vec<f32>| to_ras * glam::Vec3::new(c[0], c[1], c[2]);
             let ras = glam::Mat3::from_cols(column(&d[0]), column(&d[1]), column(&d[2]));
             Some(
