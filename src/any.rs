@@ -3,6 +3,7 @@
 
 use crate::error::{Error, Result};
 use crate::frame::Frame;
+use crate::gaussians::GaussianScene;
 use crate::mesh::MeshBuffers;
 use crate::options::RendererOptions;
 use crate::points::SplatScene;
@@ -21,6 +22,8 @@ pub enum AnyScene {
     Volume(Box<VolumeScene>),
     /// A colour image with its depth map.
     Rgbd(RgbdScene),
+    /// 3D Gaussian splats.
+    Gaussians(GaussianScene),
 }
 
 impl AnyScene {
@@ -31,6 +34,7 @@ impl AnyScene {
             AnyScene::Points(_) => "points",
             AnyScene::Volume(_) => "volume",
             AnyScene::Rgbd(_) => "rgbd",
+            AnyScene::Gaussians(_) => "gaussians",
         }
     }
 }
@@ -45,6 +49,8 @@ pub enum AnyRenderer {
     Volume(Box<dyn Renderer<VolumeScene>>),
     /// The RGB-D warp.
     Rgbd(Box<dyn Renderer<RgbdScene>>),
+    /// Any 3D Gaussian splat renderer.
+    Gaussians(Box<dyn Renderer<GaussianScene>>),
 }
 
 impl AnyRenderer {
@@ -58,6 +64,7 @@ impl AnyRenderer {
             }
             AnyScene::Volume(_) => AnyRenderer::Volume(options.volume_renderer(device)?),
             AnyScene::Rgbd(_) => AnyRenderer::Rgbd(options.rgbd_renderer(device)?),
+            AnyScene::Gaussians(_) => AnyRenderer::Gaussians(options.gaussians_renderer(device)?),
         })
     }
 
@@ -68,6 +75,7 @@ impl AnyRenderer {
             AnyRenderer::Points(_) => "points",
             AnyRenderer::Volume(_) => "volume",
             AnyRenderer::Rgbd(_) => "rgbd",
+            AnyRenderer::Gaussians(_) => "gaussians",
         }
     }
 
@@ -96,6 +104,9 @@ impl Renderer<AnyScene> for AnyRenderer {
             (AnyRenderer::Points(r), AnyScene::Points(s)) => r.prepare(device, queue, s, frame),
             (AnyRenderer::Volume(r), AnyScene::Volume(s)) => r.prepare(device, queue, s, frame),
             (AnyRenderer::Rgbd(r), AnyScene::Rgbd(s)) => r.prepare(device, queue, s, frame),
+            (AnyRenderer::Gaussians(r), AnyScene::Gaussians(s)) => {
+                r.prepare(device, queue, s, frame)
+            }
             _ => Err(self.mismatch(scene)),
         }
     }
@@ -121,6 +132,9 @@ impl Renderer<AnyScene> for AnyRenderer {
             (AnyRenderer::Rgbd(r), AnyScene::Rgbd(s)) => {
                 r.encode(device, encoder, s, frame, target)
             }
+            (AnyRenderer::Gaussians(r), AnyScene::Gaussians(s)) => {
+                r.encode(device, encoder, s, frame, target)
+            }
             _ => Err(self.mismatch(scene)),
         }
     }
@@ -131,6 +145,7 @@ impl Renderer<AnyScene> for AnyRenderer {
             AnyRenderer::Points(r) => r.atlas(),
             AnyRenderer::Volume(r) => r.atlas(),
             AnyRenderer::Rgbd(r) => r.atlas(),
+            AnyRenderer::Gaussians(r) => r.atlas(),
         }
     }
 
@@ -140,6 +155,7 @@ impl Renderer<AnyScene> for AnyRenderer {
             AnyRenderer::Points(r) => r.describe(),
             AnyRenderer::Volume(r) => r.describe(),
             AnyRenderer::Rgbd(r) => r.describe(),
+            AnyRenderer::Gaussians(r) => r.describe(),
         }
     }
 }

@@ -95,6 +95,15 @@ pub enum Error {
         /// What is wrong with it.
         reason: String,
     },
+    /// A 3D Gaussian splat file (graphdeco PLY, `.splat`, `.spz`) is malformed, truncated or
+    /// of an unsupported variant.
+    #[error("Gaussian splats {path}: {reason}")]
+    Gaussians {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong with it.
+        reason: String,
+    },
     /// A volume file is malformed, truncated or of an unsupported kind.
     #[error("volume {path}: {reason}")]
     Volume {

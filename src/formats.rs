@@ -20,6 +20,8 @@ pub enum DataKind {
     Volume,
     /// Images: RGB-D colour, quilts (`autostereo rgbd`, `autostereo interleave`).
     Image,
+    /// 3D Gaussian splats (`autostereo gaussians`).
+    Gaussians,
 }
 
 impl DataKind {
@@ -30,6 +32,7 @@ impl DataKind {
             Self::Points => "autostereo points",
             Self::Volume => "autostereo volume",
             Self::Image => "autostereo rgbd or autostereo interleave",
+            Self::Gaussians => "autostereo gaussians",
         }
     }
 
@@ -39,6 +42,7 @@ impl DataKind {
             Self::Points => "a point cloud",
             Self::Volume => "a volume",
             Self::Image => "an image",
+            Self::Gaussians => "3D Gaussian splats",
         }
     }
 }
@@ -74,10 +78,14 @@ pub enum Format {
     Png,
     /// JPEG images.
     Jpeg,
+    /// antimatter15's `.splat` Gaussian splats.
+    Splat,
+    /// Niantic's `.spz` Gaussian splats.
+    Spz,
 }
 
 /// Every format, in the order errors list them.
-pub const FORMATS: [Format; 14] = [
+pub const FORMATS: [Format; 16] = [
     Format::Obj,
     Format::Ply,
     Format::Stl,
@@ -92,6 +100,8 @@ pub const FORMATS: [Format; 14] = [
     Format::Las,
     Format::Png,
     Format::Jpeg,
+    Format::Splat,
+    Format::Spz,
 ];
 
 impl Format {
@@ -112,6 +122,8 @@ impl Format {
             Self::Las => "LAS/LAZ",
             Self::Png => "PNG",
             Self::Jpeg => "JPEG",
+            Self::Splat => "antimatter15 splat",
+            Self::Spz => "SPZ",
         }
     }
 
@@ -132,13 +144,16 @@ impl Format {
             Self::Las => &["las", "laz"],
             Self::Png => &["png"],
             Self::Jpeg => &["jpg", "jpeg"],
+            Self::Splat => &["splat"],
+            Self::Spz => &["spz"],
         }
     }
 
     /// The kinds of data a file of this format can hold, the usual one first.
     pub fn kinds(self) -> &'static [DataKind] {
         match self {
-            Self::Obj | Self::Ply => &[DataKind::Mesh, DataKind::Points],
+            Self::Obj => &[DataKind::Mesh, DataKind::Points],
+            Self::Ply => &[DataKind::Mesh, DataKind::Points, DataKind::Gaussians],
             Self::Stl | Self::Gltf => &[DataKind::Mesh],
             Self::Nrrd
             | Self::Den
@@ -149,6 +164,7 @@ impl Format {
             | Self::Vtk => &[DataKind::Volume],
             Self::Las => &[DataKind::Points],
             Self::Png | Self::Jpeg => &[DataKind::Image],
+            Self::Splat | Self::Spz => &[DataKind::Gaussians],
         }
     }
 
@@ -163,14 +179,16 @@ impl Format {
                 | Self::Den
                 | Self::Raw
                 | Self::MetaImage
-                | Self::Png => true,
+                | Self::Png
+                | Self::Splat
+                | Self::Spz => true,
                 Self::Stl => cfg!(feature = "stl"),
                 Self::Gltf => cfg!(feature = "gltf"),
                 Self::Jpeg => cfg!(feature = "jpeg"),
                 Self::Nifti => cfg!(feature = "nifti"),
                 Self::Las => cfg!(feature = "las"),
                 Self::Dicom => cfg!(feature = "dicom"),
-                Self::Vtk => false,
+                Self::Vtk => cfg!(feature = "vti"),
             }
     }
 }
@@ -205,10 +223,42 @@ pub fn detect(path: &Path) -> Result<Format> {
 
 /// The format of `path` for a command that renders `kind`: refused by name when the file holds
 /// another kind of data (naming the command that reads it) or when this build does not read
-/// the format.
+/// the format. A PLY is 3D Gaussian splats when its vertices have all of
+/// [`GAUSSIAN_PLY_PROPERTIES`], which only `autostereo gaussians` reads; a PLY with none of
+/// them is not Gaussian splats.
 pub fn expect(path: &Path, kind: DataKind) -> Result<Format> {
     let format = detect(path)?;
     let name = path.display();
+    if format == Format::Ply {
+        let splats = ply_gaussian_properties(path);
+        let all = splats.len() == GAUSSIAN_PLY_PROPERTIES.len();
+        if all && kind != DataKind::Gaussians {
+            return Err(Error::Format {
+                path: path.into(),
+                reason: format!(
+                    "3D Gaussian splats (a 3DGS PLY: its vertices have {}), not {}: use \
+                     `autostereo gaussians {name}`",
+                    GAUSSIAN_PLY_PROPERTIES.join(", "),
+                    kind.article()
+                ),
+            });
+        }
+        if splats.is_empty() && kind == DataKind::Gaussians {
+            let (theirs, what) = match ply_faces(path) {
+                Ok(faces) if faces > 0 => (DataKind::Mesh, format!("{faces} faces")),
+                _ => (DataKind::Points, "vertices only".to_string()),
+            };
+            return Err(Error::Format {
+                path: path.into(),
+                reason: format!(
+                    "this is {} (PLY, {what}; no {}), not 3D Gaussian splats: `{} {name}` reads it",
+                    theirs.article(),
+                    GAUSSIAN_PLY_PROPERTIES.join(", "),
+                    theirs.command()
+                ),
+            });
+        }
+    }
     if !format.kinds().contains(&kind) {
         let theirs = format.kinds()[0];
         return Err(Error::Format {
@@ -231,7 +281,8 @@ pub fn expect(path: &Path, kind: DataKind) -> Result<Format> {
 }
 
 /// What the file at `path` holds: its format and kind — the format's usual kind, except that
-/// a PLY whose header declares faces is a mesh (its vertices alone are a point cloud).
+/// a PLY whose header declares faces is a mesh (its vertices alone are a point cloud) and one
+/// whose vertices have [`GAUSSIAN_PLY_PROPERTIES`] is 3D Gaussian splats.
 pub fn kind(path: &Path) -> Result<(Format, DataKind)> {
     if path.is_dir() && Format::Dicom.is_read_as(DataKind::Volume) {
         return Ok((Format::Dicom, DataKind::Volume)); // a series folder
@@ -239,6 +290,9 @@ pub fn kind(path: &Path) -> Result<(Format, DataKind)> {
     let format = detect(path)?;
     let kind = match format {
         Format::Ply if ply_faces(path)? > 0 => DataKind::Mesh,
+        Format::Ply if ply_gaussian_properties(path).len() == GAUSSIAN_PLY_PROPERTIES.len() => {
+            DataKind::Gaussians
+        }
         Format::Ply => DataKind::Points,
         other => other.kinds()[0],
     };
@@ -247,14 +301,32 @@ pub fn kind(path: &Path) -> Result<(Format, DataKind)> {
 
 /// How many faces the PLY header of `path` declares (its first 64 KiB hold the header).
 pub(crate) fn ply_faces(path: &Path) -> Result<usize> {
-    let mut head = Vec::new();
-    std::fs::File::open(path)
-        .and_then(|f| f.take(64 << 10).read_to_end(&mut head))
-        .map_err(|e| Error::io(path, e))?;
+    let head = ply_head(path)?;
     crate::points::ply::face_count(&head).map_err(|reason| Error::Points {
         path: path.into(),
         reason,
     })
+}
+
+/// The vertex properties that make a PLY 3D Gaussian splats (graphdeco's 3DGS PLY).
+pub const GAUSSIAN_PLY_PROPERTIES: [&str; 4] = crate::gaussians::load::GAUSSIAN_PROPERTIES;
+
+/// Which of [`GAUSSIAN_PLY_PROPERTIES`] the PLY header of `path` declares on its vertices
+/// (none when it cannot be read: the loader says why).
+fn ply_gaussian_properties(path: &Path) -> Vec<&'static str> {
+    ply_head(path)
+        .ok()
+        .and_then(|head| crate::gaussians::load::gaussian_properties(&head).ok())
+        .unwrap_or_default()
+}
+
+/// The first 64 KiB of `path`, where a PLY's header is.
+fn ply_head(path: &Path) -> Result<Vec<u8>> {
+    let mut head = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(64 << 10).read_to_end(&mut head))
+        .map_err(|e| Error::io(path, e))?;
+    Ok(head)
 }
 
 /// The formats this build reads, per kind, for error messages.
@@ -264,6 +336,7 @@ pub fn supported() -> String {
         DataKind::Points,
         DataKind::Volume,
         DataKind::Image,
+        DataKind::Gaussians,
     ];
     let lists: Vec<String> = kinds
         .iter()
@@ -289,6 +362,7 @@ fn plural(kind: DataKind) -> &'static str {
         DataKind::Points => "points",
         DataKind::Volume => "volumes",
         DataKind::Image => "images",
+        DataKind::Gaussians => "Gaussian splats",
     }
 }
 
@@ -389,8 +463,13 @@ mod tests {
         let ply = file("cloud.ply", b"ply\nformat ascii 1.0\n");
         assert_eq!(expect(&ply, DataKind::Points).unwrap(), Format::Ply);
         let vti = file("image.vti", b"<VTKFile type=\"ImageData\">");
-        let e = expect(&vti, DataKind::Volume).unwrap_err().to_string();
-        assert!(e.contains("VTK image data is not read yet"), "{e}");
+        match expect(&vti, DataKind::Volume) {
+            Ok(format) => assert!(cfg!(feature = "vti") && format == Format::Vtk),
+            Err(e) => assert!(
+                !cfg!(feature = "vti") && e.to_string().contains("VTK image data is not read yet"),
+                "{e}"
+            ),
+        }
         let e = expect(&dir, DataKind::Volume).unwrap_err().to_string();
         assert!(e.contains("a directory"), "{e}");
     }
@@ -400,6 +479,6 @@ mod tests {
         let list = supported();
         assert!(list.contains("meshes .obj .ply"), "{list}");
         assert!(list.contains("volumes .nrrd .nhdr .den .raw"), "{list}");
-        assert!(!list.contains(".vti"), "{list}");
+        assert_eq!(list.contains(".vti .vtk"), cfg!(feature = "vti"), "{list}");
     }
 }

@@ -21,6 +21,7 @@ mod error;
 pub mod file;
 pub mod formats;
 pub mod frame;
+pub mod gaussians;
 pub mod gpu;
 pub mod image_io;
 pub mod mesh;

@@ -3,6 +3,7 @@
 //! The command line, the viewer, the bench and the tests all build renderers here.
 
 use crate::error::{Error, Result};
+use crate::gaussians::{GaussianOptions, GaussianScene, GaussianSplatter};
 use crate::mesh::MeshBuffers;
 use crate::mesh::{
     CoverBounds, MeshLayered, MeshMrt, MeshNPass, MeshSinglePass, MeshSinglePassOptions, MeshTiled,
@@ -28,6 +29,8 @@ pub struct RendererOptions {
     pub points: PointOptions,
     /// Volumes.
     pub volume: VolumeOptions,
+    /// 3D Gaussian splats.
+    pub gaussians: GaussianOptions,
     /// [`Method::Warp`]: of rendered reference views (meshes, points, volumes) or of an RGB-D
     /// image (always warped: it holds one view).
     pub warp: WarpOptions,
@@ -172,6 +175,15 @@ impl RendererOptions {
             Method::Warp => self.warp_of(device, raycaster)?,
             _ => Box::new(raycaster),
         }))
+    }
+
+    /// The 3D Gaussian splat renderer these options describe.
+    pub fn gaussians_renderer(
+        &self,
+        device: &wgpu::Device,
+    ) -> Result<Box<dyn Renderer<GaussianScene>>> {
+        let splatter = GaussianSplatter::new(device, self.method, self.gaussians)?;
+        Ok(self.banded(Box::new(splatter)))
     }
 
     /// The RGB-D renderer these options describe: an RGB-D image holds one view, so its one

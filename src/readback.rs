@@ -1,4 +1,5 @@
-//! Texture → CPU copies (rows padded to 256 bytes for the copy, unpadded on return).
+//! GPU → CPU copies: textures (rows padded to 256 bytes for the copy, unpadded on return) and
+//! buffers.
 
 use crate::error::{Error, Result};
 
@@ -56,6 +57,40 @@ pub fn read_texture_rgba8(
         },
     );
     queue.submit([encoder.finish()]);
+    let bytes = map_read(device, &buffer)?;
+    let mut out = Vec::with_capacity((unpadded * height as u64) as usize);
+    for row in bytes.chunks_exact(padded as usize) {
+        out.extend_from_slice(&row[..unpadded as usize]);
+    }
+    Ok(out)
+}
+
+/// Read the first `bytes` of `source` (a `COPY_SRC` buffer) back.
+pub fn read_buffer(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    source: &wgpu::Buffer,
+    bytes: u64,
+) -> Result<Vec<u8>> {
+    let size = bytes.min(source.size()).div_ceil(4) * 4;
+    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("read-back"),
+        size: size.max(4),
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+        label: Some("read-back"),
+    });
+    encoder.copy_buffer_to_buffer(source, 0, &buffer, 0, size);
+    queue.submit([encoder.finish()]);
+    let mut out = map_read(device, &buffer)?;
+    out.truncate(bytes as usize);
+    Ok(out)
+}
+
+/// Map a submitted `MAP_READ` buffer, wait for it and copy its bytes out.
+fn map_read(device: &wgpu::Device, buffer: &wgpu::Buffer) -> Result<Vec<u8>> {
     let (tx, rx) = std::sync::mpsc::channel();
     buffer.map_async(wgpu::MapMode::Read, .., move |r| {
         let _ = tx.send(r);
@@ -69,10 +104,7 @@ pub fn read_texture_rgba8(
     let view = buffer
         .get_mapped_range(..)
         .map_err(|e| gpu_error("read-back range", e))?;
-    let mut out = Vec::with_capacity((unpadded * height as u64) as usize);
-    for row in view.chunks_exact(padded as usize) {
-        out.extend_from_slice(&row[..unpadded as usize]);
-    }
+    let out = view.to_vec();
     drop(view);
     buffer.unmap();
     Ok(out)

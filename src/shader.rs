@@ -44,6 +44,7 @@ const SHARED: &[(&str, &str)] = &[
     wgsl!("points/shared/ray_sample.wgsl"),
     wgsl!("points/shared/view_quad.wgsl"),
     wgsl!("shared/upsample.wgsl"),
+    wgsl!("gaussians/shared/gaussian.wgsl"),
 ];
 
 /// One WGSL file per pipeline stage, by path under `wgsl/`: `render/` for the frame-level
@@ -85,6 +86,10 @@ pub const STAGES: &[(&str, &str)] = &[
     wgsl!("points/composite.wgsl"),
     wgsl!("points/tiled.wgsl"),
     wgsl!("points/layered.wgsl"),
+    wgsl!("gaussians/splat.wgsl"),
+    wgsl!("gaussians/resolve.wgsl"),
+    wgsl!("gaussians/sort_keys.wgsl"),
+    wgsl!("gaussians/sort_step.wgsl"),
 ];
 
 /// The byte layout of a `#[repr(C)]` Rust struct that mirrors WGSL struct `wgsl`: its size and
@@ -305,6 +310,18 @@ mod tests {
             (
                 "points/composite.wgsl",
                 crate::points::passes::SplatParams::GPU_LAYOUT,
+            ),
+            (
+                "gaussians/splat.wgsl",
+                crate::gaussians::scene::GaussianGpu::GPU_LAYOUT,
+            ),
+            (
+                "gaussians/splat.wgsl",
+                crate::gaussians::passes::GAUSSIAN_PARAMS_LAYOUT,
+            ),
+            (
+                "gaussians/sort_step.wgsl",
+                crate::gaussians::passes::SORT_STEP_LAYOUT,
             ),
         ];
         // Buffers of WGSL structs that have no Rust mirror: their per-element size.

@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 
 use autostereo::display::{Calibration, Display, DisplayKind};
 use autostereo::formats::Format;
+use autostereo::gaussians::load::{parse_ply, parse_splat, parse_spz};
 use autostereo::mesh::Mesh;
 use autostereo::volume::load::{parse_den, parse_nrrd, parse_raw, RawSpec};
 use autostereo::volume::TransferFunction;
@@ -95,6 +96,14 @@ fn run(target: &str, data: &[u8]) {
             data,
             "fuzz.dcm".as_ref(),
         )),
+        "vti" => drop(autostereo::volume::load::parse_vti(
+            data,
+            "fuzz.vti".as_ref(),
+        )),
+        "vtk" => drop(autostereo::volume::load::parse_vtk(
+            data,
+            "fuzz.vtk".as_ref(),
+        )),
         "nifti" | "metaimage" => {
             let dir = std::env::temp_dir().join("autostereo-fuzz-empty");
             std::fs::create_dir_all(&dir).unwrap();
@@ -104,6 +113,9 @@ fn run(target: &str, data: &[u8]) {
                 _ => autostereo::volume::load::parse_metaimage(data, &path),
             });
         }
+        "gaussians_ply" => drop(parse_ply(data, "fuzz.ply".as_ref())),
+        "splat" => drop(parse_splat(data, "fuzz.splat".as_ref())),
+        "spz" => drop(parse_spz(data, "fuzz.spz".as_ref())),
         other => panic!("no fuzz target '{other}'"),
     }
 }
@@ -143,6 +155,11 @@ fn seeds_and_found_crashes_replay_without_panics() {
         "metaimage",
         "las",
         "dicom",
+        "vti",
+        "vtk",
+        "gaussians_ply",
+        "splat",
+        "spz",
     ];
     let mut replayed = 0;
     for target in targets {
@@ -199,6 +216,21 @@ fn seeds_are_valid_inputs() {
     }
     for file in inputs("seeds", "dicom") {
         autostereo::volume::load::parse_dicom(&std::fs::read(&file).unwrap(), &file).unwrap();
+    }
+    for (target, parse) in [
+        ("gaussians_ply", parse_ply as fn(&[u8], &Path) -> _),
+        ("splat", parse_splat),
+        ("spz", parse_spz),
+    ] {
+        for file in inputs("seeds", target) {
+            parse(&std::fs::read(&file).unwrap(), &file).unwrap();
+        }
+    }
+    for file in inputs("seeds", "vti") {
+        autostereo::volume::load::parse_vti(&std::fs::read(&file).unwrap(), &file).unwrap();
+    }
+    for file in inputs("seeds", "vtk") {
+        autostereo::volume::load::parse_vtk(&std::fs::read(&file).unwrap(), &file).unwrap();
     }
     for file in inputs("seeds", "display_spec") {
         Display::parse(&std::fs::read_to_string(&file).unwrap()).unwrap();

@@ -125,10 +125,26 @@ fn broken_las_files_are_refused_by_name() {
     let mut lying = good.clone();
     // The legacy point count (offset 107) and, in LAS 1.2, the only one: a billion points.
     lying[107..111].copy_from_slice(&1_000_000_000u32.to_le_bytes());
+    // One VLR (offset 100) whose 16-bit length (20 bytes into it) runs past the end.
+    let mut vlr = good.clone();
+    vlr[100..104].copy_from_slice(&1u32.to_le_bytes());
+    vlr[227 + 20..227 + 22].copy_from_slice(&u16::MAX.to_le_bytes());
+    // A LAZ chunk table whose header (at the offset the point data starts with) claims 2^31
+    // chunks: the scan refuses it before laz reserves a table for them.
+    let mut chunks = las_bytes(true, 1);
+    let data = u32::from_le_bytes(chunks[96..100].try_into().unwrap()) as usize;
+    let table = i64::from_le_bytes(chunks[data..data + 8].try_into().unwrap()) as usize;
+    chunks[table + 4..table + 8].copy_from_slice(&(1u32 << 31).to_le_bytes());
     let cases: Vec<(&str, Vec<u8>, &str)> = vec![
         ("short.las", good[..50].to_vec(), "malformed LAS header"),
-        ("lying.las", lying, "truncated"),
+        (
+            "lying.las",
+            lying,
+            "truncated: the header says 1000000000 points",
+        ),
         ("cut.las", good[..good.len() - 20].to_vec(), "point"),
+        ("vlr.las", vlr, "VLR 0 at byte 227 declares 65535 bytes"),
+        ("chunks.laz", chunks, "lists 2147483648 chunks"),
     ];
     for (name, bytes, expected) in cases {
         let e = PointCloud::load(&write(name, &bytes))

@@ -285,3 +285,35 @@ fn broken_series_are_refused_by_name() {
         "{e}"
     );
 }
+
+/// A file of a series with one more element whose length claims 4 GiB: refused by the reader's
+/// length scan, naming the file, the tag and the lengths, before dicom-parser zero-fills it.
+#[test]
+fn an_element_claiming_gigabytes_is_refused_before_it_is_read() {
+    let d = dir("hostile");
+    let path = d.join("huge.dcm");
+    write_slice(
+        &path,
+        &SliceSpec {
+            series: "1.2.3.500",
+            position_z: 0.0,
+            frames: 1,
+            pixels: stored(0),
+            intercept: 0.0,
+            transfer_syntax: EXPLICIT_LE,
+        },
+    );
+    let mut bytes = std::fs::read(&path).unwrap();
+    // (0040,A160) UT, reserved, length 0xFFFFFFF0, then 4 bytes.
+    bytes.extend([0x40, 0x00, 0x60, 0xA1, b'U', b'T', 0, 0]);
+    bytes.extend(0xFFFF_FFF0u32.to_le_bytes());
+    bytes.extend(b"text");
+    std::fs::write(&path, bytes).unwrap();
+    let e = load_any(&path).unwrap_err().to_string();
+    assert!(
+        e.contains("huge.dcm")
+            && e.contains("element (0040,A160) at byte")
+            && e.contains("declares 4294967280 bytes, but only 4 are left"),
+        "{e}"
+    );
+}

@@ -1,6 +1,6 @@
 //! `autostereo mesh`: render a triangle mesh for a multi-view display.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result};
 use autostereo::mesh::{CoverBounds, TileClip, Visibility};
@@ -49,6 +49,13 @@ pub struct MeshArgs {
     obj: Option<PathBuf>,
     #[command(flatten)]
     common: RenderArgs,
+    #[command(flatten)]
+    mesh: MeshFlags,
+}
+
+/// How a mesh is prepared and rendered: the flags `mesh` and `view` share.
+#[derive(clap::Args, Clone, Debug, PartialEq)]
+pub struct MeshFlags {
     /// Single-pass visibility: auto | compute | atomic | exact (per-subpixel depth) | fast (the
     /// paper's one depth per pixel); auto = compute where 64-bit atomics exist, else exact.
     #[arg(long, value_enum, default_value = "auto")]
@@ -65,21 +72,54 @@ pub struct MeshArgs {
     sort_triangles: bool,
 }
 
+impl MeshFlags {
+    /// The mesh in `file` (the generated torus scene without one), reordered if asked.
+    pub fn load(&self, file: Option<&Path>) -> Result<Mesh> {
+        let mut mesh = match file {
+            Some(path) => Mesh::load(path)?,
+            None => Mesh::torus_scene(),
+        };
+        if self.sort_triangles {
+            mesh.sort_triangles_spatially();
+        }
+        Ok(mesh)
+    }
+
+    /// The mesh options the flags say.
+    pub fn options(&self) -> MeshOptions {
+        MeshOptions {
+            visibility: match self.visibility {
+                VisibilityArg::Auto => None,
+                VisibilityArg::Exact => Some(Visibility::Exact),
+                VisibilityArg::Atomic => Some(Visibility::Atomic),
+                VisibilityArg::Compute => Some(Visibility::Compute),
+                VisibilityArg::Fast => Some(Visibility::Fast),
+            },
+            bounds: match self.bounds {
+                BoundsArg::Exact => CoverBounds::Exact,
+                BoundsArg::Paper => CoverBounds::Paper,
+            },
+            tile_clip: match self.tile_clip {
+                TileClipArg::Auto => TileClip::Auto,
+                TileClipArg::ClipDistances => TileClip::ClipDistances,
+                TileClipArg::Discard => TileClip::Discard,
+            },
+        }
+    }
+}
+
 pub fn run(args: MeshArgs) -> Result<()> {
     args.common.check()?;
-    let mut mesh = match &args.obj {
-        Some(path) => Mesh::load(path)?,
-        None => Mesh::torus_scene(),
-    };
-    if args.sort_triangles {
-        mesh.sort_triangles_spatially();
-    }
+    let mesh = args.mesh.load(args.obj.as_deref())?;
     let bounds = mesh.bounds().context("the mesh has no vertices")?;
     let frame = args.common.frame(bounds)?;
     let ctx = gpu()?;
     let device = &ctx.device;
     let buffers = MeshBuffers::new(device, &mesh)?;
-    let options = options(&args);
+    let options = RendererOptions {
+        mesh: args.mesh.options(),
+        ..args.common.options()
+    };
     let mut renderer = options.mesh_renderer(device)?;
     let run = timed(
         &ctx,
@@ -124,7 +164,7 @@ pub fn run(args: MeshArgs) -> Result<()> {
     let mut fields = run_fields(&ctx, &args.common, &frame, &run, extra);
     if args.common.method == Method::SinglePass {
         fields["visibility"] = options.mesh_single_pass(device).visibility.name().into();
-        fields["bounds"] = format!("{:?}", args.bounds).to_lowercase().into();
+        fields["bounds"] = format!("{:?}", args.mesh.bounds).to_lowercase().into();
     }
     let summary = format!(
         "{method_name}: {} triangles, {}",
@@ -133,29 +173,4 @@ pub fn run(args: MeshArgs) -> Result<()> {
     );
     report(args.common.json, fields, diff, &summary);
     Ok(())
-}
-
-/// The renderer options the flags say.
-fn options(args: &MeshArgs) -> RendererOptions {
-    RendererOptions {
-        mesh: MeshOptions {
-            visibility: match args.visibility {
-                VisibilityArg::Auto => None,
-                VisibilityArg::Exact => Some(Visibility::Exact),
-                VisibilityArg::Atomic => Some(Visibility::Atomic),
-                VisibilityArg::Compute => Some(Visibility::Compute),
-                VisibilityArg::Fast => Some(Visibility::Fast),
-            },
-            bounds: match args.bounds {
-                BoundsArg::Exact => CoverBounds::Exact,
-                BoundsArg::Paper => CoverBounds::Paper,
-            },
-            tile_clip: match args.tile_clip {
-                TileClipArg::Auto => TileClip::Auto,
-                TileClipArg::ClipDistances => TileClip::ClipDistances,
-                TileClipArg::Discard => TileClip::Discard,
-            },
-        },
-        ..args.common.options()
-    }
 }

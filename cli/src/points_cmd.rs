@@ -1,12 +1,12 @@
 //! `autostereo points`: render a point cloud as splats (a generated torus scene when no file is
 //! given).
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use anyhow::{bail, Result};
 use autostereo::points::SplatDepth;
-use autostereo::points::{GroupCount, PointCloud, SplatScene};
+use autostereo::points::{Completion, GroupCount, PointCloud, SplatScene, Splats};
 use autostereo::render::Method;
 use autostereo::{PointOptions, RendererOptions};
 
@@ -29,6 +29,13 @@ pub struct PointsArgs {
     file: Option<PathBuf>,
     #[command(flatten)]
     common: RenderArgs,
+    #[command(flatten)]
+    points: PointFlags,
+}
+
+/// How a point cloud is prepared and rendered: the flags `points` and `view` share.
+#[derive(clap::Args, Clone, Debug, PartialEq)]
+pub struct PointFlags {
     /// ε of the ε-z compositing, as a fraction of the scene's depth extent (bounding diameter).
     #[arg(long, default_value_t = autostereo::points::DEFAULT_EPSILON_FRACTION)]
     epsilon: f32,
@@ -43,6 +50,52 @@ pub struct PointsArgs {
     depth: DepthArg,
 }
 
+impl PointFlags {
+    /// Refuse what would render nothing or nonsense.
+    pub fn check(&self) -> Result<()> {
+        if !(self.epsilon.is_finite() && self.epsilon >= 0.0) {
+            bail!("--epsilon {}: must be finite and ≥ 0", self.epsilon);
+        }
+        if !(self.radius_scale.is_finite() && self.radius_scale > 0.0) {
+            bail!(
+                "--radius-scale {}: must be a finite number > 0 (0 draws nothing)",
+                self.radius_scale
+            );
+        }
+        Ok(())
+    }
+
+    /// The cloud in `file` (the generated torus scene without one), completed into splats
+    /// (normals and radii estimated where missing, radii scaled).
+    pub fn load(&self, file: Option<&Path>) -> Result<(Splats, Completion)> {
+        Ok(Self::cloud(file)?.complete(self.radius_scale)?)
+    }
+
+    /// The cloud in `file`, the generated torus scene without one.
+    fn cloud(file: Option<&Path>) -> Result<PointCloud> {
+        Ok(match file {
+            Some(path) => PointCloud::load(path)?,
+            None => PointCloud::torus_scene(),
+        })
+    }
+
+    /// The scene on the GPU.
+    pub fn scene(&self, device: &wgpu::Device, splats: &Splats) -> Result<SplatScene> {
+        Ok(SplatScene::new(device, splats, self.groups)?)
+    }
+
+    /// The point options the flags say.
+    pub fn options(&self) -> PointOptions {
+        PointOptions {
+            depth: match self.depth {
+                DepthArg::Exact => SplatDepth::Exact,
+                DepthArg::Paper => SplatDepth::Paper,
+            },
+            epsilon_fraction: self.epsilon,
+        }
+    }
+}
+
 fn parse_groups(s: &str) -> Result<GroupCount, String> {
     if s == "auto" {
         return Ok(GroupCount::Auto);
@@ -55,30 +108,19 @@ fn parse_groups(s: &str) -> Result<GroupCount, String> {
 
 pub fn run(args: PointsArgs) -> Result<()> {
     args.common.check()?;
-    if !(args.epsilon.is_finite() && args.epsilon >= 0.0) {
-        bail!("--epsilon {}: must be finite and ≥ 0", args.epsilon);
-    }
+    args.points.check()?;
     let start = Instant::now();
-    let cloud = match &args.file {
-        Some(path) => PointCloud::load(path)?,
-        None => PointCloud::torus_scene(),
-    };
+    let cloud = PointFlags::cloud(args.file.as_deref())?;
     let load_ms = start.elapsed().as_secs_f64() * 1e3;
-    let (splats, completion) = cloud.complete(args.radius_scale)?;
+    let (splats, completion) = cloud.complete(args.points.radius_scale)?;
     drop(cloud);
     let bounds = splats.bounds().expect("complete() rejects empty clouds");
     let frame = args.common.frame(bounds)?;
     let ctx = gpu()?;
     let device = &ctx.device;
-    let scene = SplatScene::new(device, &splats, args.groups)?;
+    let scene = args.points.scene(device, &splats)?;
     let options = RendererOptions {
-        points: PointOptions {
-            depth: match args.depth {
-                DepthArg::Exact => SplatDepth::Exact,
-                DepthArg::Paper => SplatDepth::Paper,
-            },
-            epsilon_fraction: args.epsilon,
-        },
+        points: args.points.options(),
         ..args.common.options()
     };
     let splat_options = options.points.for_scene(&scene);

@@ -48,37 +48,38 @@ pub enum AlphaArg {
 #[derive(clap::Args)]
 pub struct VolumeArgs {
     /// Volume file or DICOM series folder (NRRD, NIfTI .nii/.nii.gz, MetaImage .mha/.mhd,
-    /// DICOM, .den, or raw with --raw-dims/--raw-type); a built-in data set when omitted.
+    /// VTK image data .vti/.vtk, DICOM, .den, or raw with --raw-dims/--raw-type); a built-in
+    /// data set when omitted.
     file: Option<PathBuf>,
+    #[command(flatten)]
+    data: VolumeDataArgs,
+    #[command(flatten)]
+    common: RenderArgs,
+    #[command(flatten)]
+    render: VolumeRenderArgs,
+    /// Also write every view as DIR/view_NN.png.
+    #[arg(long)]
+    views_out: Option<PathBuf>,
+    /// Also write a red/cyan anaglyph of the two views around the centre.
+    #[arg(long)]
+    anaglyph: Option<PathBuf>,
+}
+
+/// How a volume is loaded and placed: the flags `volume` and `view` share.
+#[derive(clap::Args, Clone, Debug, PartialEq)]
+pub struct VolumeDataArgs {
     /// Built-in data set used when no file is given.
     #[arg(long, value_enum, default_value = "head")]
     builtin: Builtin,
     /// Voxels per axis of the built-in data set.
     #[arg(long, default_value_t = 96)]
     builtin_size: u32,
-    #[command(flatten)]
-    common: RenderArgs,
-    /// Single-pass path.
-    #[arg(long, value_enum, default_value = "compute")]
-    path: PathArg,
-    /// Slices path: per-channel (exact) or the paper's averaged α.
-    #[arg(long, value_enum, default_value = "exact")]
-    alpha: AlphaArg,
     /// Transfer function: a preset (ct-skin, ct-bone, mri, ml) or a file of `s r g b a` lines.
     #[arg(long)]
     tf: Option<String>,
-    /// Samples across the volume's diagonal.
-    #[arg(long, conflicts_with = "step")]
-    slices: Option<u32>,
-    /// Sampling distance in voxels of the smallest spacing (default 0.5).
-    #[arg(long)]
-    step: Option<f32>,
     /// Rotate the volume by AX,AY,AZ degrees (about x, then y, then z).
     #[arg(long, value_parser = parse_f32_triple, default_value = "0,0,0")]
     rotate: [f32; 3],
-    /// Emission-absorption only (no gradient shading).
-    #[arg(long)]
-    no_shading: bool,
     /// Raw files: dimensions X,Y,Z.
     #[arg(long, value_parser = parse_u32_triple)]
     raw_dims: Option<[u32; 3]>,
@@ -94,6 +95,29 @@ pub struct VolumeArgs {
     /// Voxel spacing X,Y,Z (overrides the file's).
     #[arg(long, value_parser = parse_f32_triple)]
     spacing: Option<[f32; 3]>,
+    /// Average blocks of F³ voxels first (for volumes over the adapter's 3D texture limit).
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=256))]
+    downsample: u32,
+}
+
+/// How a volume is rendered: the flags `volume` and `view` share.
+#[derive(clap::Args, Clone, Debug, PartialEq)]
+pub struct VolumeRenderArgs {
+    /// Single-pass path.
+    #[arg(long, value_enum, default_value = "compute")]
+    path: PathArg,
+    /// Slices path: per-channel (exact) or the paper's averaged α.
+    #[arg(long, value_enum, default_value = "exact")]
+    alpha: AlphaArg,
+    /// Samples across the volume's diagonal.
+    #[arg(long, conflicts_with = "step")]
+    slices: Option<u32>,
+    /// Sampling distance in voxels of the smallest spacing (default 0.5).
+    #[arg(long)]
+    step: Option<f32>,
+    /// Emission-absorption only (no gradient shading).
+    #[arg(long)]
+    no_shading: bool,
     /// Don't jump over space the transfer function makes transparent (compute path; for
     /// measuring what skipping saves: the image is the same).
     #[arg(long)]
@@ -113,15 +137,6 @@ pub struct VolumeArgs {
     /// at most A opacity (0 = transparent material only). Measured in docs/volumes/BENCHMARKS.md.
     #[arg(long, value_name = "A", default_value_t = 0.0)]
     thin_alpha: f32,
-    /// Average blocks of F³ voxels first (for volumes over the adapter's 3D texture limit).
-    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=256))]
-    downsample: u32,
-    /// Also write every view as DIR/view_NN.png.
-    #[arg(long)]
-    views_out: Option<PathBuf>,
-    /// Also write a red/cyan anaglyph of the two views around the centre.
-    #[arg(long)]
-    anaglyph: Option<PathBuf>,
 }
 
 fn parse_triple<T: std::str::FromStr>(s: &str) -> Result<[T; 3], String> {
@@ -160,72 +175,111 @@ pub fn default_preset(path: &std::path::Path) -> &'static str {
     }
 }
 
-fn load(args: &VolumeArgs) -> Result<(Volume, String)> {
-    let (mut volume, default_tf) = match &args.file {
-        None => match args.builtin {
-            Builtin::Head => (phantom::ct_head(args.builtin_size)?, "ct-skin"),
-            Builtin::Ml => (phantom::marschner_lobb(args.builtin_size)?, "ml"),
-        },
-        Some(path) => {
-            let volume = match (args.raw_dims, &args.raw_type) {
-                (Some(dims), Some(kind)) => {
-                    let kind = SampleType::parse(kind)
-                        .with_context(|| format!("unknown --raw-type '{kind}'"))?;
-                    let spec = RawSpec {
-                        dims,
-                        kind,
-                        big_endian: args.raw_big_endian,
-                        spacing: args.spacing.unwrap_or([1.0; 3]),
-                        header_bytes: args.raw_header,
-                    };
-                    load_raw(path, &spec)?
+impl VolumeDataArgs {
+    /// The volume in `file` (the built-in data set without one) and the transfer-function
+    /// preset its format gets without --tf.
+    pub fn load(&self, file: Option<&Path>) -> Result<(Volume, &'static str)> {
+        let (mut volume, default_tf) = match file {
+            None => {
+                if self.raw_dims.is_some() || self.raw_type.is_some() {
+                    bail!("--raw-dims and --raw-type describe a raw FILE, and none is given");
                 }
-                (None, None) => load_any(path)?,
-                _ => bail!("raw volumes need both --raw-dims and --raw-type"),
-            };
-            (volume, default_preset(path))
+                match self.builtin {
+                    Builtin::Head => (phantom::ct_head(self.builtin_size)?, "ct-skin"),
+                    Builtin::Ml => (phantom::marschner_lobb(self.builtin_size)?, "ml"),
+                }
+            }
+            Some(path) => {
+                let volume = match (self.raw_dims, &self.raw_type) {
+                    (Some(dims), Some(kind)) => {
+                        let kind = SampleType::parse(kind).with_context(|| {
+                            format!(
+                                "unknown --raw-type '{kind}' (u8, i8, u16, i16, u32, i32, f32, f64)"
+                            )
+                        })?;
+                        let spec = RawSpec {
+                            dims,
+                            kind,
+                            big_endian: self.raw_big_endian,
+                            spacing: self.spacing.unwrap_or([1.0; 3]),
+                            header_bytes: self.raw_header,
+                        };
+                        load_raw(path, &spec)?
+                    }
+                    (None, None) => load_any(path)?,
+                    _ => bail!("raw volumes need both --raw-dims and --raw-type"),
+                };
+                (volume, default_preset(path))
+            }
+        };
+        if let Some(spacing) = self.spacing {
+            volume = Volume::new(volume.dims, spacing, volume.data)?;
         }
-    };
-    if let Some(spacing) = args.spacing {
-        volume = Volume::new(volume.dims, spacing, volume.data)?;
+        if self.downsample > 1 {
+            volume = volume.downsample(self.downsample)?;
+        }
+        Ok((volume, default_tf))
     }
-    if args.downsample > 1 {
-        volume = volume.downsample(args.downsample)?;
+
+    /// The transfer function: --tf, else `default` (a preset name).
+    pub fn transfer(&self, default: &str) -> Result<TransferFunction> {
+        let name = self.tf.as_deref().unwrap_or(default);
+        let path = Path::new(name);
+        // A name with a path separator or an extension is a file, even when it is missing:
+        // "no such file" is the error then, not "unknown preset".
+        let looks_like_file =
+            name.contains(std::path::MAIN_SEPARATOR) || path.extension().is_some();
+        if path.exists() || looks_like_file {
+            Ok(TransferFunction::load(path).with_context(|| format!("--tf {name}"))?)
+        } else {
+            Ok(TransferFunction::preset(name)?)
+        }
     }
-    Ok((volume, default_tf.to_string()))
+
+    /// The model matrix of --rotate.
+    pub fn model(&self) -> Mat4 {
+        let [ax, ay, az] = self.rotate.map(f32::to_radians);
+        Mat4::from_rotation_z(az) * Mat4::from_rotation_y(ay) * Mat4::from_rotation_x(ax)
+    }
+
+    /// The scene on the GPU: loaded, its transfer function, placed.
+    pub fn scene(
+        &self,
+        ctx: &autostereo::gpu::GpuContext,
+        file: Option<&Path>,
+    ) -> Result<(Volume, VolumeScene)> {
+        let (volume, default_tf) = self.load(file)?;
+        let tf = self.transfer(default_tf)?;
+        let scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, tf, self.model())?;
+        Ok((volume, scene))
+    }
 }
 
-fn transfer(args: &VolumeArgs, default: &str) -> Result<TransferFunction> {
-    let name = args.tf.as_deref().unwrap_or(default);
-    let path = Path::new(name);
-    // A name with a path separator or an extension is a file, even when it is missing:
-    // "no such file" is the error then, not "unknown preset".
-    let looks_like_file = name.contains(std::path::MAIN_SEPARATOR) || path.extension().is_some();
-    if path.exists() || looks_like_file {
-        Ok(TransferFunction::load(path).with_context(|| format!("--tf {name}"))?)
-    } else {
-        Ok(TransferFunction::preset(name)?)
+impl VolumeRenderArgs {
+    /// The sampling step the flags say (voxels of the smallest spacing; None = the default).
+    pub fn step(&self, volume: &Volume) -> Option<f32> {
+        match (self.slices, self.step) {
+            (Some(n), _) => Some(VolumeScene::step_for_slices(volume, n)),
+            (None, step) => step,
+        }
     }
-}
 
-/// The renderer options the flags say (`step` in voxels of the smallest spacing).
-fn options(args: &VolumeArgs, step: Option<f32>) -> RendererOptions {
-    let settings = VolumeSettings {
-        step,
-        shade: !args.no_shading,
-        skip_empty: !args.no_skip_empty,
-        share_samples: args.share_samples,
-        empty_stride: args.empty_stride,
-        thin_alpha: args.thin_alpha,
-    };
-    let path = match (args.path, args.alpha) {
-        (PathArg::Compute, _) => VolumePath::RayMarch,
-        (PathArg::Slices, AlphaArg::Exact) => VolumePath::Slices(AlphaMode::Exact),
-        (PathArg::Slices, AlphaArg::Paper) => VolumePath::Slices(AlphaMode::Paper),
-    };
-    RendererOptions {
-        volume: VolumeOptions { path, settings },
-        ..args.common.options()
+    /// The volume options the flags say, `step` from [`Self::step`].
+    pub fn options(&self, step: Option<f32>) -> VolumeOptions {
+        let settings = VolumeSettings {
+            step,
+            shade: !self.no_shading,
+            skip_empty: !self.no_skip_empty,
+            share_samples: self.share_samples,
+            empty_stride: self.empty_stride,
+            thin_alpha: self.thin_alpha,
+        };
+        let path = match (self.path, self.alpha) {
+            (PathArg::Compute, _) => VolumePath::RayMarch,
+            (PathArg::Slices, AlphaArg::Exact) => VolumePath::Slices(AlphaMode::Exact),
+            (PathArg::Slices, AlphaArg::Paper) => VolumePath::Slices(AlphaMode::Paper),
+        };
+        VolumeOptions { path, settings }
     }
 }
 
@@ -234,24 +288,22 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     if let Some(path) = &args.anaglyph {
         check_output(path)?;
     }
-    if args.path == PathArg::Slices && args.common.method != Method::SinglePass {
+    if args.render.path == PathArg::Slices && args.common.method != Method::SinglePass {
         bail!("--path slices is a single-pass method; N-pass and single view use the ray-marching kernel");
     }
-    let (volume, default_tf) = load(&args)?;
-    let tf = transfer(&args, &default_tf)?;
-    let step = match (args.slices, args.step) {
-        (Some(n), _) => Some(VolumeScene::step_for_slices(&volume, n)),
-        (None, step) => step,
-    };
-    let [ax, ay, az] = args.rotate.map(f32::to_radians);
-    let model = Mat4::from_rotation_z(az) * Mat4::from_rotation_y(ay) * Mat4::from_rotation_x(ax);
+    let (volume, default_tf) = args.data.load(args.file.as_deref())?;
+    let tf = args.data.transfer(default_tf)?;
+    let step = args.render.step(&volume);
     let bounds = volume.bounds();
     let frame = args.common.frame(bounds)?;
     let ctx = gpu()?;
-    let scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, tf, model)?;
+    let scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, tf, args.data.model())?;
     // The settings are checked where the renderer is built (src/volume/settings.rs, the
     // renderers' constructors); cli/src/flags.rs names the flags in their errors.
-    let options = options(&args, step);
+    let options = RendererOptions {
+        volume: args.render.options(step),
+        ..args.common.options()
+    };
     let settings = options.volume.settings;
     settings.validate_for(&scene)?;
     let mut renderer = options.volume_renderer(&ctx.device)?;
@@ -287,8 +339,8 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     };
     let method = args.common.method.name();
     let extra = serde_json::json!({
-        "path": match args.path { PathArg::Compute => "compute", PathArg::Slices => "slices" },
-        "alpha": match (args.path, args.alpha) {
+        "path": match args.render.path { PathArg::Compute => "compute", PathArg::Slices => "slices" },
+        "alpha": match (args.render.path, args.render.alpha) {
             (PathArg::Compute, _) | (PathArg::Slices, AlphaArg::Exact) => "exact",
             (PathArg::Slices, AlphaArg::Paper) => "paper",
         },
@@ -297,7 +349,7 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         "step": step,
         "compare_step": args.common.compare.then(|| oracle.step_length(&scene)),
         "samples_per_ray_max": (scene.extent.length() / step).ceil(),
-        "skip_empty": settings.skip_empty && matches!(args.path, PathArg::Compute),
+        "skip_empty": settings.skip_empty && matches!(args.render.path, PathArg::Compute),
         // Sharing needs K = 3 rays per pixel (subpixel displays).
         "share_samples": settings.share_samples,
         "share_samples_active": settings.share_samples > 0.0

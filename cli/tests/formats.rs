@@ -308,9 +308,9 @@ fn a_file_of_another_kind_names_the_command_that_reads_it() {
     let mut dicom = vec![0u8; 132];
     dicom[128..].copy_from_slice(b"DICM");
     let dicom = write("slice.dcm", &dicom);
-    let vti = write(
-        "image.vti",
-        b"<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\">\n",
+    let polydata = write(
+        "mesh.vtk",
+        b"# vtk DataFile Version 3.0\nmesh\nASCII\nDATASET POLYDATA\nPOINTS 0 float\n",
     );
     let notes = write("notes.txt", b"hello");
     let target = s(&out("never.png")).to_string();
@@ -355,8 +355,8 @@ fn a_file_of_another_kind_names_the_command_that_reads_it() {
         (vec!["points", s(&laz)], "malformed LAS header".into()),
         (vec!["volume", s(&dicom)], "malformed DICOM".into()),
         (
-            vec!["volume", s(&vti)],
-            "VTK image data is not read yet; read here:".into(),
+            vec!["volume", s(&polydata)],
+            "DATASET POLYDATA: a mesh/polydata, not image data".into(),
         ),
         (
             vec!["volume", s(&notes)],
@@ -447,8 +447,9 @@ fn jpeg_images_are_read_where_pngs_are() {
 }
 
 /// `autostereo volume` reads a MetaImage as the same scan in NRRD (LPS geometry as a
-/// TransformMatrix against RAS space directions): the same image; and the geometry is used:
-/// the NRRD's axes flipped render another picture.
+/// TransformMatrix against RAS space directions), and a VTK `.vti` whose Direction points the
+/// voxel axes where the NRRD's land on screen: the same image; and the geometry is used: the
+/// NRRD's axes flipped render another picture.
 #[test]
 fn a_volume_renders_alike_from_nrrd_and_metaimage() {
     let n = 16usize;
@@ -503,6 +504,20 @@ fn a_volume_renders_alike_from_nrrd_and_metaimage() {
     );
     let from_mha = render(&write("scan.mha", &mha), "mha");
     assert_eq!(compare(&from_mha, &from_nrrd).unwrap().max_abs_err, 0);
+    // VTK's world is the screen's (x right, y up, z toward the viewer): the NRRD's axes on
+    // screen are i → −z, j → −x, k → +y, the columns of this row-major Direction.
+    let values: Vec<String> = voxels.iter().map(u8::to_string).collect();
+    let vti = format!(
+        "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" byte_order=\"LittleEndian\">\n\
+         <ImageData WholeExtent=\"0 {m} 0 {m} 0 {m}\" Spacing=\"1 1 1\" \
+         Direction=\"0 -1 0 0 0 1 -1 0 0\">\n<Piece Extent=\"0 {m} 0 {m} 0 {m}\">\n\
+         <PointData Scalars=\"ct\"><DataArray type=\"UInt8\" Name=\"ct\" format=\"ascii\">\n\
+         {}\n</DataArray></PointData></Piece></ImageData></VTKFile>\n",
+        values.join(" "),
+        m = n - 1
+    );
+    let from_vti = render(&write("scan.vti", vti.as_bytes()), "vti");
+    assert_eq!(compare(&from_vti, &from_nrrd).unwrap().max_abs_err, 0);
     let flipped = render(
         &write("flipped.nrrd", &nrrd("(0,1,0) (-1,0,0) (0,0,1)")),
         "flipped",

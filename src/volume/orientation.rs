@@ -7,8 +7,10 @@
 //! way), and RAS+ is shown as a radiologist's anterior view: the patient faces the viewer,
 //! superior up, the patient's right on the screen's left. A file without one (VolPack `.den`,
 //! raw voxels, NRRD without `space`) keeps its voxel axes on the screen's x (right), y (up) and
-//! z (toward the viewer). Only the axes' directions are used: the renderer centres the box, so
-//! the origin moves nothing on screen.
+//! z (toward the viewer). VTK image data has no patient frame: its world is the screen's (as
+//! ParaView shows it), so a `.vti`'s `Direction` columns are the screen axes themselves. Only the
+//! axes' directions are used: the renderer centres the box, so the origin moves nothing on
+//! screen.
 
 use glam::{Mat3, Vec3};
 

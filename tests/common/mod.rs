@@ -2,6 +2,9 @@
 //! No adapter is a test failure, never a skip: CI installs lavapipe.
 #![allow(dead_code)]
 
+/// The CPU reference of the 3D Gaussian splatting rules (the GPU renderers' oracle).
+pub mod gaussians_reference;
+
 use std::path::PathBuf;
 use std::sync::{Mutex, MutexGuard, OnceLock};
 

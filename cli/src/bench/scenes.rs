@@ -223,6 +223,24 @@ pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEn
                 entry("layered", Kind::Duplication, of(Method::Layered)?),
             ]);
         }
+        AnyScene::Gaussians(_) => {
+            let cpu_sort = RendererOptions {
+                gaussians: autostereo::gaussians::GaussianOptions {
+                    sort: autostereo::gaussians::SortOn::Cpu,
+                },
+                ..Default::default()
+            };
+            v.extend([
+                entry(
+                    "single-pass (GPU sort)",
+                    Kind::SinglePass,
+                    of(Method::SinglePass)?,
+                ),
+                entry("single-pass (CPU sort)", Kind::SinglePass, build(cpu_sort)?),
+                entry("n-pass", Kind::NPass, of(Method::NPass)?),
+                entry("single-view", Kind::SingleView, of(Method::SingleView)?),
+            ]);
+        }
         AnyScene::Points(_) => {
             let paper = RendererOptions {
                 points: PointOptions {

@@ -13,7 +13,7 @@ use autostereo::render::{
     Method, OutputBlit, Renderer, StereoCompositor, StereoFormat, OUTPUT_FORMATS,
 };
 use autostereo::target::SpatialTarget;
-use autostereo::{AnyRenderer, RendererOptions};
+use autostereo::AnyRenderer;
 use winit::application::ApplicationHandler;
 use winit::dpi::{PhysicalPosition, PhysicalSize};
 use winit::event::{ElementState, MouseButton, MouseScrollDelta, WindowEvent};
@@ -27,11 +27,6 @@ use super::{Preview, ViewArgs};
 mod controls;
 mod images;
 mod memory;
-
-/// The renderer options of `method` (every primitive's settings at their defaults).
-pub(super) fn options(method: Method) -> RendererOptions {
-    RendererOptions::new(method)
-}
 
 use images::copyable_target;
 use memory::MemoryLog;
@@ -260,10 +255,10 @@ impl State {
         surface.configure(&ctx.device, &config);
         let blit = OutputBlit::new(&ctx.device, format)?;
         let stereo = StereoCompositor::new(&ctx.device)?;
-        let scene = scene::load(&ctx, args.file.as_ref(), args.kind)?;
+        let scene = scene::load(&ctx, &args.scene_flags())?;
         let methods: Vec<Method> = Method::ALL
             .into_iter()
-            .filter(|&m| AnyRenderer::new(&ctx.device, &scene.scene, &options(m)).is_ok())
+            .filter(|&m| AnyRenderer::new(&ctx.device, &scene.scene, &scene.options(m)).is_ok())
             .collect();
         let method = methods
             .iter()
@@ -284,7 +279,7 @@ impl State {
         renderers[method] = Some(AnyRenderer::new(
             &ctx.device,
             &scene.scene,
-            &options(methods[method]),
+            &scene.options(methods[method]),
         )?);
         let display = args.display.display()?;
         check_monitor(&window, &display);

@@ -65,8 +65,8 @@ impl Preview {
 
 #[derive(clap::Args)]
 pub struct ViewArgs {
-    /// A mesh, point cloud or volume file (its kind told by its first bytes, else its
-    /// extension; a PLY with faces is a mesh); the built-in head volume when omitted.
+    /// A mesh, point cloud or volume file or DICOM folder (its kind told by its first bytes,
+    /// else its extension; a PLY with faces is a mesh); the built-in head volume when omitted.
     file: Option<PathBuf>,
     /// What the file holds, where its extension does not say.
     #[arg(long, value_enum)]
@@ -75,6 +75,17 @@ pub struct ViewArgs {
     display: DisplayArgs,
     #[command(flatten)]
     camera: CameraArgs,
+    // Mesh flags, as `autostereo mesh` has them (one definition: cli/src/mesh_cmd.rs).
+    #[command(flatten, next_help_heading = "Mesh")]
+    mesh: crate::mesh_cmd::MeshFlags,
+    // Point-cloud flags, as `autostereo points` has them.
+    #[command(flatten, next_help_heading = "Points")]
+    points: crate::points_cmd::PointFlags,
+    // Volume flags, as `autostereo volume` has them.
+    #[command(flatten, next_help_heading = "Volume")]
+    volume_data: crate::volume_cmd::VolumeDataArgs,
+    #[command(flatten, next_help_heading = "Volume")]
+    volume_render: crate::volume_cmd::VolumeRenderArgs,
     /// Window client-area size WxH in pixels.
     #[arg(long, value_parser = parse_size, default_value = "512x512")]
     size: [u32; 2],
@@ -127,6 +138,20 @@ fn parse_move(s: &str) -> Result<(u32, [u32; 2]), String> {
     Ok((frame, parse_pair(at)?))
 }
 
+impl ViewArgs {
+    /// What to load, with every primitive's flags.
+    fn scene_flags(&self) -> scene::SceneFlags<'_> {
+        scene::SceneFlags {
+            file: self.file.as_deref(),
+            kind: self.kind,
+            mesh: &self.mesh,
+            points: &self.points,
+            volume_data: &self.volume_data,
+            volume_render: &self.volume_render,
+        }
+    }
+}
+
 pub fn run(args: ViewArgs) -> Result<()> {
     if let Some(path) = &args.screenshot {
         check_output(path)?;
@@ -134,7 +159,8 @@ pub fn run(args: ViewArgs) -> Result<()> {
     if args.quit_after_frames == Some(0) {
         anyhow::bail!("--quit-after-frames 0: at least one frame");
     }
-    // Fail on a bad display before opening a window.
+    // Fail on a bad display or flags of another primitive before opening a window.
     args.display.display()?;
+    args.scene_flags().check()?;
     app::run(args)
 }

@@ -1,28 +1,48 @@
 //! The viewer's scene: a mesh, a point cloud or a volume, loaded as the render commands load
 //! them (same defaults, so a viewer frame equals the command's image of the same camera).
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use anyhow::{bail, Result};
 use autostereo::camera::Bounds;
-use autostereo::mesh::{Mesh, MeshBuffers};
-use autostereo::points::{GroupCount, PointCloud, SplatScene};
-use autostereo::volume::{load::load_any, phantom, TransferFunction, VolumeScene};
-use autostereo::AnyScene;
-use glam::Mat4;
+use autostereo::mesh::MeshBuffers;
+use autostereo::render::Method;
+use autostereo::{AnyScene, RendererOptions};
+
+use crate::mesh_cmd::MeshFlags;
+use crate::points_cmd::PointFlags;
+use crate::volume_cmd::{VolumeDataArgs, VolumeRenderArgs};
 
 /// What a file holds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum KindArg {
-    /// Triangles (OBJ).
+    /// Triangles (OBJ, PLY with faces, STL, glTF).
     Mesh,
-    /// Splats (PLY, or an OBJ's vertices).
+    /// Splats (PLY, LAS/LAZ, or an OBJ's vertices).
     Points,
-    /// A volume (NRRD, .den; the built-in head without a file).
+    /// A volume (every format of `autostereo volume`; the built-in head without a file).
     Volume,
 }
 
 impl KindArg {
+    /// Its name in messages and `--kind`.
+    pub fn name(self) -> &'static str {
+        match self {
+            KindArg::Mesh => "mesh",
+            KindArg::Points => "points",
+            KindArg::Volume => "volume",
+        }
+    }
+
+    /// What a scene of this kind is, in a sentence.
+    fn noun(self) -> &'static str {
+        match self {
+            KindArg::Mesh => "a mesh",
+            KindArg::Points => "a point cloud",
+            KindArg::Volume => "a volume",
+        }
+    }
+
     /// The kind of data the file holds (autostereo::formats::kind: its first bytes, else
     /// its extension; a PLY with faces is a mesh).
     pub fn of(path: &Path) -> Result<Self> {
@@ -35,6 +55,11 @@ impl KindArg {
                 "{}: {format} is an image; `autostereo rgbd` or `autostereo interleave` reads it",
                 path.display()
             ),
+            (format, DataKind::Gaussians) => bail!(
+                "{}: {format} 3D Gaussian splats; the viewer does not show them yet \
+                 (`autostereo gaussians` is coming)",
+                path.display()
+            ),
         })
     }
 }
@@ -45,52 +70,114 @@ pub struct ViewScene {
     pub bounds: Bounds,
     /// What the title says.
     pub name: String,
+    /// The renderer options the primitive's flags say (the method is set per renderer).
+    pub options: RendererOptions,
 }
 
-/// Load `file` as `kind` (from the extension when `None`); no file: the built-in volume.
-pub fn load(
-    ctx: &autostereo::gpu::GpuContext,
-    file: Option<&PathBuf>,
-    kind: Option<KindArg>,
-) -> Result<ViewScene> {
-    let kind = match (file, kind) {
-        (_, Some(k)) => k,
-        (Some(path), None) => KindArg::of(path)?,
-        (None, None) => KindArg::Volume,
-    };
+impl ViewScene {
+    /// The renderer options for `method`.
+    pub fn options(&self, method: Method) -> RendererOptions {
+        RendererOptions {
+            method,
+            ..self.options
+        }
+    }
+}
+
+/// What the viewer reads, with the flags of every primitive (the render commands' own
+/// definitions: cli/src/{mesh,points,volume}_cmd.rs).
+pub struct SceneFlags<'a> {
+    pub file: Option<&'a Path>,
+    pub kind: Option<KindArg>,
+    pub mesh: &'a MeshFlags,
+    pub points: &'a PointFlags,
+    pub volume_data: &'a VolumeDataArgs,
+    pub volume_render: &'a VolumeRenderArgs,
+}
+
+impl SceneFlags<'_> {
+    /// The kind of scene these flags load.
+    pub fn kind(&self) -> Result<KindArg> {
+        Ok(match (self.file, self.kind) {
+            (_, Some(k)) => k,
+            (Some(path), None) => KindArg::of(path)?,
+            (None, None) => KindArg::Volume,
+        })
+    }
+
+    /// Refuse flags of a primitive the scene is not (they would be ignored silently).
+    pub fn check(&self) -> Result<()> {
+        let kind = self.kind()?;
+        let given = [
+            (KindArg::Mesh, *self.mesh != defaults::<MeshFlags>()),
+            (KindArg::Points, *self.points != defaults::<PointFlags>()),
+            (
+                KindArg::Volume,
+                *self.volume_data != defaults::<VolumeDataArgs>()
+                    || *self.volume_render != defaults::<VolumeRenderArgs>(),
+            ),
+        ];
+        for (other, set) in given {
+            if set && other != kind {
+                let what = self
+                    .file
+                    .map_or_else(|| "the built-in scene".into(), |p| p.display().to_string());
+                bail!(
+                    "flags of `autostereo {}` were given, but {what} is {}: they apply to \
+                     {} only (`--kind {}` or such a file)",
+                    other.name(),
+                    kind.noun(),
+                    other.noun(),
+                    other.name(),
+                );
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The values a flag group has when none of its flags is given.
+fn defaults<T: clap::Args + clap::FromArgMatches>() -> T {
+    let command = T::augment_args(clap::Command::new("defaults").no_binary_name(true));
+    let matches = command
+        .try_get_matches_from(std::iter::empty::<&str>())
+        .expect("a flag group parses without flags");
+    T::from_arg_matches(&matches).expect("a flag group's defaults are values")
+}
+
+/// Load the scene the flags say; no file: the built-in volume (or the kind's generated scene).
+pub fn load(ctx: &autostereo::gpu::GpuContext, flags: &SceneFlags) -> Result<ViewScene> {
+    flags.check()?;
+    let kind = flags.kind()?;
+    let file = flags.file;
     let name = file.map_or_else(
-        || format!("built-in {kind:?}").to_lowercase(),
+        || format!("built-in {}", kind.name()),
         |p| p.display().to_string(),
     );
-    let (device, queue) = (&ctx.device, &ctx.queue);
+    let device = &ctx.device;
+    let mut options = RendererOptions::default();
     let (scene, bounds) = match kind {
         KindArg::Mesh => {
-            let mesh = match file {
-                Some(path) => Mesh::load(path)?,
-                None => Mesh::torus_scene(),
-            };
+            let mesh = flags.mesh.load(file)?;
             let Some(bounds) = mesh.bounds() else {
                 bail!("{name}: the mesh has no vertices");
             };
+            options.mesh = flags.mesh.options();
             (AnyScene::Mesh(MeshBuffers::new(device, &mesh)?), bounds)
         }
         KindArg::Points => {
-            let cloud = match file {
-                Some(path) => PointCloud::load(path)?,
-                None => PointCloud::torus_scene(),
-            };
-            let (splats, _) = cloud.complete(1.0)?;
+            flags.points.check()?;
+            let (splats, _) = flags.points.load(file)?;
             let bounds = splats.bounds().expect("complete() rejects empty clouds");
-            let scene = SplatScene::new(device, &splats, GroupCount::Auto)?;
+            let scene = flags.points.scene(device, &splats)?;
+            options.points = flags.points.options();
             (AnyScene::Points(scene), bounds)
         }
         KindArg::Volume => {
-            let (volume, tf) = match file {
-                Some(path) => (load_any(path)?, crate::volume_cmd::default_preset(path)),
-                None => (phantom::ct_head(96)?, "ct-skin"),
-            };
-            let tf = TransferFunction::preset(tf)?;
-            let scene = VolumeScene::new(device, queue, &volume, tf, Mat4::IDENTITY)?;
+            let (volume, scene) = flags.volume_data.scene(ctx, file)?;
+            let step = flags.volume_render.step(&volume);
+            options.volume = flags.volume_render.options(step);
+            options.volume.settings.validate_for(&scene)?;
             (AnyScene::Volume(Box::new(scene)), volume.bounds())
         }
     };
@@ -98,5 +185,6 @@ pub fn load(
         scene,
         bounds,
         name,
+        options,
     })
 }

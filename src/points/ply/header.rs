@@ -4,14 +4,14 @@
 const MAX_HEADER: usize = 1 << 16;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) enum Format {
+pub(crate) enum Format {
     Ascii,
     LittleEndian,
     BigEndian,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) enum Scalar {
+pub(crate) enum Scalar {
     I8,
     U8,
     I16,
@@ -37,7 +37,7 @@ impl Scalar {
         })
     }
 
-    pub(super) fn size(self) -> usize {
+    pub(crate) fn size(self) -> usize {
         match self {
             Self::I8 | Self::U8 => 1,
             Self::I16 | Self::U16 => 2,
@@ -47,7 +47,7 @@ impl Scalar {
     }
 
     /// Full scale of a colour stored in this type (1 for floats).
-    pub(super) fn color_scale(self) -> f64 {
+    pub(crate) fn color_scale(self) -> f64 {
         match self {
             Self::U8 => 255.0,
             Self::I8 => 127.0,
@@ -59,7 +59,7 @@ impl Scalar {
         }
     }
 
-    pub(super) fn decode(self, bytes: &[u8], format: Format) -> f64 {
+    pub(crate) fn decode(self, bytes: &[u8], format: Format) -> f64 {
         macro_rules! read {
             ($t:ty) => {{
                 let a = bytes[..std::mem::size_of::<$t>()]
@@ -86,29 +86,29 @@ impl Scalar {
 }
 
 #[derive(Clone, Debug)]
-pub(super) struct Property {
-    pub(super) name: String,
-    pub(super) value: Scalar,
+pub(crate) struct Property {
+    pub(crate) name: String,
+    pub(crate) value: Scalar,
     /// `Some(count type)` for list properties.
-    pub(super) list: Option<Scalar>,
+    pub(crate) list: Option<Scalar>,
 }
 
 #[derive(Clone, Debug)]
-pub(super) struct Element {
-    pub(super) name: String,
-    pub(super) count: usize,
-    pub(super) properties: Vec<Property>,
+pub(crate) struct Element {
+    pub(crate) name: String,
+    pub(crate) count: usize,
+    pub(crate) properties: Vec<Property>,
 }
 
 /// What the header says: the body's format, its elements in order, and where it starts.
-pub(super) struct Header {
-    pub(super) format: Format,
-    pub(super) elements: Vec<Element>,
-    pub(super) body_start: usize,
+pub(crate) struct Header {
+    pub(crate) format: Format,
+    pub(crate) elements: Vec<Element>,
+    pub(crate) body_start: usize,
 }
 
 /// Parse the header at the start of `bytes`.
-pub(super) fn parse_header(bytes: &[u8]) -> std::result::Result<Header, String> {
+pub(crate) fn parse_header(bytes: &[u8]) -> std::result::Result<Header, String> {
     let window = &bytes[..bytes.len().min(MAX_HEADER)];
     // `end_header` on a line of its own (a comment may contain the words).
     let end = find_line(window, b"end_header").ok_or(if bytes.starts_with(b"ply") {

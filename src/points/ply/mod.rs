@@ -3,7 +3,7 @@
 //! (faces…) are skipped. Every count is checked against the bytes present before allocating.
 
 mod body;
-mod header;
+pub(crate) mod header;
 
 use std::path::Path;
 

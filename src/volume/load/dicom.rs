@@ -136,6 +136,7 @@ fn open(path: &Path, whole: bool) -> Result<DefaultDicomObject> {
 }
 
 fn parse_object(bytes: &[u8], path: &Path, whole: bool) -> Result<DefaultDicomObject> {
+    check_lengths(bytes, whole).map_err(|e| format_error(path, e))?;
     let options = OpenFileOptions::new().read_preamble(ReadPreamble::Always);
     let options = if whole {
         options
@@ -379,4 +380,556 @@ fn stack(path: &Path, mut slices: Vec<Slice>) -> Result<Volume> {
     let ras = |d: DVec3| LPS_TO_RAS * d.as_vec3();
     let axes = Mat3::from_cols(ras(orientation[0]), ras(orientation[1]), ras(normal));
     volume.with_axes(screen_axes_from_ras(axes).map_err(|e| err(e.to_string()))?)
+}
+
+// The length scan. dicom-parser zero-fills each value's declared length (up to 4 GiB) before
+// reading it, and dicom-object does the same for the file meta group's UIDs, so a file of a
+// few hundred bytes could ask for gigabytes. Before a file's bytes reach them, its elements
+// are walked here as dicom-parser will walk them (the same element, item and delimiter
+// boundaries, the same VR rules), and a value, or a fragment of encapsulated pixel data,
+// declared longer than the bytes left in the file is refused by its tag. Where the walk meets
+// what dicom-parser refuses itself (a broken header, an undefined fragment length, an
+// inconsistent sequence end), it stops: nothing past that point is read.
+
+/// Elements, items and delimiters walked in one file (a guard: a CT slice has about a hundred,
+/// an enhanced multi-frame file's per-frame groups some hundred thousand).
+const MAX_ELEMENTS: usize = 1 << 21;
+/// Sequences nested in one file (dicom-object builds them recursively; real files nest a few).
+const MAX_NESTING: usize = 32;
+
+const PIXEL_DATA: (u16, u16) = (0x7FE0, 0x0010);
+const ITEM: (u16, u16) = (0xFFFE, 0xE000);
+const ITEM_END: (u16, u16) = (0xFFFE, 0xE00D);
+const SEQUENCE_END: (u16, u16) = (0xFFFE, 0xE0DD);
+const UNDEFINED: u32 = u32::MAX;
+
+/// The deflated transfer syntaxes (the data set is zlib-compressed, so not scannable here).
+const DEFLATED: [&str; 3] = [
+    "1.2.840.10008.1.2.1.99",
+    "1.2.840.10008.1.2.4.95",
+    "1.2.840.10008.1.2.4.205",
+];
+
+fn tag_name((group, element): (u16, u16)) -> String {
+    format!("({group:04X},{element:04X})")
+}
+
+/// A cursor over the file's bytes.
+struct Walk<'a> {
+    bytes: &'a [u8],
+    pos: usize,
+    big_endian: bool,
+}
+
+impl Walk<'_> {
+    fn left(&self) -> usize {
+        self.bytes.len() - self.pos
+    }
+
+    fn take<const N: usize>(&mut self) -> Option<[u8; N]> {
+        let b: [u8; N] = self.bytes.get(self.pos..self.pos + N)?.try_into().ok()?;
+        self.pos += N;
+        Some(b)
+    }
+
+    fn u16(&mut self) -> Option<u16> {
+        let b = self.take::<2>()?;
+        Some(match self.big_endian {
+            true => u16::from_be_bytes(b),
+            false => u16::from_le_bytes(b),
+        })
+    }
+
+    fn u32(&mut self) -> Option<u32> {
+        let b = self.take::<4>()?;
+        Some(match self.big_endian {
+            true => u32::from_be_bytes(b),
+            false => u32::from_le_bytes(b),
+        })
+    }
+
+    fn tag(&mut self) -> Option<(u16, u16)> {
+        Some((self.u16()?, self.u16()?))
+    }
+
+    /// An item or delimiter header: tag and 32-bit length, in any transfer syntax.
+    fn item_header(&mut self) -> Option<((u16, u16), u32)> {
+        Some((self.tag()?, self.u32()?))
+    }
+
+    /// A data element header: its tag, whether it opens a sequence (VR SQ) and its length.
+    /// Explicit VR: items and delimiters (group FFFE) have no VR; the VRs of PS3.5 table 7.1-2
+    /// have a 16-bit length, all others (unknown ones too) 2 reserved bytes and a 32-bit one.
+    /// Implicit VR: the VR is the standard dictionary's, as dicom-parser looks it up.
+    fn element_header(&mut self, explicit: bool) -> Option<((u16, u16), bool, u32)> {
+        let tag = self.tag()?;
+        if tag.0 == 0xFFFE || !explicit {
+            return Some((tag, !explicit && implicit_sequence(tag), self.u32()?));
+        }
+        let vr = self.take::<2>()?;
+        let short = matches!(
+            &vr,
+            b"AE"
+                | b"AS"
+                | b"AT"
+                | b"CS"
+                | b"DA"
+                | b"DS"
+                | b"DT"
+                | b"FL"
+                | b"FD"
+                | b"IS"
+                | b"LO"
+                | b"LT"
+                | b"PN"
+                | b"SH"
+                | b"SL"
+                | b"SS"
+                | b"ST"
+                | b"TM"
+                | b"UI"
+                | b"UL"
+                | b"US"
+        );
+        let len = if short {
+            u32::from(self.u16()?)
+        } else {
+            self.take::<2>()?;
+            self.u32()?
+        };
+        Some((tag, &vr == b"SQ", len))
+    }
+}
+
+/// Whether implicit VR reads `tag` as a sequence (dicom-encoding's implicit VR decoder: the
+/// standard dictionary's VR, OW for pixel and overlay data).
+fn implicit_sequence(tag: (u16, u16)) -> bool {
+    use dicom_core::dictionary::{DataDictionary, DataDictionaryEntry};
+    if tag == PIXEL_DATA || (tag.0 >> 8 == 0x60 && tag.1 == 0x3000) {
+        return false;
+    }
+    dicom_object::StandardDataDictionary
+        .by_tag(Tag(tag.0, tag.1))
+        .is_some_and(|entry| entry.vr().relaxed() == dicom_core::VR::SQ)
+}
+
+/// A sequence or item open in the walk, with where its defined length ends.
+struct Open {
+    item: bool,
+    pixel_data: bool,
+    end: Option<usize>,
+}
+
+/// Refuse a DICOM file whose elements declare more bytes than it has (see above). `whole`:
+/// false walks only as far as `read_until(PIXEL_DATA)` reads.
+fn check_lengths(bytes: &[u8], whole: bool) -> std::result::Result<(), String> {
+    let mut w = Walk {
+        bytes,
+        pos: 132,
+        big_endian: false,
+    };
+    if bytes.get(128..132) != Some(&b"DICM"[..]) {
+        return Ok(()); // dicom-object refuses it
+    }
+    let over = |what: &str, tag: (u16, u16), len: u32, at: usize, left: usize| {
+        format!(
+            "{what} {} at byte {at} declares {len} bytes, but only {left} are left in the file",
+            tag_name(tag)
+        )
+    };
+    // The file meta group, always explicit VR little endian: dicom-object reads elements
+    // while the bytes it has read are fewer than the group length.
+    let Some((tag, _, 4)) = w.element_header(true) else {
+        return Ok(());
+    };
+    let Some(group_length) = w.u32() else {
+        return Ok(());
+    };
+    if tag != (0x0002, 0x0000) {
+        return Ok(());
+    }
+    let mut read = 0u32;
+    let mut transfer_syntax = None;
+    while read < group_length {
+        let start = w.pos;
+        let Some((tag, _, len)) = w.element_header(true) else {
+            return Ok(());
+        };
+        if len == UNDEFINED {
+            return Ok(()); // refused by dicom-object
+        }
+        if len as usize > w.left() {
+            return Err(over("file meta element", tag, len, start, w.left()));
+        }
+        let value = &bytes[w.pos..w.pos + len as usize];
+        if tag == (0x0002, 0x0010) {
+            transfer_syntax = Some(value);
+        }
+        w.pos += len as usize;
+        read = read.saturating_add((w.pos - start) as u32);
+    }
+    let Some(ts) = transfer_syntax else {
+        return Ok(()); // refused by dicom-object
+    };
+    let ts = String::from_utf8_lossy(ts);
+    let ts = ts.trim_end_matches(['\0', ' ']);
+    let explicit = match ts {
+        "1.2.840.10008.1.2" => false,
+        "1.2.840.10008.1.2.2" => {
+            w.big_endian = true;
+            true
+        }
+        ts if DEFLATED.contains(&ts) => {
+            return Err(format!(
+                "transfer syntax {ts}: a deflated data set is not read (inflate it, e.g. with \
+                 gdcmconv --raw)"
+            ))
+        }
+        // Every other standard syntax is explicit VR little endian; dicom-object refuses
+        // syntaxes it does not know before reading the data set.
+        ts if ts.starts_with("1.2.840.10008.1.2.") => true,
+        _ => return Ok(()),
+    };
+    // The data set: the states of dicom-parser's DataSetReader.
+    let mut open: Vec<Open> = Vec::new();
+    let mut in_sequence = false;
+    let mut check_end = false;
+    let end_of =
+        |pos: usize, len: u32| (len != UNDEFINED).then(|| pos.saturating_add(len as usize));
+    let nesting = |open: &[Open]| open.iter().filter(|o| !o.item).count();
+    // `read_until(PIXEL_DATA)` stops at a top-level element from the pixel data on.
+    let stops = |open: &[Open], tag: (u16, u16)| !whole && open.is_empty() && tag >= PIXEL_DATA;
+    for _ in 0..MAX_ELEMENTS {
+        // A sequence or item of defined length ends where its length says.
+        if check_end {
+            if let Some(end) = open.last().and_then(|o| o.end) {
+                match end.cmp(&w.pos) {
+                    std::cmp::Ordering::Equal => {
+                        in_sequence = open.pop().is_some_and(|o| o.item);
+                        continue;
+                    }
+                    std::cmp::Ordering::Less => return Ok(()), // refused by dicom-parser
+                    std::cmp::Ordering::Greater => {}
+                }
+            }
+            check_end = false;
+        }
+        if in_sequence {
+            // An item header or the sequence's delimiter.
+            let Some((tag, len)) = w.item_header() else {
+                return Ok(());
+            };
+            match tag {
+                ITEM => {
+                    let Some(parent) = open.last() else {
+                        return Ok(());
+                    };
+                    in_sequence = false;
+                    open.push(Open {
+                        item: true,
+                        pixel_data: parent.pixel_data,
+                        end: end_of(w.pos, len),
+                    });
+                    check_end = len == 0;
+                }
+                ITEM_END | SEQUENCE_END => {
+                    open.pop();
+                    in_sequence = tag == ITEM_END;
+                    check_end = true;
+                }
+                _ => return Ok(()), // refused by dicom-parser
+            }
+        } else if let Some(Open {
+            item: true,
+            pixel_data: true,
+            end,
+        }) = open.last()
+        {
+            // A fragment of encapsulated pixel data (or its offset table), read whole.
+            let Some(end) = *end else {
+                return Ok(()); // an undefined fragment length: refused by dicom-parser
+            };
+            let len = end.saturating_sub(w.pos);
+            if len > w.left() {
+                return Err(over(
+                    "a fragment of pixel data",
+                    PIXEL_DATA,
+                    len as u32,
+                    w.pos - 8,
+                    w.left(),
+                ));
+            }
+            w.pos += len;
+            check_end = true;
+        } else {
+            let at = w.pos;
+            let Some((tag, sequence, len)) = w.element_header(explicit) else {
+                return Ok(()); // the end of the data set, or a header dicom-parser refuses
+            };
+            if tag == ITEM_END {
+                if !open.is_empty() {
+                    open.pop();
+                    in_sequence = true;
+                    check_end = true;
+                } // outside a sequence, skipped
+                continue;
+            }
+            if stops(&open, tag) {
+                return Ok(());
+            }
+            if sequence || len == UNDEFINED {
+                // A sequence (any element of undefined length is read as one), or encapsulated
+                // pixel data: a sequence of fragments whose first item follows at once.
+                let pixel_data = !sequence && tag == PIXEL_DATA;
+                open.push(Open {
+                    item: false,
+                    pixel_data,
+                    end: end_of(w.pos, len),
+                });
+                if nesting(&open) > MAX_NESTING {
+                    return Err(format!(
+                        "sequences nested more than {MAX_NESTING} deep (at byte {at})"
+                    ));
+                }
+                in_sequence = !pixel_data;
+                check_end = sequence && len == 0;
+                if pixel_data {
+                    match w.item_header() {
+                        Some((ITEM, len)) => {
+                            open.push(Open {
+                                item: true,
+                                pixel_data: true,
+                                end: end_of(w.pos, len),
+                            });
+                            check_end = len == 0;
+                        }
+                        Some((SEQUENCE_END, _)) => {
+                            open.pop();
+                        }
+                        _ => return Ok(()), // refused by dicom-parser
+                    }
+                }
+            } else {
+                if len as usize > w.left() {
+                    return Err(over("element", tag, len, at, w.left()));
+                }
+                w.pos += len as usize;
+                check_end = true;
+            }
+        }
+    }
+    Err(format!("more than {MAX_ELEMENTS} data elements"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const EXPLICIT_LE: &str = "1.2.840.10008.1.2.1";
+    const IMPLICIT_LE: &str = "1.2.840.10008.1.2";
+
+    /// An explicit VR little endian element (a 32-bit length for the VRs that have one).
+    fn explicit(tag: (u16, u16), vr: &[u8; 2], len: u32, value: &[u8]) -> Vec<u8> {
+        let mut b = [tag.0.to_le_bytes(), tag.1.to_le_bytes()].concat();
+        b.extend(vr);
+        if matches!(vr, b"OB" | b"OW" | b"SQ" | b"UN" | b"UT") {
+            b.extend([0, 0]);
+            b.extend(len.to_le_bytes());
+        } else {
+            b.extend((len as u16).to_le_bytes());
+        }
+        b.extend(value);
+        b
+    }
+
+    /// An item or delimiter header, or an implicit VR element header.
+    fn header(tag: (u16, u16), len: u32) -> Vec<u8> {
+        [
+            &tag.0.to_le_bytes()[..],
+            &tag.1.to_le_bytes(),
+            &len.to_le_bytes(),
+        ]
+        .concat()
+    }
+
+    /// Preamble, magic and a file meta group naming `ts`, then `data_set`.
+    fn file(ts: &str, data_set: &[u8]) -> Vec<u8> {
+        let mut uid = ts.as_bytes().to_vec();
+        if uid.len() % 2 == 1 {
+            uid.push(0);
+        }
+        let meta = explicit((0x0002, 0x0010), b"UI", uid.len() as u32, &uid);
+        let mut b = vec![0u8; 128];
+        b.extend(b"DICM");
+        b.extend(explicit(
+            (0x0002, 0x0000),
+            b"UL",
+            4,
+            &(meta.len() as u32).to_le_bytes(),
+        ));
+        b.extend(meta);
+        b.extend(data_set);
+        b
+    }
+
+    fn name() -> Vec<u8> {
+        explicit((0x0010, 0x0010), b"PN", 4, b"Doe ")
+    }
+
+    #[test]
+    fn an_element_declaring_gigabytes_is_refused_by_tag() {
+        // Explicit VR: a UT of 0xFFFFFFF0 bytes after a name.
+        let bytes = file(
+            EXPLICIT_LE,
+            &[
+                name(),
+                explicit((0x0040, 0xA160), b"UT", 0xFFFF_FFF0, b"abcd"),
+            ]
+            .concat(),
+        );
+        let e = check_lengths(&bytes, true).unwrap_err();
+        assert!(
+            e.contains("element (0040,A160) at byte 184 declares 4294967280 bytes")
+                && e.contains("only 4 are left"),
+            "{e}"
+        );
+        // Implicit VR: every length is 32-bit.
+        let bytes = file(
+            IMPLICIT_LE,
+            &[header((0x0010, 0x0010), 0xFFFF_FFF0), b"Doe ".to_vec()].concat(),
+        );
+        let e = check_lengths(&bytes, true).unwrap_err();
+        assert!(
+            e.contains("element (0010,0010) at byte 170 declares 4294967280 bytes"),
+            "{e}"
+        );
+        // The same through the parser's entry point: the scan's error, naming the file.
+        let e = parse_dicom(&bytes, Path::new("huge.dcm"))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("huge.dcm") && e.contains("declares 4294967280 bytes"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn an_oversize_element_inside_a_sequence_item_is_refused() {
+        let inner = explicit((0x0042, 0x0011), b"OB", 0xFFFF_FFF0, &[1, 2]);
+        // Undefined lengths: sequence, item, then the element.
+        let undefined = [
+            explicit((0x0008, 0x1140), b"SQ", UNDEFINED, &[]),
+            header(ITEM, UNDEFINED),
+            inner.clone(),
+        ]
+        .concat();
+        // Defined lengths: the walk goes into the sequence too.
+        let item = [header(ITEM, inner.len() as u32), inner.clone()].concat();
+        let defined = explicit((0x0008, 0x1140), b"SQ", item.len() as u32, &item);
+        for data_set in [undefined, defined] {
+            let e = check_lengths(&file(EXPLICIT_LE, &data_set), true).unwrap_err();
+            assert!(
+                e.contains("element (0042,0011) at byte 192 declares 4294967280 bytes")
+                    && e.contains("only 2"),
+                "{e}"
+            );
+        }
+        // Implicit VR: the dictionary says (0008,1140) is a sequence, even of defined length.
+        let inner = [header((0x0008, 0x1150), 0xFFFF_FFF0), b"1.2".to_vec()].concat();
+        let item = [header(ITEM, inner.len() as u32), inner].concat();
+        let data_set = [header((0x0008, 0x1140), item.len() as u32), item].concat();
+        let e = check_lengths(&file(IMPLICIT_LE, &data_set), true).unwrap_err();
+        assert!(
+            e.contains("element (0008,1150) at byte 186 declares 4294967280"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn oversize_pixel_fragments_and_meta_elements_are_refused() {
+        // Encapsulated pixel data: an empty offset table, then a fragment of 0x7FFFFFF0 bytes.
+        let data_set = [
+            name(),
+            explicit(PIXEL_DATA, b"OB", UNDEFINED, &[]),
+            header(ITEM, 0),
+            header(ITEM, 0x7FFF_FFF0),
+            vec![0; 6],
+        ]
+        .concat();
+        let e = check_lengths(&file("1.2.840.10008.1.2.4.50", &data_set), true).unwrap_err();
+        assert!(
+            e.contains(
+                "a fragment of pixel data (7FE0,0010) at byte 206 declares 2147483632 bytes"
+            ),
+            "{e}"
+        );
+        // A meta group UID written with a 32-bit length (dicom-object reads it whole).
+        let mut bytes = vec![0u8; 128];
+        bytes.extend(b"DICM");
+        bytes.extend(explicit((0x0002, 0x0000), b"UL", 4, &20u32.to_le_bytes()));
+        bytes.extend(explicit((0x0002, 0x0010), b"UN", 0xFFFF_FFF0, b"1.2."));
+        let e = check_lengths(&bytes, true).unwrap_err();
+        assert!(
+            e.contains("file meta element (0002,0010) at byte 144 declares 4294967280"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn deep_nesting_and_deflated_data_sets_are_refused() {
+        let level = [
+            explicit((0x0008, 0x1140), b"SQ", UNDEFINED, &[]),
+            header(ITEM, UNDEFINED),
+        ]
+        .concat();
+        let e =
+            check_lengths(&file(EXPLICIT_LE, &level.repeat(MAX_NESTING + 1)), true).unwrap_err();
+        assert!(e.contains("nested more than 32 deep"), "{e}");
+        assert!(check_lengths(&file(EXPLICIT_LE, &level.repeat(MAX_NESTING)), true).is_ok());
+        let e = check_lengths(&file("1.2.840.10008.1.2.1.99", &name()), true).unwrap_err();
+        assert!(e.contains("deflated data set is not read"), "{e}");
+    }
+
+    #[test]
+    fn well_formed_structure_passes_the_scan() {
+        // Sequences closed by delimiters and by their lengths, an empty item, a stray item
+        // delimiter at the top level, encapsulated pixel data with two fragments, odd lengths.
+        let item = [header(ITEM, 12), name()].concat();
+        let data_set = [
+            name(),
+            explicit((0x0008, 0x1140), b"SQ", UNDEFINED, &[]),
+            header(ITEM, UNDEFINED),
+            name(),
+            header(ITEM_END, 0),
+            header(ITEM, 0),
+            header(SEQUENCE_END, 0),
+            explicit((0x0008, 0x1115), b"SQ", item.len() as u32, &item),
+            explicit((0x0008, 0x1120), b"SQ", 0, &[]),
+            header(ITEM_END, 0),
+            explicit((0x0010, 0x0020), b"LO", 3, b"abc"),
+            explicit(PIXEL_DATA, b"OB", UNDEFINED, &[]),
+            header(ITEM, 4),
+            vec![0; 4],
+            header(ITEM, 6),
+            vec![7; 6],
+            header(SEQUENCE_END, 0),
+        ]
+        .concat();
+        for ts in [EXPLICIT_LE, "1.2.840.10008.1.2.4.50"] {
+            check_lengths(&file(ts, &data_set), true).unwrap();
+        }
+        // A header-only read stops at the pixel data: a truncated PixelData passes it.
+        let cut = [name(), explicit(PIXEL_DATA, b"OW", 1 << 20, &[0; 8])].concat();
+        assert!(check_lengths(&file(EXPLICIT_LE, &cut), true).is_err());
+        check_lengths(&file(EXPLICIT_LE, &cut), false).unwrap();
+        // Not DICOM, or a broken meta group: left to dicom-object.
+        check_lengths(b"not a dicom file", true).unwrap();
+        // The fuzz seeds (real files written by dicom-object) pass.
+        for seed in ["slice.dcm", "multiframe.dcm"] {
+            let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("fuzz/seeds/dicom")
+                .join(seed);
+            check_lengths(&std::fs::read(path).unwrap(), true).unwrap();
+        }
+    }
 }

@@ -1,7 +1,7 @@
 //! Volume file formats: raw (dimensions, type, endianness, spacing given), NRRD (raw and gzip
-//! encodings, attached or detached data), VolPack `.den`, MetaImage, NIfTI-1 and DICOM series
-//! (features `nifti`, `dicom`). Headers are validated and sizes
-//! checked against the file before anything large is allocated.
+//! encodings, attached or detached data), VolPack `.den`, MetaImage, NIfTI-1, DICOM series and
+//! VTK image data (`.vti`, legacy `.vtk`) (features `nifti`, `dicom`, `vti`). Headers are
+//! validated and sizes checked against the file before anything large is allocated.
 
 mod den;
 #[cfg(feature = "dicom")]
@@ -11,6 +11,10 @@ mod metaimage;
 mod nifti;
 mod nrrd;
 mod raw;
+#[cfg(feature = "vti")]
+mod vti;
+#[cfg(feature = "vti")]
+mod vtk_legacy;
 
 pub use den::{load_den, parse_den};
 #[cfg(feature = "dicom")]
@@ -20,6 +24,10 @@ pub use metaimage::{load_metaimage, parse_metaimage};
 pub use nifti::{load_nifti, parse_nifti};
 pub use nrrd::{load_nrrd, parse_nrrd};
 pub use raw::{load_raw, parse_raw, RawSpec};
+#[cfg(feature = "vti")]
+pub use vti::{load_vti, parse_vti};
+#[cfg(feature = "vti")]
+pub use vtk_legacy::{load_vtk, parse_vtk};
 
 use std::path::Path;
 
@@ -136,10 +144,10 @@ pub(crate) fn format_error(path: &Path, reason: impl Into<String>) -> Error {
 
 /// Load a volume file of any format this build reads ([`crate::formats`]: NRRD `.nrrd`/`.nhdr`,
 /// VolPack `.den`, MetaImage `.mha`/`.mhd`, NIfTI-1 `.nii`/`.nii.gz` with the `nifti` feature,
-/// a DICOM series — a folder or one of its files — with the `dicom` feature),
-/// told by its first bytes, else its extension. Raw files need their
-/// dimensions and sample type ([`load_raw`]); a file of another kind is refused naming the
-/// command that reads it.
+/// a DICOM series — a folder or one of its files — with the `dicom` feature, VTK image data
+/// `.vti`/`.vtk` with the `vti` feature), told by its first bytes, else its extension. Raw
+/// files need their dimensions and sample type ([`load_raw`]); a file of another kind is
+/// refused naming the command that reads it.
 pub fn load_any(path: &Path) -> Result<Volume> {
     use crate::formats::{expect, DataKind, Format};
     // A folder is a DICOM series (the only format stored as one).
@@ -155,9 +163,28 @@ pub fn load_any(path: &Path) -> Result<Volume> {
         Format::Dicom => load_dicom(path),
         #[cfg(feature = "nifti")]
         Format::Nifti => load_nifti(path),
+        #[cfg(feature = "vti")]
+        Format::Vtk => load_vtk_image(path),
         _ => Err(format_error(
             path,
             "raw voxels need their dimensions and sample type (RawSpec, load_raw)",
         )),
+    }
+}
+
+/// A VTK image data file: legacy (`# vtk DataFile` first) or XML, else by its extension.
+#[cfg(feature = "vti")]
+fn load_vtk_image(path: &Path) -> Result<Volume> {
+    let bytes = crate::file::read_bounded(path, crate::file::MAX_TEXT_BYTES, "the VTK limit")?;
+    let head = &bytes[..bytes.len().min(1024)];
+    let legacy = head.starts_with(b"# vtk DataFile")
+        || !head.windows(8).any(|w| w == b"<VTKFile")
+            && path
+                .extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("vtk"));
+    if legacy {
+        parse_vtk(&bytes, path)
+    } else {
+        parse_vti(&bytes, path)
     }
 }

@@ -48,7 +48,7 @@ impl State {
         self.method = (self.method + 1) % self.methods.len();
         if self.renderers[self.method].is_none() {
             let method = self.methods[self.method];
-            let options = super::options(method);
+            let options = self.scene.options(method);
             let renderer = AnyRenderer::new(&self.ctx.device, &self.scene.scene, &options)?;
             self.renderers[self.method] = Some(renderer);
         }

@@ -1,0 +1,494 @@
+//! The Gaussian renderers (docs/GAUSSIANS.md): the single pass, the N-pass (the oracle) and the
+//! single view, all from one splat stage (`wgsl/gaussians/splat.wgsl`) over one depth sort
+//! ([`sort`]). Each blends back to front with dual-source blending into an RGBA16F target
+//! cleared to the background: per channel exactly graphdeco's front-to-back sum, except that
+//! blending cannot stop where transmittance falls below 1e-4 (what it would have dropped
+//! weighs less than 1e-4).
+
+mod sort;
+
+pub use sort::SortOn;
+
+use bytemuck::{Pod, Zeroable};
+
+use super::scene::GaussianScene;
+use crate::camera::CameraModel;
+use crate::error::{Error, Result};
+use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
+use crate::render::composite::Compositor;
+use crate::render::pass_params::PassParams;
+use crate::render::pipeline::{
+    begin_pass, bind_group_layout, cleared, compilation, draw_fullscreen, fullscreen_pipeline,
+    pipeline_layout, storage_entry,
+};
+use crate::render::pipeline_cache::PipelineCache;
+use crate::render::specialize::Specialization;
+use crate::render::texture::{texture_2d_reusing, Texture2d};
+use crate::render::view_layers::ViewLayers;
+use crate::render::{begin_prepare, prepared_state, Method, Prepared, Renderer};
+use crate::target::{SpatialTarget, SPATIAL_FORMAT};
+
+/// Accumulation format: float, so thousands of blended Gaussians don't quantise.
+const ACCUMULATION_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
+
+/// How the Gaussian renderers work where there is a choice.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct GaussianOptions {
+    /// Where the depth sort runs.
+    pub sort: SortOn,
+}
+
+/// Per-pass constants. Keep in sync with `struct GaussianParams` in
+/// `wgsl/gaussians/shared/gaussian.wgsl`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub(crate) struct GaussianParams {
+    camera_world: [f32; 4],
+    right_world: [f32; 4],
+    offsets: [f32; 4],
+    count: u32,
+    coefficients: u32,
+    fixed_view: u32,
+    _pad: u32,
+}
+const _: () = assert!(std::mem::size_of::<GaussianParams>() == 64);
+crate::shader::gpu_layout!(
+    GaussianParams,
+    "GaussianParams",
+    [
+        camera_world,
+        right_world,
+        offsets,
+        count,
+        coefficients,
+        fixed_view
+    ]
+);
+
+#[cfg(test)]
+pub(crate) const GAUSSIAN_PARAMS_LAYOUT: crate::shader::GpuLayout = GaussianParams::GPU_LAYOUT;
+#[cfg(test)]
+pub(crate) const SORT_STEP_LAYOUT: crate::shader::GpuLayout = sort::SortStep::GPU_LAYOUT;
+
+impl GaussianParams {
+    /// The constants of a pass over `frame` covering the offsets `lo..=hi`; `fixed`: every
+    /// channel shows the view at that offset.
+    fn new(scene: &GaussianScene, frame: &Frame, lo: f32, hi: f32, fixed: Option<f32>) -> Self {
+        let world_from_eye = frame.camera.eye_from_world.inverse();
+        let camera = world_from_eye.transform_point3(glam::Vec3::ZERO);
+        let right = world_from_eye.transform_vector3(glam::Vec3::X).normalize();
+        Self {
+            camera_world: camera.extend(1.0).to_array(),
+            right_world: right.extend(0.0).to_array(),
+            offsets: [lo, hi, fixed.unwrap_or(0.0), 0.0],
+            count: scene.count,
+            coefficients: scene.coefficients(),
+            fixed_view: fixed.is_some() as u32,
+            _pad: 0,
+        }
+    }
+}
+
+/// What a frame needs prepared.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct PreparedFor {
+    spec: Specialization,
+    size: [u32; 2],
+    view_size: [u32; 2],
+    count: u32,
+}
+
+/// What `prepare` made: the accumulation target (single pass, single view) or the view layers
+/// (N-pass), and the sort's scratch.
+struct Made {
+    accumulation: Option<Texture2d>,
+    layers: Option<ViewLayers>,
+}
+
+/// 3D Gaussian splats by [`Method::SinglePass`], [`Method::NPass`] or [`Method::SingleView`].
+pub struct GaussianSplatter {
+    method: Method,
+    frame: FrameBinding,
+    views_frame: FrameBinding,
+    scene_layout: wgpu::BindGroupLayout,
+    splat_layout: wgpu::BindGroupLayout,
+    accumulated_layout: wgpu::BindGroupLayout,
+    pipelines: PipelineCache<Specialization, wgpu::RenderPipeline>,
+    resolve: wgpu::RenderPipeline,
+    compositor: Compositor,
+    sort: sort::DepthSort,
+    params: PassParams<GaussianParams>,
+    prepared: Option<Prepared<PreparedFor, Made>>,
+    crop: crate::render::camera_crop::CameraCrop,
+}
+
+impl GaussianSplatter {
+    /// Needs `DUAL_SOURCE_BLENDING` (one α per channel). The duplication methods and the warp
+    /// are not Gaussian methods (refused with the reason).
+    pub fn new(device: &wgpu::Device, method: Method, options: GaussianOptions) -> Result<Self> {
+        match method {
+            Method::SinglePass | Method::NPass | Method::SingleView => {}
+            other => {
+                return Err(Error::invalid(
+                    "method",
+                    format!(
+                        "{other}: Gaussian splats render by single-pass, n-pass or single-view"
+                    ),
+                ))
+            }
+        }
+        crate::gpu::require_features(
+            device,
+            wgpu::Features::DUAL_SOURCE_BLENDING,
+            "Gaussian splats (one α per subpixel)",
+            "use an adapter with dual-source blending",
+        )?;
+        let frame_layout = frame_bind_group_layout(device);
+        let fragment = wgpu::ShaderStages::VERTEX_FRAGMENT | wgpu::ShaderStages::COMPUTE;
+        let scene_entries = [
+            storage_entry(0, true, fragment),
+            storage_entry(1, true, fragment),
+            PassParams::<GaussianParams>::layout_entry(2, fragment),
+        ];
+        let scene_layout = bind_group_layout(device, "gaussian scene", &scene_entries);
+        let mut splat_entries = scene_entries.to_vec();
+        splat_entries.push(storage_entry(3, true, wgpu::ShaderStages::VERTEX));
+        let splat_layout = bind_group_layout(device, "gaussian splats", &splat_entries);
+        let accumulated_layout = bind_group_layout(
+            device,
+            "gaussian accumulation",
+            &[wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::FRAGMENT,
+                ty: wgpu::BindingType::Texture {
+                    sample_type: wgpu::TextureSampleType::Float { filterable: false },
+                    view_dimension: wgpu::TextureViewDimension::D2,
+                    multisampled: false,
+                },
+                count: None,
+            }],
+        );
+        let module = crate::shader::module(device, "gaussians/resolve.wgsl")?;
+        let resolve = crate::gpu::checked(device, "building the Gaussian resolve", || {
+            fullscreen_pipeline(
+                device,
+                "gaussian resolve",
+                &module,
+                &[Some(&frame_layout), Some(&accumulated_layout)],
+                SPATIAL_FORMAT,
+            )
+        })?;
+        Ok(Self {
+            method,
+            frame: FrameBinding::new(device, &frame_layout),
+            views_frame: FrameBinding::new(device, &frame_layout),
+            compositor: Compositor::new(device, &frame_layout)?,
+            sort: sort::DepthSort::new(device, options.sort, &frame_layout, &scene_layout)?,
+            scene_layout,
+            splat_layout,
+            accumulated_layout,
+            pipelines: PipelineCache::new("Gaussian splat"),
+            resolve,
+            params: PassParams::new(device, "gaussian params"),
+            prepared: None,
+            crop: crate::render::camera_crop::CameraCrop::new(device)?,
+        })
+    }
+
+    fn ensure_pipeline(&mut self, device: &wgpu::Device, spec: Specialization) -> Result<()> {
+        let frame_layout = frame_bind_group_layout(device);
+        let splat_layout = &self.splat_layout;
+        let constants = spec.constants(&[]);
+        let options = compilation(&constants);
+        let over = wgpu::BlendComponent {
+            src_factor: wgpu::BlendFactor::One,
+            dst_factor: wgpu::BlendFactor::OneMinusSrc1,
+            operation: wgpu::BlendOperation::Add,
+        };
+        self.pipelines.prepare(device, spec, |modules| {
+            let layout = pipeline_layout(
+                device,
+                "gaussian splats",
+                &[Some(&frame_layout), Some(splat_layout)],
+            );
+            let module = modules.get(device, "gaussians/splat.wgsl")?;
+            Ok(
+                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                    label: Some("gaussian splats"),
+                    layout: Some(&layout),
+                    vertex: wgpu::VertexState {
+                        module: &module,
+                        entry_point: Some("vs_main"),
+                        compilation_options: options.clone(),
+                        buffers: &[],
+                    },
+                    primitive: wgpu::PrimitiveState::default(),
+                    depth_stencil: None,
+                    multisample: Default::default(),
+                    fragment: Some(wgpu::FragmentState {
+                        module: &module,
+                        entry_point: Some("fs_main"),
+                        compilation_options: options,
+                        targets: &[Some(wgpu::ColorTargetState {
+                            format: ACCUMULATION_FORMAT,
+                            blend: Some(wgpu::BlendState {
+                                color: over,
+                                alpha: over,
+                            }),
+                            write_mask: wgpu::ColorWrites::ALL,
+                        })],
+                    }),
+                    multiview_mask: None,
+                    cache: None,
+                }),
+            )
+        })?;
+        Ok(())
+    }
+
+    fn key(&self, scene: &GaussianScene, frame: &Frame) -> PreparedFor {
+        PreparedFor {
+            spec: Specialization::of(frame),
+            size: frame.size,
+            view_size: frame.view_size(),
+            count: scene.count,
+        }
+    }
+
+    /// The per-view layers of the last N-pass frame (for per-view outputs and tests).
+    pub fn view_layers(&self) -> Option<&ViewLayers> {
+        self.prepared.as_ref().and_then(|p| p.made.layers.as_ref())
+    }
+
+    /// The depth order of the last frame's sort read back (tests: the order the views share).
+    pub fn last_order(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        scene: &GaussianScene,
+    ) -> Result<Vec<u32>> {
+        self.sort.read_order(device, queue, scene.count)
+    }
+
+    /// Draw every Gaussian, in the sorted order, into `target` (cleared to the background).
+    fn draw(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        draw: &Draw,
+        target: &wgpu::TextureView,
+    ) -> Result<()> {
+        let clear = cleared(target, draw.background);
+        let mut pass = begin_pass(encoder, "gaussian splats", clear, None);
+        pass.set_pipeline(self.pipelines.get(&draw.spec)?);
+        pass.set_bind_group(0, &draw.frame.bind_group, &[]);
+        pass.set_bind_group(1, draw.group, &[draw.offset]);
+        pass.draw(0..6, 0..draw.count);
+        Ok(())
+    }
+}
+
+/// One draw of every Gaussian: the frame's constants, the scene's bind group at a pass's
+/// constants, the pipelines' key.
+struct Draw<'a> {
+    frame: &'a FrameBinding,
+    background: [f32; 4],
+    group: &'a wgpu::BindGroup,
+    offset: u32,
+    spec: Specialization,
+    count: u32,
+}
+
+impl Renderer<GaussianScene> for GaussianSplatter {
+    fn prepare(
+        &mut self,
+        device: &wgpu::Device,
+        _queue: &wgpu::Queue,
+        scene: &GaussianScene,
+        frame: &Frame,
+    ) -> Result<()> {
+        let last = self.prepared.take().map(|p| p.made);
+        begin_prepare(device, frame, &mut self.prepared)?;
+        if frame.camera.model == CameraModel::ToeIn && frame.camera.separation != 0.0 {
+            return Err(Error::invalid(
+                "camera model",
+                "toe-in: turned cameras see the Gaussians at different depths, so no one sort \
+                 serves every view; Gaussian splats use skewed or parallel cameras",
+            ));
+        }
+        if self.method != Method::NPass {
+            frame.check_full_views("the Gaussians' single pass and single view")?;
+        }
+        let key = self.key(scene, frame);
+        self.ensure_pipeline(device, key.spec)?;
+        self.sort.prepare(device, scene)?;
+        let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
+        let (last_accumulation, last_layers) = match last {
+            Some(m) => (m.accumulation, m.layers),
+            None => (None, None),
+        };
+        let made = match self.method {
+            Method::NPass => {
+                let fits =
+                    |l: &ViewLayers| l.size() == key.view_size && l.layers() == frame.camera.views;
+                let layers = match last_layers {
+                    Some(l) if fits(&l) => l,
+                    last => {
+                        drop(last);
+                        ViewLayers::with_format(
+                            device,
+                            "Gaussian view layers",
+                            key.view_size,
+                            frame.camera.views,
+                            ACCUMULATION_FORMAT,
+                            wgpu::TextureUsages::empty(),
+                        )?
+                    }
+                };
+                drop(last_accumulation);
+                Made {
+                    accumulation: None,
+                    layers: Some(layers),
+                }
+            }
+            _ => {
+                drop(last_layers);
+                let accumulation = texture_2d_reusing(
+                    last_accumulation,
+                    device,
+                    "gaussian accumulation",
+                    frame.size,
+                    ACCUMULATION_FORMAT,
+                    usage,
+                )?;
+                Made {
+                    accumulation: Some(accumulation),
+                    layers: None,
+                }
+            }
+        };
+        self.prepared = Some(Prepared { key, made });
+        Ok(())
+    }
+
+    fn encode(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        scene: &GaussianScene,
+        frame: &Frame,
+        target: &SpatialTarget,
+    ) -> Result<()> {
+        let wanted = self.key(scene, frame);
+        crate::render::check_target(frame, target)?;
+        prepared_state("GaussianSplatter", &self.prepared, &wanted)?;
+        let camera = &frame.camera;
+        let spread = camera.max_offset();
+        let passes: Vec<GaussianParams> = match self.method {
+            Method::SinglePass => vec![GaussianParams::new(scene, frame, -spread, spread, None)],
+            Method::SingleView => vec![GaussianParams::new(scene, frame, 0.0, 0.0, Some(0.0))],
+            _ => (0..camera.views)
+                .map(|v| {
+                    let vd = camera.view_offset(v);
+                    GaussianParams::new(scene, frame, vd, vd, Some(vd))
+                })
+                .collect(),
+        };
+        self.params.write(device, &passes);
+        self.frame.write(device, frame);
+        let bind = |layout: &wgpu::BindGroupLayout, order: Option<&wgpu::Buffer>| {
+            let mut entries = vec![
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: scene.geometry.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: scene.sh.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: self.params.binding(),
+                },
+            ];
+            if let Some(order) = order {
+                entries.push(wgpu::BindGroupEntry {
+                    binding: 3,
+                    resource: order.as_entire_binding(),
+                });
+            }
+            device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("gaussians"),
+                layout,
+                entries: &entries,
+            })
+        };
+        let scene_group = bind(&self.scene_layout, None);
+        let order = self
+            .sort
+            .encode(device, encoder, scene, frame, &self.frame, &scene_group)?;
+        let splat_group = bind(&self.splat_layout, Some(&order));
+        let spec = wanted.spec;
+        let made = &prepared_state("GaussianSplatter", &self.prepared, &wanted)?.made;
+        let background = frame.background;
+        match (&made.accumulation, &made.layers) {
+            (_, Some(layers)) if self.method == Method::NPass => {
+                let views = frame.for_view_images();
+                self.views_frame.write(device, &views);
+                for v in 0..camera.views {
+                    let draw = Draw {
+                        frame: &self.views_frame,
+                        background,
+                        group: &splat_group,
+                        offset: self.params.offset(v as usize),
+                        spec,
+                        count: scene.count,
+                    };
+                    self.draw(encoder, &draw, &layers.layer_views[v as usize])?;
+                }
+                self.compositor.encode(
+                    device,
+                    encoder,
+                    &self.frame,
+                    &layers.array_view,
+                    layers.size(),
+                    target,
+                );
+            }
+            (Some(accumulation), _) => {
+                let draw = Draw {
+                    frame: &self.frame,
+                    background,
+                    group: &splat_group,
+                    offset: self.params.offset(0),
+                    spec,
+                    count: scene.count,
+                };
+                self.draw(encoder, &draw, &accumulation.view)?;
+                let accumulated = device.create_bind_group(&wgpu::BindGroupDescriptor {
+                    label: Some("gaussian accumulation"),
+                    layout: &self.accumulated_layout,
+                    entries: &[wgpu::BindGroupEntry {
+                        binding: 0,
+                        resource: wgpu::BindingResource::TextureView(&accumulation.view),
+                    }],
+                });
+                draw_fullscreen(
+                    encoder,
+                    "gaussian resolve",
+                    &self.resolve,
+                    &[&self.frame.bind_group, &accumulated],
+                    &target.view,
+                );
+            }
+            _ => {
+                return Err(Error::NotPrepared {
+                    renderer: "GaussianSplatter",
+                    frame: format!("{wanted:?}"),
+                    prepared: "no target for this method".into(),
+                })
+            }
+        }
+        self.crop.encode(device, encoder, frame, target);
+        Ok(())
+    }
+}
