@@ -244,3 +244,27 @@ fn methods_without_a_gaussian_path_are_refused_by_name() {
         );
     }
 }
+
+#[test]
+fn the_tiled_quilt_matches_the_npass() {
+    let g = scene(80, 17);
+    let gpu = upload(&g);
+    let mut tiled = splatter(Method::Tiled, SortOn::Gpu);
+    let mut npass = splatter(Method::NPass, SortOn::Gpu);
+    for scale in [1.0, 0.5] {
+        let mut frame = frame_for(&g, "slanted:45,7.5,1/6,0.2", CameraModel::Skewed);
+        frame.view_scale = [scale; 2];
+        let a = common::render(&mut tiled, &gpu, &frame);
+        let b = common::render(&mut npass, &gpu, &frame);
+        let diff = compare(&a, &b).unwrap();
+        eprintln!("tiled at view scale {scale}: {diff:?}");
+        assert!(diff.psnr_db >= 40.0, "view scale {scale}: {diff:?}");
+        // The quilt holds every view in its tile.
+        let layout = &tiled
+            .atlas()
+            .expect("the tiled method renders a quilt")
+            .layout;
+        assert_eq!(layout.views, 45);
+        assert_eq!(layout.tile, frame.view_size());
+    }
+}

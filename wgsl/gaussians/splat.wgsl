@@ -3,7 +3,8 @@
 // between the offsets params.offsets.xy; every subpixel evaluates it for its own view — 2D mean
 // and covariance through that view's Jacobian, SH colour along that view's direction — and
 // blends it "over" what lies behind with its own α (dual-source blending: one α per channel).
-// With params.fixed_view every channel shows the view at params.offsets.z (N-pass, single view).
+// With params.fixed_view every channel shows the view at params.offsets.z (N-pass, single view,
+// and the tiles of a quilt, drawn with the tile as the viewport).
 // Accumulates in an RGBA16F target cleared to the background (gaussians/resolve.wgsl copies it).
 enable dual_source_blending;
 #import shared/frame.wgsl
@@ -87,7 +88,9 @@ fn view_splat(in: SplatOut, vd: f32, px: vec2<f32>) -> vec4<f32> {
 
 @fragment
 fn fs_main(in: SplatOut) -> BlendOut {
-    let px = vec2<u32>(in.position.xy);
+    // The pixel in the view image (a quilt tile's pixels start at its origin).
+    let at = in.position.xy - params.tile.xy;
+    let px = vec2<u32>(at);
     var color = vec3<f32>(0.0);
     var alpha = vec3<f32>(0.0);
     if (params.fixed_view != 0u || VIEWS_PER_PIXEL == 1u) {
@@ -95,12 +98,12 @@ fn fs_main(in: SplatOut) -> BlendOut {
         if (params.fixed_view == 0u) {
             vd = view_offset(ray_view(px, 0u));
         }
-        let s = view_splat(in, vd, in.position.xy);
+        let s = view_splat(in, vd, at);
         color = s.rgb;
         alpha = vec3<f32>(s.a);
     } else {
         for (var k = 0u; k < 3u; k++) {
-            let s = view_splat(in, view_offset(ray_view(px, k)), in.position.xy);
+            let s = view_splat(in, view_offset(ray_view(px, k)), at);
             color[k] = s[k];
             alpha[k] = s.a;
         }

@@ -15,6 +15,7 @@ use super::scene::GaussianScene;
 use crate::camera::CameraModel;
 use crate::error::{Error, Result};
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
+use crate::render::atlas::{Atlas, AtlasCompositor, TileSampling};
 use crate::render::composite::Compositor;
 use crate::render::pass_params::PassParams;
 use crate::render::pipeline::{
@@ -22,10 +23,11 @@ use crate::render::pipeline::{
     pipeline_layout, storage_entry,
 };
 use crate::render::pipeline_cache::PipelineCache;
+use crate::render::quilt::QuiltLayout;
 use crate::render::specialize::Specialization;
 use crate::render::texture::{texture_2d_reusing, Texture2d};
 use crate::render::view_layers::ViewLayers;
-use crate::render::{begin_prepare, prepared_state, Method, Prepared, Renderer};
+use crate::render::{begin_prepare, prepared_state, Made as _, Method, Prepared, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 
 /// Accumulation format: float, so thousands of blended Gaussians don't quantise.
@@ -46,12 +48,13 @@ pub(crate) struct GaussianParams {
     camera_world: [f32; 4],
     right_world: [f32; 4],
     offsets: [f32; 4],
+    tile: [f32; 4],
     count: u32,
     coefficients: u32,
     fixed_view: u32,
     _pad: u32,
 }
-const _: () = assert!(std::mem::size_of::<GaussianParams>() == 64);
+const _: () = assert!(std::mem::size_of::<GaussianParams>() == 80);
 crate::shader::gpu_layout!(
     GaussianParams,
     "GaussianParams",
@@ -81,6 +84,7 @@ impl GaussianParams {
             camera_world: camera.extend(1.0).to_array(),
             right_world: right.extend(0.0).to_array(),
             offsets: [lo, hi, fixed.unwrap_or(0.0), 0.0],
+            tile: [0.0; 4],
             count: scene.count,
             coefficients: scene.coefficients(),
             fixed_view: fixed.is_some() as u32,
@@ -98,14 +102,17 @@ struct PreparedFor {
     count: u32,
 }
 
-/// What `prepare` made: the accumulation target (single pass, single view) or the view layers
-/// (N-pass), and the sort's scratch.
+/// What `prepare` made: the accumulation target (single pass, single view; the tiled method's
+/// is quilt-sized), the view layers (N-pass) or the quilt atlas (tiled).
 struct Made {
     accumulation: Option<Texture2d>,
     layers: Option<ViewLayers>,
+    atlas: Option<Atlas>,
 }
 
-/// 3D Gaussian splats by [`Method::SinglePass`], [`Method::NPass`] or [`Method::SingleView`].
+/// 3D Gaussian splats by [`Method::SinglePass`], [`Method::NPass`], [`Method::SingleView`] or
+/// [`Method::Tiled`] (every view into its tile of a quilt, as Looking Glass's splat tools do,
+/// then interleaved).
 pub struct GaussianSplatter {
     method: Method,
     frame: FrameBinding,
@@ -116,6 +123,7 @@ pub struct GaussianSplatter {
     pipelines: PipelineCache<Specialization, wgpu::RenderPipeline>,
     resolve: wgpu::RenderPipeline,
     compositor: Compositor,
+    atlas_compositor: AtlasCompositor,
     sort: sort::DepthSort,
     params: PassParams<GaussianParams>,
     prepared: Option<Prepared<PreparedFor, Made>>,
@@ -127,12 +135,13 @@ impl GaussianSplatter {
     /// are not Gaussian methods (refused with the reason).
     pub fn new(device: &wgpu::Device, method: Method, options: GaussianOptions) -> Result<Self> {
         match method {
-            Method::SinglePass | Method::NPass | Method::SingleView => {}
+            Method::SinglePass | Method::NPass | Method::SingleView | Method::Tiled => {}
             other => {
                 return Err(Error::invalid(
                     "method",
                     format!(
-                        "{other}: Gaussian splats render by single-pass, n-pass or single-view"
+                        "{other}: Gaussian splats render by single-pass, n-pass, single-view or \
+                         tiled (a quilt)"
                     ),
                 ))
             }
@@ -183,6 +192,7 @@ impl GaussianSplatter {
             frame: FrameBinding::new(device, &frame_layout),
             views_frame: FrameBinding::new(device, &frame_layout),
             compositor: Compositor::new(device, &frame_layout)?,
+            atlas_compositor: AtlasCompositor::new(device, &frame_layout)?,
             sort: sort::DepthSort::new(device, options.sort, &frame_layout, &scene_layout)?,
             scene_layout,
             splat_layout,
@@ -270,6 +280,57 @@ impl GaussianSplatter {
         self.sort.read_order(device, queue, scene.count)
     }
 
+    /// Copy the accumulation (composited over the background) into `target` (RGBA8).
+    fn resolve(
+        &self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        accumulation: &Texture2d,
+        target: &wgpu::TextureView,
+    ) {
+        let accumulated = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("gaussian accumulation"),
+            layout: &self.accumulated_layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: wgpu::BindingResource::TextureView(&accumulation.view),
+            }],
+        });
+        draw_fullscreen(
+            encoder,
+            "gaussian resolve",
+            &self.resolve,
+            &[&self.frame.bind_group, &accumulated],
+            target,
+        );
+    }
+
+    /// Every view into its tile of the quilt-sized `accumulation` (cleared once to the
+    /// background), each tile its own viewport and scissor and its pass's constants (`draw`'s
+    /// offset is not used).
+    fn draw_tiles(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        draw: &Draw,
+        atlas: &Atlas,
+        accumulation: &Texture2d,
+    ) -> Result<()> {
+        let clear = cleared(&accumulation.view, draw.background);
+        let mut pass = begin_pass(encoder, "gaussian quilt", clear, None);
+        pass.set_pipeline(self.pipelines.get(&draw.spec)?);
+        pass.set_bind_group(0, &draw.frame.bind_group, &[]);
+        let layout = &atlas.layout;
+        for v in 0..layout.views {
+            let [x, y] = layout.tile_origin(v);
+            let [w, h] = layout.tile;
+            pass.set_viewport(x as f32, y as f32, w as f32, h as f32, 0.0, 1.0);
+            pass.set_scissor_rect(x, y, w, h);
+            pass.set_bind_group(1, draw.group, &[self.params.offset(v as usize)]);
+            pass.draw(0..6, 0..draw.count);
+        }
+        Ok(())
+    }
+
     /// Draw every Gaussian, in the sorted order, into `target` (cleared to the background).
     fn draw(
         &self,
@@ -315,21 +376,25 @@ impl Renderer<GaussianScene> for GaussianSplatter {
                  serves every view; Gaussian splats use skewed or parallel cameras",
             ));
         }
-        if self.method != Method::NPass {
-            frame.check_full_views("the Gaussians' single pass and single view")?;
+        match self.method {
+            Method::SinglePass => frame.check_full_views("Gaussian single-pass")?,
+            Method::SingleView => frame.check_full_views("Gaussian single-view")?,
+            _ => {}
         }
         let key = self.key(scene, frame);
         self.ensure_pipeline(device, key.spec)?;
         self.sort.prepare(device, scene)?;
         let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
-        let (last_accumulation, last_layers) = match last {
-            Some(m) => (m.accumulation, m.layers),
-            None => (None, None),
+        let (last_accumulation, last_layers, last_atlas) = match last {
+            Some(m) => (m.accumulation, m.layers, m.atlas),
+            None => (None, None, None),
         };
         let made = match self.method {
             Method::NPass => {
                 let fits =
                     |l: &ViewLayers| l.size() == key.view_size && l.layers() == frame.camera.views;
+                drop(last_accumulation);
+                drop(last_atlas);
                 let layers = match last_layers {
                     Some(l) if fits(&l) => l,
                     last => {
@@ -344,14 +409,39 @@ impl Renderer<GaussianScene> for GaussianSplatter {
                         )?
                     }
                 };
-                drop(last_accumulation);
                 Made {
                     accumulation: None,
                     layers: Some(layers),
+                    atlas: None,
+                }
+            }
+            Method::Tiled => {
+                drop(last_layers);
+                let layout = QuiltLayout::for_views(frame.camera.views, key.view_size);
+                let atlas = match last_atlas {
+                    Some(atlas) if atlas.fits(&layout, false) => atlas,
+                    last => {
+                        drop(last);
+                        Atlas::new(device, layout, false)?
+                    }
+                };
+                let accumulation = texture_2d_reusing(
+                    last_accumulation,
+                    device,
+                    "gaussian quilt accumulation",
+                    layout.size(),
+                    ACCUMULATION_FORMAT,
+                    usage,
+                )?;
+                Made {
+                    accumulation: Some(accumulation),
+                    layers: None,
+                    atlas: Some(atlas),
                 }
             }
             _ => {
                 drop(last_layers);
+                drop(last_atlas);
                 let accumulation = texture_2d_reusing(
                     last_accumulation,
                     device,
@@ -363,6 +453,7 @@ impl Renderer<GaussianScene> for GaussianSplatter {
                 Made {
                     accumulation: Some(accumulation),
                     layers: None,
+                    atlas: None,
                 }
             }
         };
@@ -386,12 +477,20 @@ impl Renderer<GaussianScene> for GaussianSplatter {
         let passes: Vec<GaussianParams> = match self.method {
             Method::SinglePass => vec![GaussianParams::new(scene, frame, -spread, spread, None)],
             Method::SingleView => vec![GaussianParams::new(scene, frame, 0.0, 0.0, Some(0.0))],
-            _ => (0..camera.views)
-                .map(|v| {
-                    let vd = camera.view_offset(v);
-                    GaussianParams::new(scene, frame, vd, vd, Some(vd))
-                })
-                .collect(),
+            _ => {
+                let layout = QuiltLayout::for_views(camera.views, frame.view_size());
+                (0..camera.views)
+                    .map(|v| {
+                        let vd = camera.view_offset(v);
+                        let mut params = GaussianParams::new(scene, frame, vd, vd, Some(vd));
+                        if self.method == Method::Tiled {
+                            let [x, y] = layout.tile_origin(v);
+                            params.tile = [x as f32, y as f32, 0.0, 0.0];
+                        }
+                        params
+                    })
+                    .collect()
+            }
         };
         self.params.write(device, &passes);
         self.frame.write(device, frame);
@@ -454,6 +553,29 @@ impl Renderer<GaussianScene> for GaussianSplatter {
                     target,
                 );
             }
+            (Some(accumulation), _) if self.method == Method::Tiled => {
+                let atlas = made.atlas.made("GaussianSplatter quilt atlas")?;
+                let views = frame.for_view_images();
+                self.views_frame.write(device, &views);
+                let draw = Draw {
+                    frame: &self.views_frame,
+                    background,
+                    group: &splat_group,
+                    offset: 0,
+                    spec,
+                    count: scene.count,
+                };
+                self.draw_tiles(encoder, &draw, atlas, accumulation)?;
+                self.resolve(device, encoder, accumulation, &atlas.color.view);
+                self.atlas_compositor.encode(
+                    device,
+                    encoder,
+                    &self.frame,
+                    atlas,
+                    target,
+                    TileSampling::Bilinear,
+                );
+            }
             (Some(accumulation), _) => {
                 let draw = Draw {
                     frame: &self.frame,
@@ -464,21 +586,7 @@ impl Renderer<GaussianScene> for GaussianSplatter {
                     count: scene.count,
                 };
                 self.draw(encoder, &draw, &accumulation.view)?;
-                let accumulated = device.create_bind_group(&wgpu::BindGroupDescriptor {
-                    label: Some("gaussian accumulation"),
-                    layout: &self.accumulated_layout,
-                    entries: &[wgpu::BindGroupEntry {
-                        binding: 0,
-                        resource: wgpu::BindingResource::TextureView(&accumulation.view),
-                    }],
-                });
-                draw_fullscreen(
-                    encoder,
-                    "gaussian resolve",
-                    &self.resolve,
-                    &[&self.frame.bind_group, &accumulated],
-                    &target.view,
-                );
+                self.resolve(device, encoder, accumulation, &target.view);
             }
             _ => {
                 return Err(Error::NotPrepared {
@@ -490,5 +598,9 @@ impl Renderer<GaussianScene> for GaussianSplatter {
         }
         self.crop.encode(device, encoder, frame, target);
         Ok(())
+    }
+
+    fn atlas(&self) -> Option<&Atlas> {
+        self.prepared.as_ref().and_then(|p| p.made.atlas.as_ref())
     }
 }

@@ -16,6 +16,7 @@ struct GaussianParams {
     camera_world: vec4<f32>, // the centre camera's position, world space
     right_world: vec4<f32>,  // its unit x axis, world space (view vd sits at camera + vd·right)
     offsets: vec4<f32>,      // x, y: the cover's offset range; z: the fixed view's offset
+    tile: vec4<f32>,         // xy: the view image's origin in the target (a quilt tile's)
     count: u32,              // Gaussians in the scene
     coefficients: u32,       // SH coefficients per Gaussian, (degree + 1)²
     fixed_view: u32,         // 1: every channel shows the view at offsets.z (N-pass, single view)
