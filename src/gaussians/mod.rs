@@ -6,12 +6,13 @@
 //! The arrays are flat and `bytemuck::Pod` element by element (`Vec3`, `Quat`, `f32`,
 //! `[f32; 3]`), so a GPU scene uploads each as it is.
 
+mod generate;
 pub mod load;
 pub(crate) mod passes;
 pub mod scene;
 pub mod sh;
 
-pub use passes::{GaussianOptions, GaussianSplatter, SortOn};
+pub use passes::{cpu_order, GaussianOptions, GaussianSplatter, SortOn};
 pub use scene::GaussianScene;
 
 use std::path::Path;

@@ -7,7 +7,7 @@
 
 mod sort;
 
-pub use sort::SortOn;
+pub use sort::{cpu_order, SortOn};
 
 use bytemuck::{Pod, Zeroable};
 
@@ -270,6 +270,61 @@ impl GaussianSplatter {
         self.prepared.as_ref().and_then(|p| p.made.layers.as_ref())
     }
 
+    /// Record only `frame`'s depth sort (benchmarks time it alone; `prepare` first).
+    pub fn encode_sort(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        scene: &GaussianScene,
+        frame: &Frame,
+    ) -> Result<()> {
+        let params = GaussianParams::new(scene, frame, 0.0, 0.0, None);
+        self.params.write(device, &[params]);
+        self.frame.write(device, frame);
+        let group = self.scene_group(device, scene, None);
+        self.sort
+            .encode(device, encoder, scene, frame, &self.frame, &group)?;
+        Ok(())
+    }
+
+    /// The scene's bind group (with the draw order for the splat pass).
+    fn scene_group(
+        &self,
+        device: &wgpu::Device,
+        scene: &GaussianScene,
+        order: Option<&wgpu::Buffer>,
+    ) -> wgpu::BindGroup {
+        let mut entries = vec![
+            wgpu::BindGroupEntry {
+                binding: 0,
+                resource: scene.geometry.as_entire_binding(),
+            },
+            wgpu::BindGroupEntry {
+                binding: 1,
+                resource: scene.sh.as_entire_binding(),
+            },
+            wgpu::BindGroupEntry {
+                binding: 2,
+                resource: self.params.binding(),
+            },
+        ];
+        if let Some(order) = order {
+            entries.push(wgpu::BindGroupEntry {
+                binding: 3,
+                resource: order.as_entire_binding(),
+            });
+        }
+        let layout = match order {
+            Some(_) => &self.splat_layout,
+            None => &self.scene_layout,
+        };
+        device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("gaussians"),
+            layout,
+            entries: &entries,
+        })
+    }
+
     /// The depth order of the last frame's sort read back (tests: the order the views share).
     pub fn last_order(
         &self,
@@ -494,38 +549,11 @@ impl Renderer<GaussianScene> for GaussianSplatter {
         };
         self.params.write(device, &passes);
         self.frame.write(device, frame);
-        let bind = |layout: &wgpu::BindGroupLayout, order: Option<&wgpu::Buffer>| {
-            let mut entries = vec![
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: scene.geometry.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 1,
-                    resource: scene.sh.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 2,
-                    resource: self.params.binding(),
-                },
-            ];
-            if let Some(order) = order {
-                entries.push(wgpu::BindGroupEntry {
-                    binding: 3,
-                    resource: order.as_entire_binding(),
-                });
-            }
-            device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some("gaussians"),
-                layout,
-                entries: &entries,
-            })
-        };
-        let scene_group = bind(&self.scene_layout, None);
+        let scene_group = self.scene_group(device, scene, None);
         let order = self
             .sort
             .encode(device, encoder, scene, frame, &self.frame, &scene_group)?;
-        let splat_group = bind(&self.splat_layout, Some(&order));
+        let splat_group = self.scene_group(device, scene, Some(&order));
         let spec = wanted.spec;
         let made = &prepared_state("GaussianSplatter", &self.prepared, &wanted)?.made;
         let background = frame.background;

@@ -59,7 +59,7 @@ fn padded(count: u32) -> u32 {
 
 /// The CPU's order of `scene` for `frame`: farthest first, Gaussians outside the near and far
 /// planes left out (the same keys as the GPU's, so the same order up to ties).
-pub(crate) fn cpu_order(scene: &GaussianScene, frame: &Frame) -> Vec<u32> {
+pub fn cpu_order(scene: &GaussianScene, frame: &Frame) -> Vec<u32> {
     let m = frame.camera.eye_from_world;
     let (near, far) = (frame.camera.near, frame.camera.far);
     let mut keyed: Vec<(u32, u32)> = scene
