@@ -90,6 +90,7 @@ pub const STAGES: &[(&str, &str)] = &[
     wgsl!("gaussians/resolve.wgsl"),
     wgsl!("gaussians/sort_keys.wgsl"),
     wgsl!("gaussians/sort_step.wgsl"),
+    wgsl!("gaussians/colors.wgsl"),
 ];
 
 /// The byte layout of a `#[repr(C)]` Rust struct that mirrors WGSL struct `wgsl`: its size and

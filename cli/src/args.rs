@@ -152,7 +152,7 @@ pub struct CameraArgs {
     /// views' span fixed when N changes, as on a display whose views share one viewing cone.
     #[arg(long)]
     baseline: Option<f32>,
-    /// Focal distance (default: camera to the bounding-box centre).
+    /// Focal distance (default: camera to the bounding-box centre, or to --look-at).
     #[arg(long, conflicts_with = "focal_scale")]
     focal: Option<f32>,
     /// Focal distance as a multiple of the default.
@@ -167,6 +167,37 @@ pub struct CameraArgs {
     /// parallax). docs/USAGE.md "Cameras".
     #[arg(long, default_value = "skewed", value_parser = camera_model_parser())]
     camera: autostereo::camera::CameraModel,
+    /// Put the centre camera at X,Y,Z (world units; default: the framing's, on the +z side
+    /// of the bounds' centre, far enough for the bounding sphere to fit the view).
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_vec3, allow_hyphen_values = true)]
+    look_from: Option<glam::Vec3>,
+    /// Point the centre camera at X,Y,Z (default: the bounds' centre); the focal plane passes
+    /// through it unless --focal or --focal-scale says otherwise.
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_vec3, allow_hyphen_values = true)]
+    look_at: Option<glam::Vec3>,
+    /// The world direction that is up in the image (default 0,1,0; 0,-1,0 for a capture with
+    /// y down).
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_vec3, allow_hyphen_values = true)]
+    up: Option<glam::Vec3>,
+}
+
+/// `X,Y,Z` → a vector of three finite numbers (`-1,2,-3` too: the flags allow a leading
+/// hyphen).
+pub fn parse_vec3(s: &str) -> Result<glam::Vec3, String> {
+    let parts: Vec<&str> = s.split(',').collect();
+    let bad = || format!("'{s}' is not three comma-separated numbers X,Y,Z");
+    let [x, y, z] = parts[..] else {
+        return Err(bad());
+    };
+    let v = [x, y, z].map(|p| p.trim().parse::<f32>());
+    let [Ok(x), Ok(y), Ok(z)] = v else {
+        return Err(bad());
+    };
+    let v = glam::Vec3::new(x, y, z);
+    if !v.is_finite() {
+        return Err(format!("'{s}': every coordinate must be finite"));
+    }
+    Ok(v)
 }
 
 /// `--camera NAME`.
@@ -180,6 +211,12 @@ fn camera_model_parser(
 }
 
 impl CameraArgs {
+    /// The point the centre camera looks at: --look-at, else the centre of `bounds` (the
+    /// viewer orbits about it).
+    pub fn pivot(&self, bounds: autostereo::camera::Bounds) -> glam::Vec3 {
+        self.look_at.unwrap_or(bounds.center())
+    }
+
     /// Frame `bounds` with these settings for `display`: without --separation or --baseline,
     /// a display's view cone (a Looking Glass calibration's `viewCone`) spreads the views.
     pub fn camera(
@@ -195,8 +232,28 @@ impl CameraArgs {
             Some(_) => Some(0.0),
             None => self.separation,
         };
-        let mut camera =
-            MultiViewCamera::framing(bounds, views, separation, self.fov.to_radians(), aspect)?;
+        let fov = self.fov.to_radians();
+        let framing = || MultiViewCamera::framing(bounds, views, separation, fov, aspect);
+        let mut camera = if self.look_from.is_some() || self.look_at.is_some() || self.up.is_some()
+        {
+            // An explicit camera: what is not given is the framing's.
+            let from = match self.look_from {
+                Some(from) => from,
+                None => framing()?.eye_position(),
+            };
+            MultiViewCamera::looking_at(
+                bounds,
+                from,
+                self.pivot(bounds),
+                self.up.unwrap_or(glam::Vec3::Y),
+                views,
+                separation,
+                fov,
+                aspect,
+            )?
+        } else {
+            framing()?
+        };
         if let Some(fd) = self.focal {
             camera.focal_distance = fd;
         }

@@ -22,6 +22,10 @@ const FLAGS: &[(&str, &str)] = &[
     ("separation", "--separation"),
     ("downsample factor", "--downsample"),
     ("method", "--method"),
+    ("camera model", "--camera"),
+    ("look-from", "--look-from"),
+    ("look-at", "--look-at"),
+    ("up", "--up"),
 ];
 
 /// (library term in an error's advice, the command line's words for it).

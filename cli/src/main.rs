@@ -3,6 +3,7 @@
 mod args;
 mod bench;
 mod flags;
+mod gaussians_cmd;
 mod interleave_cmd;
 mod mask_cmd;
 mod mesh_cmd;
@@ -38,6 +39,9 @@ enum Command {
     Mesh(mesh_cmd::MeshArgs),
     /// Render a point cloud as splats (PLY / OBJ vertices; a generated scene when no file is given).
     Points(points_cmd::PointsArgs),
+    /// Render 3D Gaussian splats (graphdeco PLY, .splat, .spz; a generated scene when no file
+    /// is given).
+    Gaussians(gaussians_cmd::GaussiansArgs),
     /// A Looking Glass quilt (views rendered anywhere) to any display's spatial image.
     Interleave(interleave_cmd::InterleaveArgs),
     /// An RGB-D image (colour + depth, or side by side) to any display, a quilt or per-view PNGs.
@@ -66,6 +70,7 @@ fn main() -> std::process::ExitCode {
         Command::Bench(a) => bench::run(a),
         Command::Mask(a) => mask_cmd::run(a),
         Command::Mesh(a) => mesh_cmd::run(a),
+        Command::Gaussians(a) => gaussians_cmd::run(a),
         Command::Interleave(a) => interleave_cmd::run(a),
         Command::Points(a) => points_cmd::run(a),
         Command::Rgbd(a) => rgbd_cmd::run(a),

@@ -90,6 +90,93 @@ impl MultiViewCamera {
         Ok(camera)
     }
 
+    /// The centre camera at `from` looking at `at` with `up` towards the image's top (an
+    /// explicit camera, for scenes whose own axes do not suit [`MultiViewCamera::framing`]: a
+    /// capture with y down, say). The focal plane passes through `at` (focal distance
+    /// `|at − from|`); near and far bracket the bounding sphere of `bounds` seen from `from` as
+    /// `framing` brackets it (from this camera's [`MultiViewCamera::framing`] eye and centre the
+    /// same planes), the near plane kept ahead of the eye when `from` is inside the scene.
+    /// Separation `e` defaults to 5 % of the bounding radius when `None`. Refused by name: a
+    /// non-finite point or vector, `from` = `at`, `up` zero or parallel to the view direction,
+    /// and a scene wholly behind the camera.
+    #[allow(clippy::too_many_arguments)]
+    pub fn looking_at(
+        bounds: Bounds,
+        from: Vec3,
+        at: Vec3,
+        up: Vec3,
+        views: u32,
+        separation: Option<f32>,
+        fov_y: f32,
+        aspect: f32,
+    ) -> Result<Self> {
+        if !(fov_y > 0.0 && fov_y < std::f32::consts::PI && aspect.is_finite() && aspect > 0.0) {
+            return Err(Error::invalid(
+                "field of view",
+                format!("fov {fov_y} rad, aspect {aspect}"),
+            ));
+        }
+        for (name, v) in [("look-from", from), ("look-at", at), ("up", up)] {
+            if !v.is_finite() {
+                return Err(Error::invalid(name, format!("{v}: must be finite")));
+            }
+        }
+        let view = at - from;
+        let focal_distance = view.length();
+        // Relative to the points' own size, so that far-off coordinates still compare.
+        let scale = from.abs().max(at.abs()).max_element().max(bounds.radius());
+        if focal_distance <= 1e-6 * scale {
+            return Err(Error::invalid(
+                "look-at",
+                format!("{at} is the look-from point {from}: the camera looks nowhere"),
+            ));
+        }
+        let forward = view / focal_distance;
+        if up.length() <= 0.0 {
+            return Err(Error::invalid("up", "the zero vector has no direction"));
+        }
+        if forward.cross(up.normalize()).length() < 1e-4 {
+            return Err(Error::invalid(
+                "up",
+                format!(
+                    "{up} is parallel to the view direction {forward} (look-from {from} to \
+                     look-at {at}): it must point across it, towards the image's top"
+                ),
+            ));
+        }
+        let radius = bounds.radius();
+        let centre = forward.dot(bounds.center() - from);
+        if centre + radius <= 0.0 {
+            return Err(Error::invalid(
+                "look-at",
+                format!(
+                    "looking from {from} towards {at}, the scene's bounds {:?} .. {:?} are \
+                     wholly behind the camera",
+                    bounds.min, bounds.max
+                ),
+            ));
+        }
+        let camera = MultiViewCamera {
+            eye_from_world: Mat4::look_at_rh(from, at, up),
+            views,
+            separation: separation.unwrap_or(0.05 * radius),
+            focal_distance,
+            fov_y,
+            aspect,
+            near: (centre - 2.0 * radius).max(0.01 * centre.max(radius)),
+            far: centre + 2.0 * radius,
+            model: CameraModel::Skewed,
+            window_offset: glam::Vec2::ZERO,
+        };
+        camera.validate()?;
+        Ok(camera)
+    }
+
+    /// Where the centre camera of this camera is, world space.
+    pub fn eye_position(&self) -> Vec3 {
+        self.eye_from_world.inverse().transform_point3(Vec3::ZERO)
+    }
+
     /// Spread the views over the angle `cone` (radians) as Looking Glass software does with a
     /// calibration's `viewCone`: the outermost views at ±cone/2 as seen from the focal point,
     /// so the baseline is `2·focal_distance·tan(cone/2)` and the separation that over N − 1.

@@ -111,3 +111,100 @@ fn invalid_parameters_are_errors() {
     bad.separation = f32::INFINITY;
     assert!(bad.validate().is_err());
 }
+
+#[test]
+fn looking_at_the_framings_own_points_is_the_framing() {
+    let bounds = Bounds {
+        min: Vec3::new(-1.0, -0.5, -2.0),
+        max: Vec3::new(3.0, 1.5, 0.0),
+    };
+    let framed = MultiViewCamera::framing(bounds, 8, None, 0.6, 1.5).unwrap();
+    let eye = framed.eye_position();
+    let looking =
+        MultiViewCamera::looking_at(bounds, eye, bounds.center(), Vec3::Y, 8, None, 0.6, 1.5)
+            .unwrap();
+    assert!(looking
+        .eye_from_world
+        .abs_diff_eq(framed.eye_from_world, 1e-5));
+    for (a, b) in [
+        (looking.focal_distance, framed.focal_distance),
+        (looking.near, framed.near),
+        (looking.far, framed.far),
+        (looking.separation, framed.separation),
+    ] {
+        assert!((a - b).abs() <= 1e-5 * b.abs(), "{a} vs {b}");
+    }
+}
+
+#[test]
+fn looking_at_puts_the_eye_target_and_up_where_asked() {
+    let bounds = Bounds {
+        min: Vec3::splat(-1.0),
+        max: Vec3::splat(1.0),
+    };
+    let (from, at) = (Vec3::new(-1.0, 2.0, -3.0), Vec3::new(0.5, 0.0, 0.0));
+    let c =
+        MultiViewCamera::looking_at(bounds, from, at, Vec3::NEG_Y, 4, Some(0.1), 0.6, 1.0).unwrap();
+    assert!((c.eye_position() - from).length() < 1e-5);
+    // The target on the axis, on the focal plane.
+    let target = c.eye_from_world.transform_point3(at);
+    assert!(target.truncate().length() < 1e-5, "{target}");
+    assert!((-target.z - c.focal_distance).abs() < 1e-5);
+    assert!((c.focal_distance - (at - from).length()).abs() < 1e-5);
+    // World −y is the image's up: a point below the target projects above it.
+    let below = c.eye_from_world.transform_point3(at - Vec3::Y * 0.1);
+    assert!(below.y > 0.0, "{below}");
+    // Near and far enclose the bounding sphere, the near plane ahead of the eye.
+    let d = c.depth_of(bounds.center());
+    assert!(c.near > 0.0 && c.near <= d - bounds.radius() && c.far >= d + bounds.radius());
+    assert_eq!(c.separation, 0.1);
+    // From inside the scene: near stays ahead of the eye, far beyond the sphere.
+    let inside =
+        MultiViewCamera::looking_at(bounds, Vec3::ZERO, Vec3::Z, Vec3::Y, 4, None, 0.6, 1.0)
+            .unwrap();
+    assert!(inside.near > 0.0 && inside.far >= bounds.radius());
+}
+
+#[test]
+fn a_degenerate_look_at_is_refused_by_name() {
+    let bounds = Bounds {
+        min: Vec3::splat(-1.0),
+        max: Vec3::splat(1.0),
+    };
+    let refused = |from: Vec3, at: Vec3, up: Vec3, name: &str, says: &str| {
+        let e = MultiViewCamera::looking_at(bounds, from, at, up, 8, None, 0.6, 1.0).unwrap_err();
+        match &e {
+            Error::InvalidParameter { name: n, .. } => assert_eq!(*n, name, "{e}"),
+            other => panic!("{other}"),
+        }
+        assert!(e.to_string().contains(says), "{e}");
+    };
+    let z = Vec3::new(0.0, 0.0, 5.0);
+    refused(z, z, Vec3::Y, "look-at", "looks nowhere");
+    refused(
+        z,
+        Vec3::ZERO,
+        Vec3::Z,
+        "up",
+        "parallel to the view direction",
+    );
+    refused(z, Vec3::ZERO, Vec3::NEG_Z * 3.0, "up", "parallel");
+    refused(z, Vec3::ZERO, Vec3::ZERO, "up", "zero vector");
+    refused(
+        Vec3::new(f32::NAN, 0.0, 0.0),
+        Vec3::ZERO,
+        Vec3::Y,
+        "look-from",
+        "finite",
+    );
+    refused(z, Vec3::splat(f32::INFINITY), Vec3::Y, "look-at", "finite");
+    refused(z, Vec3::ZERO, Vec3::new(0.0, f32::NAN, 0.0), "up", "finite");
+    // Looking away from the scene.
+    refused(
+        z,
+        Vec3::new(0.0, 0.0, 10.0),
+        Vec3::Y,
+        "look-at",
+        "wholly behind the camera",
+    );
+}

@@ -62,7 +62,10 @@ struct Report {
 fn options(method: Method, sort: SortOn) -> RendererOptions {
     RendererOptions {
         method,
-        gaussians: GaussianOptions { sort },
+        gaussians: GaussianOptions {
+            sort,
+            ..Default::default()
+        },
         ..Default::default()
     }
 }

@@ -227,6 +227,7 @@ pub fn methods(device: &wgpu::Device, scene: &BenchScene) -> Result<Vec<MethodEn
             let cpu_sort = RendererOptions {
                 gaussians: autostereo::gaussians::GaussianOptions {
                     sort: autostereo::gaussians::SortOn::Cpu,
+                    ..Default::default()
                 },
                 ..Default::default()
             };

@@ -342,7 +342,10 @@ impl State {
             self.position[1] + args.display.origin[1],
         ];
         let base = args.camera.camera(self.scene.bounds, &display, size)?;
-        let mut camera = self.orbit.apply(&base, self.scene.bounds.center());
+        // The orbit starts from the command line's camera and turns about what it looks at.
+        let mut camera = self
+            .orbit
+            .apply(&base, args.camera.pivot(self.scene.bounds));
         camera.separation *= self.separation_scale;
         camera.focal_distance *= self.focal_scale;
         Ok(Frame::new(camera, display, size)?)

@@ -65,8 +65,9 @@ impl Preview {
 
 #[derive(clap::Args)]
 pub struct ViewArgs {
-    /// A mesh, point cloud or volume file or DICOM folder (its kind told by its first bytes,
-    /// else its extension; a PLY with faces is a mesh); the built-in head volume when omitted.
+    /// A mesh, point cloud, volume or Gaussian splat file or DICOM folder (its kind told by its
+    /// first bytes, else its extension; a PLY with faces is a mesh, one with graphdeco's
+    /// properties Gaussians); the built-in head volume when omitted.
     file: Option<PathBuf>,
     /// What the file holds, where its extension does not say.
     #[arg(long, value_enum)]
@@ -86,6 +87,9 @@ pub struct ViewArgs {
     volume_data: crate::volume_cmd::VolumeDataArgs,
     #[command(flatten, next_help_heading = "Volume")]
     volume_render: crate::volume_cmd::VolumeRenderArgs,
+    // Gaussian splat flags, as `autostereo gaussians` has them.
+    #[command(flatten, next_help_heading = "Gaussians")]
+    gaussians: crate::gaussians_cmd::GaussianFlags,
     /// Window client-area size WxH in pixels.
     #[arg(long, value_parser = parse_size, default_value = "512x512")]
     size: [u32; 2],
@@ -148,6 +152,7 @@ impl ViewArgs {
             points: &self.points,
             volume_data: &self.volume_data,
             volume_render: &self.volume_render,
+            gaussians: &self.gaussians,
         }
     }
 }

@@ -1,5 +1,7 @@
-//! Mouse navigation: orbit around the scene's centre, zoom towards it, pan across the view;
-//! applied to the framing camera as rigid motions (the renderers need a rigid view matrix).
+//! Mouse navigation: orbit around the point the camera looks at (--look-at, else the scene's
+//! centre), zoom towards it, pan across the view; applied to the command line's camera (the
+//! framing, or --look-from/--look-at/--up) as rigid motions (the renderers need a rigid view
+//! matrix).
 
 use autostereo::camera::MultiViewCamera;
 use glam::{Mat4, Vec2, Vec3};
@@ -39,7 +41,8 @@ impl Orbit {
         self.zoom = (self.zoom + 0.1 * steps).clamp(-4.0, 4.0);
     }
 
-    /// `base` (the framing of a scene centred at `centre`) moved by this orbit. The focal plane,
+    /// `base` (the starting camera, looking at `centre`) moved by this orbit, turning about
+    /// `centre` and about `base`'s own up and right axes. The focal plane,
     /// near and far keep their distances relative to the centre's.
     pub fn apply(&self, base: &MultiViewCamera, centre: Vec3) -> MultiViewCamera {
         if *self == Orbit::default() {

@@ -1,14 +1,17 @@
-//! The viewer's scene: a mesh, a point cloud or a volume, loaded as the render commands load
-//! them (same defaults, so a viewer frame equals the command's image of the same camera).
+//! The viewer's scene: a mesh, a point cloud, a volume or Gaussian splats, loaded as the render
+//! commands load them (same defaults, so a viewer frame equals the command's image of the same
+//! camera).
 
 use std::path::Path;
 
 use anyhow::{bail, Result};
 use autostereo::camera::Bounds;
+use autostereo::gaussians::GaussianScene;
 use autostereo::mesh::MeshBuffers;
 use autostereo::render::Method;
 use autostereo::{AnyScene, RendererOptions};
 
+use crate::gaussians_cmd::GaussianFlags;
 use crate::mesh_cmd::MeshFlags;
 use crate::points_cmd::PointFlags;
 use crate::volume_cmd::{VolumeDataArgs, VolumeRenderArgs};
@@ -22,6 +25,8 @@ pub enum KindArg {
     Points,
     /// A volume (every format of `autostereo volume`; the built-in head without a file).
     Volume,
+    /// 3D Gaussian splats (graphdeco PLY, `.splat`, `.spz`).
+    Gaussians,
 }
 
 impl KindArg {
@@ -31,6 +36,7 @@ impl KindArg {
             KindArg::Mesh => "mesh",
             KindArg::Points => "points",
             KindArg::Volume => "volume",
+            KindArg::Gaussians => "gaussians",
         }
     }
 
@@ -40,6 +46,7 @@ impl KindArg {
             KindArg::Mesh => "a mesh",
             KindArg::Points => "a point cloud",
             KindArg::Volume => "a volume",
+            KindArg::Gaussians => "Gaussian splats",
         }
     }
 
@@ -55,11 +62,7 @@ impl KindArg {
                 "{}: {format} is an image; `autostereo rgbd` or `autostereo interleave` reads it",
                 path.display()
             ),
-            (format, DataKind::Gaussians) => bail!(
-                "{}: {format} 3D Gaussian splats; the viewer does not show them yet \
-                 (`autostereo gaussians` is coming)",
-                path.display()
-            ),
+            (_, DataKind::Gaussians) => KindArg::Gaussians,
         })
     }
 }
@@ -85,7 +88,7 @@ impl ViewScene {
 }
 
 /// What the viewer reads, with the flags of every primitive (the render commands' own
-/// definitions: cli/src/{mesh,points,volume}_cmd.rs).
+/// definitions: cli/src/{mesh,points,volume,gaussians}_cmd.rs).
 pub struct SceneFlags<'a> {
     pub file: Option<&'a Path>,
     pub kind: Option<KindArg>,
@@ -93,6 +96,7 @@ pub struct SceneFlags<'a> {
     pub points: &'a PointFlags,
     pub volume_data: &'a VolumeDataArgs,
     pub volume_render: &'a VolumeRenderArgs,
+    pub gaussians: &'a GaussianFlags,
 }
 
 impl SceneFlags<'_> {
@@ -115,6 +119,10 @@ impl SceneFlags<'_> {
                 KindArg::Volume,
                 *self.volume_data != defaults::<VolumeDataArgs>()
                     || *self.volume_render != defaults::<VolumeRenderArgs>(),
+            ),
+            (
+                KindArg::Gaussians,
+                *self.gaussians != defaults::<GaussianFlags>(),
             ),
         ];
         for (other, set) in given {
@@ -179,6 +187,13 @@ pub fn load(ctx: &autostereo::gpu::GpuContext, flags: &SceneFlags) -> Result<Vie
             options.volume = flags.volume_render.options(step);
             options.volume.settings.validate_for(&scene)?;
             (AnyScene::Volume(Box::new(scene)), volume.bounds())
+        }
+        KindArg::Gaussians => {
+            let gaussians = flags.gaussians.load(file)?;
+            let scene = GaussianScene::new(device, &gaussians)?;
+            options.gaussians = flags.gaussians.options();
+            let bounds = scene.bounds;
+            (AnyScene::Gaussians(scene), bounds)
         }
     };
     Ok(ViewScene {

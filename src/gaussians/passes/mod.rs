@@ -17,6 +17,7 @@ use crate::error::{Error, Result};
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
 use crate::render::atlas::{Atlas, AtlasCompositor, TileSampling};
 use crate::render::composite::Compositor;
+use crate::render::gpu_buffer::GpuBuffer;
 use crate::render::pass_params::PassParams;
 use crate::render::pipeline::{
     begin_pass, bind_group_layout, cleared, compilation, draw_fullscreen, fullscreen_pipeline,
@@ -30,14 +31,36 @@ use crate::render::view_layers::ViewLayers;
 use crate::render::{begin_prepare, prepared_state, Made as _, Method, Prepared, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 
+/// Threads per workgroup of the colour table's fill.
+const COLORS_WORKGROUP: u32 = 64;
+
+/// Bytes of the single pass's colour table: two words per Gaussian and view.
+fn color_table_bytes(scene: &GaussianScene, frame: &Frame) -> u64 {
+    u64::from(scene.count) * u64::from(frame.camera.views) * 8
+}
+
 /// Accumulation format: float, so thousands of blended Gaussians don't quantise.
 const ACCUMULATION_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
 
-/// How the Gaussian renderers work where there is a choice.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+/// How the Gaussian renderers work where there is a choice (each choice renders the same
+/// image; they differ in speed and memory).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct GaussianOptions {
     /// Where the depth sort runs.
     pub sort: SortOn,
+    /// The single pass evaluates each Gaussian's SH once per view into a table (8 bytes per
+    /// Gaussian and view) and its subpixels read it; `false`, or where the table would exceed
+    /// a storage binding, every subpixel evaluates the SH itself.
+    pub color_table: bool,
+}
+
+impl Default for GaussianOptions {
+    fn default() -> Self {
+        Self {
+            sort: SortOn::Gpu,
+            color_table: true,
+        }
+    }
 }
 
 /// Per-pass constants. Keep in sync with `struct GaussianParams` in
@@ -52,7 +75,7 @@ pub(crate) struct GaussianParams {
     count: u32,
     coefficients: u32,
     fixed_view: u32,
-    _pad: u32,
+    color_table: u32,
 }
 const _: () = assert!(std::mem::size_of::<GaussianParams>() == 80);
 crate::shader::gpu_layout!(
@@ -88,7 +111,7 @@ impl GaussianParams {
             count: scene.count,
             coefficients: scene.coefficients(),
             fixed_view: fixed.is_some() as u32,
-            _pad: 0,
+            color_table: 0,
         }
     }
 }
@@ -100,6 +123,9 @@ struct PreparedFor {
     size: [u32; 2],
     view_size: [u32; 2],
     count: u32,
+    /// The single pass reads its colours from a table per Gaussian and view (it fits a
+    /// storage binding), else evaluates the SH per subpixel.
+    color_table: bool,
 }
 
 /// What `prepare` made: the accumulation target (single pass, single view; the tiled method's
@@ -115,6 +141,7 @@ struct Made {
 /// then interleaved).
 pub struct GaussianSplatter {
     method: Method,
+    color_table: bool,
     frame: FrameBinding,
     views_frame: FrameBinding,
     scene_layout: wgpu::BindGroupLayout,
@@ -125,6 +152,10 @@ pub struct GaussianSplatter {
     compositor: Compositor,
     atlas_compositor: AtlasCompositor,
     sort: sort::DepthSort,
+    /// The single pass's colours per Gaussian and view, and the stage that fills them.
+    colors: GpuBuffer,
+    colors_pipeline: wgpu::ComputePipeline,
+    colors_layout: wgpu::BindGroupLayout,
     params: PassParams<GaussianParams>,
     prepared: Option<Prepared<PreparedFor, Made>>,
     crop: crate::render::camera_crop::CameraCrop,
@@ -162,6 +193,7 @@ impl GaussianSplatter {
         let scene_layout = bind_group_layout(device, "gaussian scene", &scene_entries);
         let mut splat_entries = scene_entries.to_vec();
         splat_entries.push(storage_entry(3, true, wgpu::ShaderStages::VERTEX));
+        splat_entries.push(storage_entry(4, true, wgpu::ShaderStages::FRAGMENT));
         let splat_layout = bind_group_layout(device, "gaussian splats", &splat_entries);
         let accumulated_layout = bind_group_layout(
             device,
@@ -187,8 +219,40 @@ impl GaussianSplatter {
                 SPATIAL_FORMAT,
             )
         })?;
+        let colors_layout = bind_group_layout(
+            device,
+            "gaussian colours",
+            &[storage_entry(0, false, wgpu::ShaderStages::COMPUTE)],
+        );
+        let colors_pipeline = {
+            let module = crate::shader::module(device, "gaussians/colors.wgsl")?;
+            let layout = pipeline_layout(
+                device,
+                "gaussian colours",
+                &[
+                    Some(&frame_layout),
+                    Some(&scene_layout),
+                    Some(&colors_layout),
+                ],
+            );
+            let constants = [("WORKGROUP", COLORS_WORKGROUP as f64)];
+            crate::gpu::checked(device, "building the Gaussian colour table", || {
+                device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                    label: Some("gaussian colours"),
+                    layout: Some(&layout),
+                    module: &module,
+                    entry_point: Some("cs_main"),
+                    compilation_options: compilation(&constants),
+                    cache: None,
+                })
+            })?
+        };
         Ok(Self {
             method,
+            color_table: options.color_table,
+            colors: GpuBuffer::new(device, "gaussian colours", wgpu::BufferUsages::STORAGE),
+            colors_pipeline,
+            colors_layout,
             frame: FrameBinding::new(device, &frame_layout),
             views_frame: FrameBinding::new(device, &frame_layout),
             compositor: Compositor::new(device, &frame_layout)?,
@@ -256,12 +320,16 @@ impl GaussianSplatter {
         Ok(())
     }
 
-    fn key(&self, scene: &GaussianScene, frame: &Frame) -> PreparedFor {
+    fn key(&self, device: &wgpu::Device, scene: &GaussianScene, frame: &Frame) -> PreparedFor {
+        let table_bytes = color_table_bytes(scene, frame);
         PreparedFor {
             spec: Specialization::of(frame),
             size: frame.size,
             view_size: frame.view_size(),
             count: scene.count,
+            color_table: self.method == Method::SinglePass
+                && self.color_table
+                && table_bytes <= crate::render::gpu_buffer::storage_binding_limit(device),
         }
     }
 
@@ -285,6 +353,35 @@ impl GaussianSplatter {
         self.sort
             .encode(device, encoder, scene, frame, &self.frame, &group)?;
         Ok(())
+    }
+
+    /// Record the colour table's fill (`gaussians/colors.wgsl`).
+    fn encode_colors(
+        &self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        scene: &GaussianScene,
+        scene_group: &wgpu::BindGroup,
+    ) {
+        let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("gaussian colours"),
+            layout: &self.colors_layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: self.colors.binding(),
+            }],
+        });
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some("gaussian colours"),
+            timestamp_writes: None,
+        });
+        pass.set_pipeline(&self.colors_pipeline);
+        pass.set_bind_group(0, &self.frame.bind_group, &[]);
+        pass.set_bind_group(1, scene_group, &[0]);
+        pass.set_bind_group(2, &group, &[]);
+        let groups = scene.count.div_ceil(COLORS_WORKGROUP);
+        let max = device.limits().max_compute_workgroups_per_dimension;
+        pass.dispatch_workgroups(groups.min(max), groups.div_ceil(max), 1);
     }
 
     /// The scene's bind group (with the draw order for the splat pass).
@@ -312,6 +409,10 @@ impl GaussianSplatter {
             entries.push(wgpu::BindGroupEntry {
                 binding: 3,
                 resource: order.as_entire_binding(),
+            });
+            entries.push(wgpu::BindGroupEntry {
+                binding: 4,
+                resource: self.colors.binding(),
             });
         }
         let layout = match order {
@@ -436,9 +537,21 @@ impl Renderer<GaussianScene> for GaussianSplatter {
             Method::SingleView => frame.check_full_views("Gaussian single-view")?,
             _ => {}
         }
-        let key = self.key(scene, frame);
+        let key = self.key(device, scene, frame);
         self.ensure_pipeline(device, key.spec)?;
         self.sort.prepare(device, scene)?;
+        let table_bytes = if key.color_table {
+            color_table_bytes(scene, frame)
+        } else {
+            0
+        };
+        let what = || {
+            format!(
+                "the colour table ({} Gaussians × {} views)",
+                scene.count, frame.camera.views
+            )
+        };
+        self.colors.ensure(device, what, table_bytes)?;
         let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
         let (last_accumulation, last_layers, last_atlas) = match last {
             Some(m) => (m.accumulation, m.layers, m.atlas),
@@ -524,7 +637,7 @@ impl Renderer<GaussianScene> for GaussianSplatter {
         frame: &Frame,
         target: &SpatialTarget,
     ) -> Result<()> {
-        let wanted = self.key(scene, frame);
+        let wanted = self.key(device, scene, frame);
         crate::render::check_target(frame, target)?;
         prepared_state("GaussianSplatter", &self.prepared, &wanted)?;
         let camera = &frame.camera;
@@ -547,9 +660,16 @@ impl Renderer<GaussianScene> for GaussianSplatter {
                     .collect()
             }
         };
+        let mut passes = passes;
+        for p in &mut passes {
+            p.color_table = wanted.color_table as u32;
+        }
         self.params.write(device, &passes);
         self.frame.write(device, frame);
         let scene_group = self.scene_group(device, scene, None);
+        if wanted.color_table {
+            self.encode_colors(device, encoder, scene, &scene_group);
+        }
         let order = self
             .sort
             .encode(device, encoder, scene, frame, &self.frame, &scene_group)?;

@@ -20,7 +20,7 @@ struct GaussianParams {
     count: u32,              // Gaussians in the scene
     coefficients: u32,       // SH coefficients per Gaussian, (degree + 1)²
     fixed_view: u32,         // 1: every channel shows the view at offsets.z (N-pass, single view)
-    _pad: u32,
+    color_table: u32,        // 1: the colours per Gaussian and view are in the colour table
 }
 
 // Nothing drawn past this transmittance-free opacity (graphdeco: α < 1/255 is skipped).
@@ -40,51 +40,47 @@ const SH_C2 = array<f32, 5>(1.0925484305920792, -1.0925484305920792, 0.315391565
 const SH_C3 = array<f32, 7>(-0.5900435899266435, 2.890611442640554, -0.4570457994644658,
     0.3731763325901154, -0.4570457994644658, 1.445305721320277, -0.5900435899266435);
 
-// Coefficient k (RGB) of Gaussian i: halves packed two per word (src/gaussians/scene.rs).
-fn sh_coefficient(i: u32, k: u32) -> vec3<f32> {
-    let first = (i * params.coefficients + k) * 3u;
-    var out = vec3<f32>(0.0);
-    for (var c = 0u; c < 3u; c++) {
-        let half = first + c;
-        let pair = unpack2x16float(sh[half >> 1u]);
-        out[c] = select(pair.x, pair.y, (half & 1u) != 0u);
-    }
-    return out;
+// Channel c of coefficient k of Gaussian i: halves packed two per word
+// (src/gaussians/scene.rs).
+fn sh_value(i: u32, k: u32, c: u32) -> f32 {
+    let half = (i * params.coefficients + k) * 3u + c;
+    let pair = unpack2x16float(sh[half >> 1u]);
+    return select(pair.x, pair.y, (half & 1u) != 0u);
 }
 
-// The SH colour of Gaussian i seen along unit world direction `dir`, + 0.5, clamped at 0.
-fn sh_color(i: u32, dir: vec3<f32>) -> vec3<f32> {
-    var result = SH_C0 * sh_coefficient(i, 0u);
-    if (params.coefficients > 1u) {
-        let x = dir.x;
-        let y = dir.y;
-        let z = dir.z;
-        result += -SH_C1 * y * sh_coefficient(i, 1u) + SH_C1 * z * sh_coefficient(i, 2u)
-            - SH_C1 * x * sh_coefficient(i, 3u);
-        if (params.coefficients > 4u) {
-            let xx = x * x;
-            let yy = y * y;
-            let zz = z * z;
-            let xy = x * y;
-            let yz = y * z;
-            let xz = x * z;
-            result += SH_C2[0] * xy * sh_coefficient(i, 4u)
-                + SH_C2[1] * yz * sh_coefficient(i, 5u)
-                + SH_C2[2] * (2.0 * zz - xx - yy) * sh_coefficient(i, 6u)
-                + SH_C2[3] * xz * sh_coefficient(i, 7u)
-                + SH_C2[4] * (xx - yy) * sh_coefficient(i, 8u);
-            if (params.coefficients > 9u) {
-                result += SH_C3[0] * y * (3.0 * xx - yy) * sh_coefficient(i, 9u)
-                    + SH_C3[1] * xy * z * sh_coefficient(i, 10u)
-                    + SH_C3[2] * y * (4.0 * zz - xx - yy) * sh_coefficient(i, 11u)
-                    + SH_C3[3] * z * (2.0 * zz - 3.0 * xx - 3.0 * yy) * sh_coefficient(i, 12u)
-                    + SH_C3[4] * x * (4.0 * zz - xx - yy) * sh_coefficient(i, 13u)
-                    + SH_C3[5] * z * (xx - yy) * sh_coefficient(i, 14u)
-                    + SH_C3[6] * x * (xx - 3.0 * yy) * sh_coefficient(i, 15u);
-            }
-        }
+// The real SH basis up to degree 3 along unit direction `dir` (graphdeco's order and signs;
+// entries past the scene's coefficients are not read).
+fn sh_basis(dir: vec3<f32>) -> array<f32, 16> {
+    let x = dir.x;
+    let y = dir.y;
+    let z = dir.z;
+    let xx = x * x;
+    let yy = y * y;
+    let zz = z * z;
+    return array<f32, 16>(
+        SH_C0,
+        -SH_C1 * y, SH_C1 * z, -SH_C1 * x,
+        SH_C2[0] * x * y, SH_C2[1] * y * z, SH_C2[2] * (2.0 * zz - xx - yy), SH_C2[3] * x * z,
+        SH_C2[4] * (xx - yy),
+        SH_C3[0] * y * (3.0 * xx - yy), SH_C3[1] * x * y * z, SH_C3[2] * y * (4.0 * zz - xx - yy),
+        SH_C3[3] * z * (2.0 * zz - 3.0 * xx - 3.0 * yy), SH_C3[4] * x * (4.0 * zz - xx - yy),
+        SH_C3[5] * z * (xx - yy), SH_C3[6] * x * (xx - 3.0 * yy),
+    );
+}
+
+// Channel c of Gaussian i's colour for the SH basis `basis`: the sum, + 0.5, clamped at 0.
+fn sh_channel(i: u32, basis: array<f32, 16>, c: u32) -> f32 {
+    var sum = 0.0;
+    for (var k = 0u; k < params.coefficients; k++) {
+        sum += basis[k] * sh_value(i, k, c);
     }
-    return max(result + 0.5, vec3<f32>(0.0));
+    return max(sum + 0.5, 0.0);
+}
+
+// `rgb` rounded to half floats, as the colour table holds it (so every method's colours agree
+// bit for bit).
+fn half_rgb(rgb: vec3<f32>) -> vec3<f32> {
+    return vec3<f32>(unpack2x16float(pack2x16float(rgb.rg)), unpack2x16float(pack2x16float(rgb.bb)).x);
 }
 
 // The eye-space covariance W Σ Wᵀ (W: the camera's rotation) as xx, xy, xz, yy | yz, zz.
@@ -106,6 +102,7 @@ fn eye_covariance(g: Gaussian) -> array<vec3<f32>, 2> {
 // and its radius in pixels (0: not drawn).
 struct Projected {
     mean: vec2<f32>,
+    cov: vec3<f32>, // the 2D covariance a, b, c (pixels², the filter added)
     conic: vec3<f32>,
     radius: f32,
 }
@@ -141,11 +138,11 @@ fn project(q: vec3<f32>, cov: array<vec3<f32>, 2>, vd: f32) -> Projected {
     let c = dot(j1, sj1) + BLUR_PX2;
     let det = a * c - b * b;
     if (!(det > 0.0) || !(tz > 0.0)) {
-        return Projected(mean, vec3<f32>(0.0), 0.0);
+        return Projected(mean, vec3<f32>(a, b, c), vec3<f32>(0.0), 0.0);
     }
     let mid = 0.5 * (a + c);
     let lambda = mid + sqrt(max(0.1, mid * mid - det));
-    return Projected(mean, vec3<f32>(c, -b, a) / det, ceil(3.0 * sqrt(lambda)));
+    return Projected(mean, vec3<f32>(a, b, c), vec3<f32>(c, -b, a) / det, ceil(3.0 * sqrt(lambda)));
 }
 
 // α of a projected Gaussian at pixel position `px` (graphdeco: inside the 3σ square, the

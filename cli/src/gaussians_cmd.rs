@@ -1,0 +1,163 @@
+//! `autostereo gaussians`: render 3D Gaussian splats (graphdeco `.ply`, antimatter15 `.splat`,
+//! Niantic `.spz`; a generated scene when no file is given).
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use anyhow::Result;
+use autostereo::gaussians::{GaussianOptions, GaussianScene, Gaussians, SortOn};
+use autostereo::render::Method;
+use autostereo::RendererOptions;
+
+use crate::args::{gpu, RenderArgs};
+use crate::run::{compare_with, merge, report, run_fields, run_summary, timed};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum SortArg {
+    /// Keys and a bitonic sort in compute passes: nothing leaves the GPU.
+    Gpu,
+    /// The keys sorted on the CPU each frame and uploaded with it.
+    Cpu,
+}
+
+impl SortArg {
+    fn name(self) -> &'static str {
+        match self {
+            SortArg::Gpu => "gpu",
+            SortArg::Cpu => "cpu",
+        }
+    }
+}
+
+#[derive(clap::Args)]
+pub struct GaussiansArgs {
+    /// graphdeco 3DGS PLY, antimatter15 `.splat` or Niantic `.spz` (told by the first bytes,
+    /// else the extension); a generated torus of Gaussians around a ball when omitted.
+    file: Option<PathBuf>,
+    #[command(flatten)]
+    common: RenderArgs,
+    #[command(flatten)]
+    gaussians: GaussianFlags,
+}
+
+/// How Gaussian splats are rendered: the flags `gaussians` and `view` share.
+#[derive(clap::Args, Clone, Debug, PartialEq)]
+pub struct GaussianFlags {
+    /// Where the depth sort runs each frame: gpu (a bitonic sort in compute passes) or cpu
+    /// (sorted on the CPU and uploaded).
+    #[arg(long, value_enum, default_value = "gpu")]
+    sort: SortArg,
+    /// Single pass: every subpixel evaluates the SH itself instead of reading a colour table
+    /// filled once per Gaussian and view (the same image; slower, 8 bytes per Gaussian and view
+    /// less memory; scenes whose table would not fit a storage binding do this by themselves).
+    #[arg(long)]
+    sh_per_subpixel: bool,
+}
+
+impl GaussianFlags {
+    /// The Gaussians in `file`, the generated scene without one.
+    pub fn load(&self, file: Option<&Path>) -> Result<Gaussians> {
+        Ok(match file {
+            Some(path) => Gaussians::load(path)?,
+            None => builtin_scene(),
+        })
+    }
+
+    /// The Gaussian options the flags say.
+    pub fn options(&self) -> GaussianOptions {
+        GaussianOptions {
+            sort: match self.sort {
+                SortArg::Gpu => SortOn::Gpu,
+                SortArg::Cpu => SortOn::Cpu,
+            },
+            color_table: !self.sh_per_subpixel,
+        }
+    }
+}
+
+/// Gaussians in the scene without a file (`Gaussians::generated`: a capture-like torus and
+/// ground disc, SH degree 3; the bench renders the same scene at 131,072).
+pub const BUILTIN_GAUSSIANS: usize = 4096;
+
+/// The scene without a file.
+pub fn builtin_scene() -> Gaussians {
+    Gaussians::generated(BUILTIN_GAUSSIANS)
+}
+
+pub fn run(args: GaussiansArgs) -> Result<()> {
+    args.common.check()?;
+    let start = Instant::now();
+    let gaussians = args.gaussians.load(args.file.as_deref())?;
+    let load_ms = start.elapsed().as_secs_f64() * 1e3;
+    gaussians.validate()?;
+    let bounds = gaussians
+        .bounds()
+        .expect("validate() refuses empty and non-finite Gaussians");
+    let frame = args.common.frame(bounds)?;
+    let ctx = gpu()?;
+    let device = &ctx.device;
+    let options = RendererOptions {
+        gaussians: args.gaussians.options(),
+        ..args.common.options()
+    };
+    // Before the upload: a method without a Gaussian path is refused at once.
+    let mut renderer = options.gaussians_renderer(device)?;
+    let scene = GaussianScene::new(device, &gaussians)?;
+    let (count, sh_degree) = (gaussians.len(), gaussians.sh_degree);
+    drop(gaussians);
+    let run = timed(&ctx, renderer.as_mut(), &scene, &frame, args.common.frames)?;
+    let turntable = crate::output::save_all(
+        &ctx,
+        renderer.as_mut(),
+        &scene,
+        &frame,
+        bounds,
+        &args.common,
+        &run.image,
+    )?;
+    let diff = if args.common.compare {
+        let npass = RendererOptions {
+            method: Method::NPass,
+            ..options
+        };
+        let mut npass = npass.gaussians_renderer(device)?;
+        Some(compare_with(
+            &ctx,
+            npass.as_mut(),
+            &scene,
+            &frame,
+            &run.image,
+        )?)
+    } else {
+        None
+    };
+    let sort = args.gaussians.sort.name();
+    let mut extra = serde_json::json!({
+        "gaussians": count,
+        "sh_degree": sh_degree,
+        "sort": sort,
+        "load_ms": load_ms,
+    });
+    if let Some(t) = &turntable {
+        merge(&mut extra, t.fields());
+    }
+    let fields = run_fields(&ctx, &args.common, &frame, &run, extra);
+    let summary = format!(
+        "{}: {count} Gaussians (SH degree {sh_degree}, loaded in {load_ms:.0} ms), {sort} sort, {}",
+        args.common.method.name(),
+        run_summary(&ctx, &args.common, &frame, &run)
+    );
+    report(args.common.json, fields, diff, &summary);
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn the_builtin_scene_is_valid_and_the_same_every_time() {
+        let a = super::builtin_scene();
+        a.validate().unwrap();
+        assert_eq!(a, super::builtin_scene());
+        assert_eq!(a.len(), super::BUILTIN_GAUSSIANS);
+    }
+}
