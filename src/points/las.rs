@@ -356,6 +356,14 @@ fn check_laz(
                      {record}-byte point)"
                 ));
             }
+            // Variable-size chunks take each chunk's point count from the table: laz indexes
+            // the table for the first chunk, and past an empty one panics.
+            if chunks == 0 && points > 0 && matches!(chunk_size, 0 | u32::MAX) {
+                return Err(format!(
+                    "the LAZ chunk table at byte {table} lists no chunks, but the header counts \
+                     {points} points in variable-size chunks"
+                ));
+            }
         }
     }
     // Layered chunks (LAS 1.4 items, versions 3 and 4): a whole point, the chunk's point count
@@ -547,6 +555,11 @@ mod tests {
             bytes,
             "laszip item 0 (type 6) declares 21 bytes, its type has 20",
         );
+        // Variable-size chunks and a chunk table of no chunks (laz indexed its empty table).
+        let mut bytes = good.clone();
+        put(&mut bytes, vlr + 12, &u32::MAX.to_le_bytes());
+        put(&mut bytes, table + 4, &0u32.to_le_bytes());
+        refused(bytes, "lists no chunks, but the header counts");
         // LAS 1.4 (layered): the first chunk's first layer of 4 GiB (after a 30-byte point
         // and the chunk's point count).
         let good = cloud((1, 4), 6, true);

@@ -461,10 +461,14 @@ impl Walk<'_> {
     /// Explicit VR: items and delimiters (group FFFE) have no VR; the VRs of PS3.5 table 7.1-2
     /// have a 16-bit length, all others (unknown ones too) 2 reserved bytes and a 32-bit one.
     /// Implicit VR: the VR is the standard dictionary's, as dicom-parser looks it up.
-    fn element_header(&mut self, explicit: bool) -> Option<((u16, u16), bool, u32)> {
+    /// Also the bytes of one value of its VR ([`value_size`]).
+    fn element_header(&mut self, explicit: bool) -> Option<((u16, u16), bool, u32, usize)> {
         let tag = self.tag()?;
         if tag.0 == 0xFFFE || !explicit {
-            return Some((tag, !explicit && implicit_sequence(tag), self.u32()?));
+            let vr = (!explicit).then(|| implicit_vr(tag));
+            let sequence = vr == Some(dicom_core::VR::SQ);
+            let size = vr.map_or(1, |vr| value_size(tag, vr));
+            return Some((tag, sequence, self.u32()?, size));
         }
         let vr = self.take::<2>()?;
         let short = matches!(
@@ -497,20 +501,43 @@ impl Walk<'_> {
             self.take::<2>()?;
             self.u32()?
         };
-        Some((tag, &vr == b"SQ", len))
+        let size = value_size(
+            tag,
+            dicom_core::VR::from_binary(vr).unwrap_or(dicom_core::VR::UN),
+        );
+        Some((tag, &vr == b"SQ", len, size))
     }
 }
 
-/// Whether implicit VR reads `tag` as a sequence (dicom-encoding's implicit VR decoder: the
-/// standard dictionary's VR, OW for pixel and overlay data).
-fn implicit_sequence(tag: (u16, u16)) -> bool {
+/// The VR implicit VR reads `tag` with (dicom-encoding's implicit VR decoder: the standard
+/// dictionary's, OW for pixel and overlay data, UN for a tag it does not know).
+fn implicit_vr(tag: (u16, u16)) -> dicom_core::VR {
     use dicom_core::dictionary::{DataDictionary, DataDictionaryEntry};
     if tag == PIXEL_DATA || (tag.0 >> 8 == 0x60 && tag.1 == 0x3000) {
-        return false;
+        return dicom_core::VR::OW;
     }
     dicom_object::StandardDataDictionary
         .by_tag(Tag(tag.0, tag.1))
-        .is_some_and(|entry| entry.vr().relaxed() == dicom_core::VR::SQ)
+        .map_or(dicom_core::VR::UN, |entry| entry.vr().relaxed())
+}
+
+/// The bytes of one value of `vr`: dicom-parser reads a binary number VR's value as
+/// `length / size` numbers and leaves the rest of an uneven length unread, so that it reads the
+/// next header from inside the value. A "US or SS" tag is read as SS when the pixel data are
+/// signed, whatever VR it declares.
+fn value_size(tag: (u16, u16), vr: dicom_core::VR) -> usize {
+    use dicom_core::dictionary::{DataDictionary, DataDictionaryEntry, VirtualVr};
+    use dicom_core::VR::*;
+    let xs = dicom_object::StandardDataDictionary
+        .by_tag(Tag(tag.0, tag.1))
+        .is_some_and(|entry| matches!(entry.vr(), VirtualVr::Xs));
+    match vr {
+        _ if xs => 2,
+        US | OW | SS => 2,
+        AT | FL | OF | SL | UL | OL => 4,
+        FD | OD | SV | UV | OV => 8,
+        _ => 1,
+    }
 }
 
 /// A sequence or item open in the walk, with where its defined length ends.
@@ -539,7 +566,7 @@ fn check_lengths(bytes: &[u8], whole: bool) -> std::result::Result<(), String> {
     };
     // The file meta group, always explicit VR little endian: dicom-object reads elements
     // while the bytes it has read are fewer than the group length.
-    let Some((tag, _, 4)) = w.element_header(true) else {
+    let Some((tag, _, 4, _)) = w.element_header(true) else {
         return Ok(());
     };
     let Some(group_length) = w.u32() else {
@@ -552,7 +579,7 @@ fn check_lengths(bytes: &[u8], whole: bool) -> std::result::Result<(), String> {
     let mut transfer_syntax = None;
     while read < group_length {
         let start = w.pos;
-        let Some((tag, _, len)) = w.element_header(true) else {
+        let Some((tag, _, len, _)) = w.element_header(true) else {
             return Ok(());
         };
         if len == UNDEFINED {
@@ -663,7 +690,7 @@ fn check_lengths(bytes: &[u8], whole: bool) -> std::result::Result<(), String> {
             check_end = true;
         } else {
             let at = w.pos;
-            let Some((tag, sequence, len)) = w.element_header(explicit) else {
+            let Some((tag, sequence, len, size)) = w.element_header(explicit) else {
                 return Ok(()); // the end of the data set, or a header dicom-parser refuses
             };
             if tag == ITEM_END {
@@ -712,6 +739,13 @@ fn check_lengths(bytes: &[u8], whole: bool) -> std::result::Result<(), String> {
             } else {
                 if len as usize > w.left() {
                     return Err(over("element", tag, len, at, w.left()));
+                }
+                if !(len as usize).is_multiple_of(size) {
+                    return Err(format!(
+                        "element {} at byte {at} declares {len} bytes, not a whole number of \
+                         its VR's {size}-byte values",
+                        tag_name(tag)
+                    ));
                 }
                 w.pos += len as usize;
                 check_end = true;
@@ -811,6 +845,35 @@ mod tests {
             e.contains("huge.dcm") && e.contains("declares 4294967280 bytes"),
             "{e}"
         );
+    }
+
+    #[test]
+    fn a_number_value_of_uneven_length_is_refused() {
+        // dicom-parser reads an FL of 2 bytes as no float and the next header from its value
+        // (the fuzzer's file: then an element of 0x2E300008 bytes, zero-filled).
+        let bytes = file(
+            EXPLICIT_LE,
+            &[name(), explicit((0x0028, 0x0011), b"FL", 2, &[6, 0])].concat(),
+        );
+        let e = check_lengths(&bytes, true).unwrap_err();
+        assert!(
+            e.contains("element (0028,0011) at byte 184 declares 2 bytes, not a whole number")
+                && e.contains("4-byte values"),
+            "{e}"
+        );
+        // Implicit VR: the dictionary's VR (Rows, US) and an odd length.
+        let bytes = file(
+            IMPLICIT_LE,
+            &[header((0x0028, 0x0010), 3), vec![1, 2, 3]].concat(),
+        );
+        let e = check_lengths(&bytes, true).unwrap_err();
+        assert!(e.contains("2-byte values"), "{e}");
+        // Whole values pass.
+        let bytes = file(
+            EXPLICIT_LE,
+            &[name(), explicit((0x0028, 0x0011), b"US", 2, &[6, 0])].concat(),
+        );
+        check_lengths(&bytes, true).unwrap();
     }
 
     #[test]
