@@ -25,8 +25,8 @@ impl Lcg {
 
 impl Gaussians {
     /// `count` (≥ 1) Gaussians: three quarters on a torus (radii 1 and 0.35), the rest on a
-    /// ground disc below it, each a flat ellipse in its surface sized so that neighbours
-    /// overlap, opacity 0.5–1, SH degree 3 (a hue around the torus, a sheen that turns with
+    /// ground disc below it, each a flat ellipse in its surface (σ about half the spacing of
+    /// the means, so that neighbours overlap), opacity 0.5–1, SH degree 3 (a hue around the torus, a sheen that turns with
     /// the view direction).
     pub fn generated(count: usize) -> Gaussians {
         let count = count.max(1);
@@ -63,9 +63,9 @@ impl Gaussians {
             };
             g.positions.push(position);
             g.scales.push(Vec3::new(
-                size * r.range(0.6, 1.4),
-                size * r.range(0.6, 1.4),
-                size * 0.05,
+                size * r.range(0.3, 0.7),
+                size * r.range(0.3, 0.7),
+                size * 0.03,
             ));
             // The Gaussian's z axis along the normal, turned at random about it.
             let align = Quat::from_rotation_arc(Vec3::Z, normal);
