@@ -178,7 +178,8 @@ fn the_built_in_scene_renders_without_a_file() {
     assert!(ok, "{stderr}");
     let report: serde_json::Value = serde_json::from_str(stdout.trim()).unwrap();
     assert!(report["gaussians"].as_u64().unwrap() > 1000, "{report}");
-    assert!(lit(&load(&png)) > 0.2);
+    // The generated torus and disc seen edge on: a band across the middle.
+    assert!(lit(&load(&png)) > 0.05);
 }
 
 #[test]
