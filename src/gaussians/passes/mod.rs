@@ -85,9 +85,11 @@ crate::shader::gpu_layout!(
         camera_world,
         right_world,
         offsets,
+        tile,
         count,
         coefficients,
-        fixed_view
+        fixed_view,
+        color_table
     ]
 );
 
