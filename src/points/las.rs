@@ -358,10 +358,40 @@ fn check_laz(
             }
             // Variable-size chunks take each chunk's point count from the table: laz indexes
             // the table for the first chunk, and past an empty one panics.
-            if chunks == 0 && points > 0 && matches!(chunk_size, 0 | u32::MAX) {
+            let variable = matches!(chunk_size, 0 | u32::MAX);
+            if chunks == 0 && points > 0 && variable {
                 return Err(format!(
                     "the LAZ chunk table at byte {table} lists no chunks, but the header counts \
                      {points} points in variable-size chunks"
+                ));
+            }
+            // Variable-size chunks: laz enters a chunk after each chunk's points, reading its
+            // count from the table, and panics (an index out of bounds) past the table's last
+            // chunk, so the table's counts must cover the header's points. Read as laz reads it
+            // (arithmetic-coded, one entry per chunk counted above); a table laz cannot read is
+            // left to laz, which refuses it or (layered chunks) reads the counts from the chunks.
+            if variable && chunks > 0 {
+                let mut source = std::io::Cursor::new(bytes);
+                source.set_position(table);
+                if let Ok(entries) = laz::laszip::ChunkTable::read(&mut source, true) {
+                    let held = entries
+                        .as_ref()
+                        .iter()
+                        .fold(0u64, |sum, entry| sum.saturating_add(entry.point_count));
+                    if held < points {
+                        return Err(format!(
+                            "the LAZ chunk table at byte {table} lists {held} points (in {chunks} \
+                             chunks), but the header counts {points}"
+                        ));
+                    }
+                }
+            }
+            // Fixed-size chunks (laz reads them in sequence, each of the VLR's size): as many as
+            // the header's points need.
+            if !variable && u64::from(chunks) * u64::from(chunk_size) < points {
+                return Err(format!(
+                    "the LAZ chunk table at byte {table} lists {chunks} chunks of at most \
+                     {chunk_size} points each, but the header counts {points}"
                 ));
             }
         }
@@ -528,6 +558,72 @@ mod tests {
         let mut bytes = cloud((1, 2), 3, true);
         put(&mut bytes, 107, &1_000_000_000u32.to_le_bytes());
         refused(bytes, "decompressing 1000000000 LAZ points of 34 bytes");
+    }
+
+    /// `good` (a LAZ file of one fixed-size chunk, its table at the end) rewritten with
+    /// variable-size chunks: the laszip VLR's chunk size and a chunk table listing `counts`
+    /// points (the first entry with the chunk's bytes).
+    fn variable_chunks(good: &[u8], counts: &[u64]) -> Vec<u8> {
+        let data = u64::from(u32_at(good, 96).unwrap());
+        let table = u64_at(good, data).unwrap();
+        let vlr = 227 + VLR_HEADER + 10 + VLR_HEADER;
+        let mut bytes = good[..table as usize].to_vec();
+        put(&mut bytes, vlr + 12, &u32::MAX.to_le_bytes());
+        let vlr_len = u64::from(u16_at(&bytes, vlr - VLR_HEADER + 20).unwrap());
+        let laz_vlr =
+            laz::LazVlr::from_buffer(&bytes[vlr as usize..(vlr + vlr_len) as usize]).unwrap();
+        assert!(laz_vlr.uses_variable_size_chunks());
+        let mut entries = laz::laszip::ChunkTable::with_capacity(counts.len());
+        for (k, &point_count) in counts.iter().enumerate() {
+            let byte_count = if k == 0 { table - data - 8 } else { 0 };
+            entries.push(laz::laszip::ChunkTableEntry {
+                point_count,
+                byte_count,
+            });
+        }
+        entries.write_to(&mut bytes, &laz_vlr).unwrap();
+        bytes
+    }
+
+    #[test]
+    fn laz_chunk_tables_of_fewer_points_than_the_header_are_refused() {
+        let good = cloud((1, 2), 3, true);
+        // The whole chunk listed (and a last chunk of no points, as laz writes): read whole.
+        for counts in [&[300][..], &[300, 0]] {
+            let bytes = variable_chunks(&good, counts);
+            check_sizes(&bytes).unwrap();
+            assert_eq!(parse(bytes).unwrap().len(), 300, "{counts:?}");
+        }
+        // A table of 100 points, the header's 300: laz went past the table's last chunk at
+        // point 100 and panicked (an index out of bounds).
+        let bytes = variable_chunks(&good, &[100]);
+        let table = u64_at(&bytes, u64::from(u32_at(&bytes, 96).unwrap())).unwrap();
+        refused(
+            bytes.clone(),
+            &format!(
+                "the LAZ chunk table at byte {table} lists 100 points (in 1 chunks), but the \
+                 header counts 300"
+            ),
+        );
+        let regression = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("fuzz/regressions/las/laz_table_fewer_points.laz");
+        refused(
+            std::fs::read(regression).unwrap(),
+            "lists 100 points (in 1 chunks), but the header counts 300",
+        );
+        // Two chunks of 100 and 150 points.
+        refused(
+            variable_chunks(&good, &[100, 150]),
+            "lists 250 points (in 2 chunks), but the header counts 300",
+        );
+        // Fixed-size chunks: one chunk of at most 200 points for the header's 300.
+        let vlr = 227 + VLR_HEADER + 10 + VLR_HEADER;
+        let mut bytes = good.clone();
+        put(&mut bytes, vlr + 12, &200u32.to_le_bytes());
+        refused(
+            bytes,
+            "lists 1 chunks of at most 200 points each, but the header counts 300",
+        );
     }
 
     #[test]
