@@ -102,20 +102,49 @@ pub(crate) fn texel_bytes(format: wgpu::TextureFormat) -> u64 {
         .into()
 }
 
-/// `2G`, `512M`, `64K` or plain bytes (binary units), as `--max-memory` takes them.
+/// A size as `--max-memory` takes it: plain bytes (`4096`, `4096B`) or a whole number with a
+/// unit, case-insensitive: `K`, `M`, `G`, `T`, each alone or followed by `B` or `iB` (`64K`,
+/// `512MB`, `2GiB`, `1tb`), with or without a space before it.
+///
+/// The units are binary, whichever way they are written: K = KB = KiB = 1024 bytes, M = MB =
+/// MiB = 1024², G = GB = GiB = 1024³, T = TB = TiB = 1024⁴. That is what `K`, `M`, `G` and `T`
+/// have always meant here, and memory is counted in powers of two, so `MB` means the same as
+/// `M` rather than 10⁶ bytes.
 pub fn parse_bytes(text: &str) -> std::result::Result<u64, String> {
-    let t = text.trim();
-    let (digits, shift) = match t.char_indices().last() {
-        Some((i, 'K' | 'k')) => (&t[..i], 10),
-        Some((i, 'M' | 'm')) => (&t[..i], 20),
-        Some((i, 'G' | 'g')) => (&t[..i], 30),
-        Some((i, 'T' | 't')) => (&t[..i], 40),
-        _ => (t, 0),
+    let bad = || {
+        format!(
+            "'{text}' is not a size: bytes, or a whole number with K, M, G or T \
+             (binary: K = KB = KiB = 1024 bytes), e.g. 512M, 2GB, 1GiB"
+        )
     };
+    let t = text.trim();
+    let lower = t.to_ascii_lowercase();
+    // The unit's letters, from the end: an optional `b` (after an optional `i`), then the
+    // multiplier's letter.
+    let mut rest = lower.as_str();
+    if let Some(r) = rest.strip_suffix("ib") {
+        // `KiB` and the like: `iB` needs a multiplier before it.
+        if !r.ends_with(['k', 'm', 'g', 't']) {
+            return Err(bad());
+        }
+        rest = r;
+    } else if let Some(r) = rest.strip_suffix('b') {
+        rest = r;
+    }
+    let (digits, shift) = match rest.char_indices().last() {
+        Some((i, 'k')) => (&rest[..i], 10),
+        Some((i, 'm')) => (&rest[..i], 20),
+        Some((i, 'g')) => (&rest[..i], 30),
+        Some((i, 't')) => (&rest[..i], 40),
+        _ => (rest, 0),
+    };
+    let digits = digits.trim();
+    if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
+        return Err(bad());
+    }
     let n: u64 = digits
-        .trim()
         .parse()
-        .map_err(|_| format!("'{text}' is not a size (bytes, or with K, M, G, T)"))?;
+        .map_err(|_| format!("'{text}': must be between 1 byte and 16 EiB"))?;
     n.checked_mul(1u64 << shift)
         .filter(|&b| b > 0)
         .ok_or_else(|| format!("'{text}': must be between 1 byte and 16 EiB"))
@@ -133,5 +162,40 @@ mod tests {
         assert!(parse_bytes("0").is_err());
         assert!(parse_bytes("x").is_err());
         assert!(parse_bytes("99999999999T").is_err());
+    }
+
+    #[test]
+    fn units_with_b_and_ib_are_the_same_binary_units() {
+        for (unit, shift) in [("k", 10), ("m", 20), ("g", 30), ("t", 40)] {
+            let want = Ok(3u64 << shift);
+            let upper = unit.to_ascii_uppercase();
+            for form in [
+                format!("3{unit}"),
+                format!("3{upper}"),
+                format!("3{upper}B"),
+                format!("3{unit}b"),
+                format!("3{upper}iB"),
+                format!("3{unit}ib"),
+                format!("3 {upper}B"),
+                format!(" 3{upper}iB "),
+            ] {
+                assert_eq!(parse_bytes(&form), want, "{form}");
+            }
+        }
+        assert_eq!(parse_bytes("1MB"), parse_bytes("1M"));
+        assert_eq!(parse_bytes("1MB"), Ok(1 << 20));
+        assert_eq!(parse_bytes("4096B"), Ok(4096));
+        assert_eq!(parse_bytes("4096b"), Ok(4096));
+    }
+
+    #[test]
+    fn malformed_sizes_are_refused_with_the_units() {
+        for bad in [
+            "", "B", "MB", "iB", "5iB", "1.5G", "-1M", "1KK", "1 M B", "1PB", "0MB",
+        ] {
+            assert!(parse_bytes(bad).is_err(), "{bad:?} parsed");
+        }
+        let e = parse_bytes("12 parsecs").unwrap_err();
+        assert!(e.contains("K, M, G or T") && e.contains("1024"), "{e}");
     }
 }

@@ -145,21 +145,23 @@ pub fn check_output(path: &std::path::Path) -> Result<()> {
 #[derive(clap::Args, Clone, Debug)]
 pub struct CameraArgs {
     /// Separation of adjacent views, scene units (default: a Looking Glass calibration's
-    /// viewCone, else 5 % of the bounding radius).
-    #[arg(long, conflicts_with = "baseline")]
+    /// viewCone, else 5 % of the bounding radius); negative reverses the views' order
+    /// (`--separation -0.1`).
+    #[arg(long, conflicts_with = "baseline", allow_negative_numbers = true)]
     separation: Option<f32>,
     /// Distance between the outermost views instead (separation = B / (N − 1)): keeps the
-    /// views' span fixed when N changes, as on a display whose views share one viewing cone.
-    #[arg(long)]
+    /// views' span fixed when N changes, as on a display whose views share one viewing cone;
+    /// negative reverses the views' order as --separation does.
+    #[arg(long, allow_negative_numbers = true)]
     baseline: Option<f32>,
     /// Focal distance (default: camera to the bounding-box centre, or to --look-at).
-    #[arg(long, conflicts_with = "focal_scale")]
+    #[arg(long, conflicts_with = "focal_scale", allow_negative_numbers = true)]
     focal: Option<f32>,
     /// Focal distance as a multiple of the default.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     focal_scale: Option<f32>,
-    /// Vertical field of view, degrees.
-    #[arg(long, default_value_t = 30.0)]
+    /// Vertical field of view, degrees, between 0 and 180 (exclusive).
+    #[arg(long, default_value_t = 30.0, value_parser = parse_fov, allow_negative_numbers = true)]
     fov: f32,
     /// Camera model: skewed (sheared frusta sharing the focal window; what displays expect) |
     /// parallel (unsheared, images shifted to converge on the focal plane, the uncovered
@@ -179,6 +181,22 @@ pub struct CameraArgs {
     /// y down).
     #[arg(long, value_name = "X,Y,Z", value_parser = parse_vec3, allow_hyphen_values = true)]
     up: Option<glam::Vec3>,
+}
+
+/// `--fov DEGREES`: the vertical field of view, refused in the user's units (degrees) outside
+/// (0, 180).
+pub fn parse_fov(s: &str) -> Result<f32, String> {
+    let deg: f32 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("'{s}' is not a number of degrees (e.g. 30)"))?;
+    if !(deg.is_finite() && deg > 0.0 && deg < 180.0) {
+        return Err(format!(
+            "--fov {s}: the vertical field of view must be between 0 and 180 degrees \
+             (exclusive), e.g. 30"
+        ));
+    }
+    Ok(deg)
 }
 
 /// `X,Y,Z` → a vector of three finite numbers (`-1,2,-3` too: the flags allow a leading
@@ -333,7 +351,8 @@ pub struct RenderArgs {
     pub warp: crate::warp_cmd::WarpArgs,
     #[command(flatten)]
     pub turntable: crate::turntable::TurntableArgs,
-    /// CPU memory budget for loading (bytes, or with K/M/G/T; default 8G): inputs that would
+    /// CPU memory budget for loading (bytes, or with K/M/G/T, KB…TB or KiB…TiB, all binary:
+    /// 1K = 1KB = 1KiB = 1024 bytes; default 8G): inputs that would
     /// need more are refused before anything is allocated.
     #[arg(long, value_parser = autostereo::budget::parse_bytes)]
     pub max_memory: Option<u64>,

@@ -34,11 +34,11 @@ pub struct RgbdArgs {
     #[arg(long)]
     depth_resample: bool,
     /// Depth value (0…1, after --depth-invert) that lands on the display plane.
-    #[arg(long, default_value_t = 0.5)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = 0.5)]
     focus: f32,
     /// Parallax scale: 1 shifts the nearest depth (focus 0) by 3 % of the width in the
     /// outermost views.
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = 1.0)]
     depthiness: f32,
     /// Neighbours warped further apart than this many pixels straddle a disocclusion, filled
     /// from the background side.
@@ -70,7 +70,8 @@ pub struct RgbdArgs {
     /// Timed frames of the spatial image (after two warm-up frames); the median is reported.
     #[arg(long, default_value_t = 1, value_parser = crate::args::frames_parser())]
     frames: u32,
-    /// CPU memory budget for loading (bytes, or with K/M/G/T; default 8G).
+    /// CPU memory budget for loading (bytes, or with K/M/G/T, KB…TB or KiB…TiB, all binary:
+    /// 1K = 1KB = 1KiB = 1024 bytes; default 8G).
     #[arg(long, value_parser = autostereo::budget::parse_bytes)]
     max_memory: Option<u64>,
 }

@@ -77,8 +77,15 @@ pub struct VolumeDataArgs {
     /// Transfer function: a preset (ct-skin, ct-bone, mri, ml) or a file of `s r g b a` lines.
     #[arg(long)]
     tf: Option<String>,
-    /// Rotate the volume by AX,AY,AZ degrees (about x, then y, then z).
-    #[arg(long, value_parser = parse_f32_triple, default_value = "0,0,0")]
+    /// Rotate the volume by AX,AY,AZ degrees (about x, then y, then z); negative angles as
+    /// they are (`--rotate -90,0,0`).
+    #[arg(
+        long,
+        value_name = "AX,AY,AZ",
+        value_parser = parse_f32_triple,
+        default_value = "0,0,0",
+        allow_hyphen_values = true
+    )]
     rotate: [f32; 3],
     /// Raw files: dimensions X,Y,Z.
     #[arg(long, value_parser = parse_u32_triple)]
@@ -109,8 +116,8 @@ pub struct VolumeRenderArgs {
     /// Slices path: per-channel (exact) or the paper's averaged α.
     #[arg(long, value_enum, default_value = "exact")]
     alpha: AlphaArg,
-    /// Samples across the volume's diagonal.
-    #[arg(long, conflicts_with = "step")]
+    /// Samples across the volume's diagonal (at least 3).
+    #[arg(long, conflicts_with = "step", value_parser = parse_slices)]
     slices: Option<u32>,
     /// Sampling distance in voxels of the smallest spacing (default 0.5).
     #[arg(long)]
@@ -154,6 +161,24 @@ fn parse_triple<T: std::str::FromStr>(s: &str) -> Result<[T; 3], String> {
 
 fn parse_u32_triple(s: &str) -> Result<[u32; 3], String> {
     parse_triple(s)
+}
+
+/// `--slices N`: with fewer than 3 samples across the diagonal
+/// ([`VolumeScene::step_for_slices`]: a step of diagonal / N) the image is background only
+/// (measured: the built-in head and ml sets, compute and slices paths; 3 is the least that
+/// shows the volume), so they are refused with the fix instead of writing a blank image.
+fn parse_slices(s: &str) -> Result<u32, String> {
+    let n: u32 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("'{s}' is not a whole number of samples"))?;
+    if n < 3 {
+        return Err(format!(
+            "--slices {n} samples nothing of the volume (the image would be background): \
+             give at least 3 samples across its diagonal (e.g. --slices 256), or --step"
+        ));
+    }
+    Ok(n)
 }
 
 fn parse_f32_triple(s: &str) -> Result<[f32; 3], String> {

@@ -31,7 +31,8 @@ mod memory;
 use images::copyable_target;
 use memory::MemoryLog;
 
-/// Frames after which `--screenshot` is taken without `--quit-after-frames`.
+/// Frames after which `--screenshot` is taken (and the viewer exits, without `--keep-open`)
+/// without `--quit-after-frames`.
 const SCREENSHOT_FRAME: u32 = 3;
 
 /// Displays the `d` key steps through after the one given.
@@ -481,8 +482,13 @@ impl State {
         // groups) now rather than whenever the backend next looks.
         let _ = device.poll(wgpu::PollType::Poll);
         self.frames += 1;
-        let last = args.quit_after_frames.or(args.exercise);
         let shot_at = args.quit_after_frames.unwrap_or(SCREENSHOT_FRAME);
+        // A screenshot ends the run (scripts wait for the process) unless --keep-open.
+        let last = args.quit_after_frames.or(args.exercise).or(args
+            .screenshot
+            .as_ref()
+            .filter(|_| !args.keep_open)
+            .map(|_| shot_at));
         if let Some(path) = args.screenshot.as_ref().filter(|_| self.frames == shot_at) {
             self.screenshot(&surface_texture.texture, target)?
                 .save_png(path)?;

@@ -106,9 +106,14 @@ pub struct ViewArgs {
     #[arg(long, value_enum, default_value = "spatial")]
     preview: Preview,
     /// Save what was presented as PNG (read back from the surface texture) after
-    /// --quit-after-frames frames, or after 3.
+    /// --quit-after-frames frames, or after 3, and then exit (for scripts), unless
+    /// --keep-open.
     #[arg(long)]
     screenshot: Option<PathBuf>,
+    /// With --screenshot: keep the window open after the screenshot is saved (until Esc or
+    /// the window is closed) instead of exiting.
+    #[arg(long, requires = "screenshot", conflicts_with = "quit_after_frames")]
+    keep_open: bool,
     /// Exit after K presented frames.
     #[arg(long)]
     quit_after_frames: Option<u32>,

@@ -1,0 +1,276 @@
+//! Issue 31, "the command line as one vocabulary": each finding fixed here has a test that
+//! fails on the binary before the fix. Negative numbers parse as values; `--max-memory` takes
+//! `MB`, `GiB`…; `--slices` under 3 (an all-background image) is refused by name; `view
+//! --screenshot` exits once the file is written; `--fov` is checked in degrees where it is
+//! parsed.
+
+mod common;
+
+use std::path::PathBuf;
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+use common::cli;
+
+fn out(name: &str) -> PathBuf {
+    common::out_dir().join(name)
+}
+
+/// A small, fast volume render of the built-in head into `png` with `extra` flags.
+fn volume(png: &std::path::Path, extra: &[&str]) -> (bool, String) {
+    let mut args = vec![
+        "volume",
+        "--builtin-size",
+        "16",
+        "--size",
+        "32x24",
+        "--out",
+        png.to_str().unwrap(),
+    ];
+    args.extend_from_slice(extra);
+    cli(&args)
+}
+
+#[test]
+fn negative_numbers_parse_as_values() {
+    // `--rotate -90,0,0` was "unexpected argument '-9'"; it is the same as `--rotate=-90,0,0`.
+    let spaced = out("vocabulary_rotate_spaced.png");
+    let joined = out("vocabulary_rotate_joined.png");
+    let (ok, stderr) = volume(&spaced, &["--rotate", "-90,0,0"]);
+    assert!(ok, "--rotate -90,0,0: {stderr}");
+    let (ok, stderr) = volume(&joined, &["--rotate=-90,0,0"]);
+    assert!(ok, "--rotate=-90,0,0: {stderr}");
+    assert_eq!(
+        std::fs::read(&spaced).unwrap(),
+        std::fs::read(&joined).unwrap(),
+        "--rotate -90,0,0 and --rotate=-90,0,0 differ"
+    );
+    // A negative separation or baseline (the views in reverse order) renders.
+    for flags in [["--separation", "-1"], ["--baseline", "-2"]] {
+        let png = out(&format!("vocabulary_{}.png", &flags[0][2..]));
+        let _ = std::fs::remove_file(&png);
+        let (ok, stderr) = volume(&png, &flags);
+        assert!(ok, "{flags:?}: {stderr}");
+        assert!(png.exists(), "{flags:?} wrote nothing");
+    }
+    // A negative focal distance parses, and the library refuses it by name (not clap's
+    // "unexpected argument").
+    for flags in [["--focal", "-1"], ["--focal-scale", "-0.5"]] {
+        let (ok, stderr) = volume(&out("vocabulary_focal.png"), &flags);
+        assert!(!ok, "{flags:?} succeeded");
+        assert!(
+            !stderr.contains("unexpected argument"),
+            "{flags:?}: {stderr}"
+        );
+        assert!(stderr.contains("focal distance"), "{flags:?}: {stderr}");
+        assert!(stderr.contains("positive"), "{flags:?}: {stderr}");
+    }
+    // rgbd's signed numbers: a negative depthiness (parallax reversed) parses (the missing
+    // input is what is refused).
+    let rgbd_out = out("vocabulary_rgbd.png");
+    let (ok, stderr) = cli(&[
+        "rgbd",
+        "nosuch.png",
+        "--sbs",
+        "--depthiness",
+        "-1",
+        "--out",
+        rgbd_out.to_str().unwrap(),
+    ]);
+    assert!(!ok);
+    assert!(!stderr.contains("unexpected argument"), "{stderr}");
+    assert!(stderr.contains("nosuch.png"), "{stderr}");
+}
+
+#[test]
+fn max_memory_takes_kb_mb_kib_and_mib() {
+    // `--max-memory 1MB` was refused ("not a size"); every spelling of the unit is 1024-based,
+    // as K, M, G and T always were: the budget error names 1024 bytes for each of these.
+    for size in ["1K", "1KB", "1kb", "1KiB", "1 KiB"] {
+        let (ok, stderr) = volume(&out("vocabulary_budget.png"), &["--max-memory", size]);
+        assert!(!ok, "--max-memory {size}: a 16³ volume fits 1 KiB?");
+        assert!(
+            !stderr.contains("not a size"),
+            "--max-memory {size}: {stderr}"
+        );
+        assert!(
+            stderr.contains("memory budget of 1024 bytes"),
+            "--max-memory {size}: {stderr}"
+        );
+    }
+    for size in ["1MB", "1MiB", "1mb", "1GB", "2GiB", "1TB"] {
+        let (ok, stderr) = volume(&out("vocabulary_budget_ok.png"), &["--max-memory", size]);
+        assert!(ok, "--max-memory {size}: {stderr}");
+    }
+    let (ok, stderr) = volume(&out("vocabulary_budget.png"), &["--max-memory", "1PB"]);
+    assert!(!ok);
+    assert!(
+        stderr.contains("--max-memory") && stderr.contains("K, M, G or T"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn slices_under_three_are_refused_by_name() {
+    // `--slices 0`, `1` and `2` wrote an all-black image with exit 0.
+    for n in ["0", "1", "2"] {
+        let png = out(&format!("vocabulary_slices_{n}.png"));
+        let _ = std::fs::remove_file(&png);
+        let (ok, stderr) = volume(&png, &["--slices", n]);
+        assert!(!ok, "--slices {n} succeeded");
+        assert!(stderr.contains(&format!("--slices {n}")), "{stderr}");
+        assert!(stderr.contains("at least 3"), "{stderr}");
+        assert!(!png.exists(), "--slices {n} wrote {}", png.display());
+    }
+    // Three samples across the diagonal do sample the volume: not a background-only image.
+    let png = out("vocabulary_slices_3.png");
+    let (ok, stderr) = volume(&png, &["--slices", "3"]);
+    assert!(ok, "--slices 3: {stderr}");
+    let image = image::open(&png).unwrap().to_rgb8();
+    let first = *image.get_pixel(0, 0);
+    assert!(
+        image.pixels().any(|p| *p != first),
+        "--slices 3 rendered a uniform image"
+    );
+}
+
+#[test]
+fn fov_errors_are_in_degrees_and_name_the_flag() {
+    // `--fov=180` was "invalid field of view: fov 3.1415927 rad, aspect …".
+    for fov in ["180", "0", "-10", "400", "nan"] {
+        let (ok, stderr) = volume(&out("vocabulary_fov.png"), &["--fov", fov]);
+        assert!(!ok, "--fov {fov} succeeded");
+        assert!(stderr.contains("--fov"), "--fov {fov}: {stderr}");
+        assert!(
+            stderr.contains("between 0 and 180 degrees"),
+            "--fov {fov}: {stderr}"
+        );
+        assert!(!stderr.contains("rad"), "--fov {fov}: {stderr}");
+    }
+    let (ok, stderr) = volume(&out("vocabulary_fov.png"), &["--fov", "wide"]);
+    assert!(!ok);
+    assert!(
+        stderr.contains("--fov") && stderr.contains("degrees"),
+        "{stderr}"
+    );
+    let (ok, stderr) = volume(&out("vocabulary_fov.png"), &["--fov", "179"]);
+    assert!(ok, "--fov 179: {stderr}");
+}
+
+/// An X server of our own, stopped on drop (as in tests/viewer.rs).
+struct Xvfb {
+    child: Child,
+    display: String,
+}
+
+impl Xvfb {
+    /// Start one on a free display, or `None` where the machine has no Xvfb.
+    fn start() -> Option<Self> {
+        use std::io::BufRead;
+        let mut child = Command::new("Xvfb")
+            .args([
+                "-displayfd",
+                "1",
+                "-screen",
+                "0",
+                "1024x768x24",
+                "-nolisten",
+                "tcp",
+            ])
+            .stdout(Stdio::piped())
+            .stderr(Stdio::null())
+            .spawn()
+            .ok()?;
+        let mut line = String::new();
+        let stdout = child.stdout.take().expect("piped");
+        std::io::BufReader::new(stdout)
+            .read_line(&mut line)
+            .unwrap();
+        let n: u32 = line
+            .trim()
+            .parse()
+            .unwrap_or_else(|_| panic!("Xvfb did not come up (said {line:?})"));
+        Some(Self {
+            child,
+            display: format!(":{n}"),
+        })
+    }
+}
+
+impl Drop for Xvfb {
+    fn drop(&mut self) {
+        let _ = Command::new("kill")
+            .args(["-TERM", &self.child.id().to_string()])
+            .status();
+        let _ = self.child.wait();
+    }
+}
+
+#[test]
+fn a_screenshot_ends_the_viewer_unless_keep_open() {
+    // Refused before any window opens: --keep-open is about the screenshot.
+    let (ok, stderr) = cli(&["view", "--keep-open"]);
+    assert!(!ok);
+    assert!(stderr.contains("--screenshot"), "{stderr}");
+    let help = Command::new(env!("CARGO_BIN_EXE_autostereo"))
+        .args(["view", "--help"])
+        .output()
+        .unwrap();
+    let help = String::from_utf8_lossy(&help.stdout);
+    assert!(help.contains("--keep-open"), "{help}");
+    assert!(help.contains("then exit"), "{help}");
+
+    let Some(x) = Xvfb::start() else {
+        eprintln!("no Xvfb here: the viewer's exit after --screenshot is not run");
+        return;
+    };
+    // `view --screenshot s.png` saved the file and then ran forever.
+    let shot = out("vocabulary_screenshot.png");
+    let _ = std::fs::remove_file(&shot);
+    let mut child = Command::new(env!("CARGO_BIN_EXE_autostereo"))
+        .args([
+            "view",
+            "--builtin-size",
+            "16",
+            "--size",
+            "64x48",
+            "--screenshot",
+            shot.to_str().unwrap(),
+        ])
+        .env("DISPLAY", &x.display)
+        .env_remove("WAYLAND_DISPLAY")
+        .env("RUST_LOG", "off")
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break Some(status);
+        }
+        if start.elapsed() > Duration::from_secs(120) {
+            break None;
+        }
+        std::thread::sleep(Duration::from_millis(100));
+    };
+    let Some(status) = status else {
+        let _ = child.kill();
+        let _ = child.wait();
+        panic!(
+            "view --screenshot still running after 120 s (screenshot written: {})",
+            shot.exists()
+        );
+    };
+    let mut stderr = String::new();
+    use std::io::Read;
+    child
+        .stderr
+        .take()
+        .unwrap()
+        .read_to_string(&mut stderr)
+        .unwrap();
+    assert!(status.success(), "view --screenshot: {stderr}");
+    let image = image::open(&shot).unwrap();
+    assert_eq!([image.width(), image.height()], [64, 48]);
+}
