@@ -58,7 +58,7 @@ impl PointFlags {
         }
         if !(self.radius_scale.is_finite() && self.radius_scale > 0.0) {
             bail!(
-                "--radius-scale {}: must be a finite number > 0 (0 draws nothing)",
+                "--radius-scale {}: the radius scale must be a finite number > 0 (0 draws nothing)",
                 self.radius_scale
             );
         }

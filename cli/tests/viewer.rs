@@ -7,94 +7,11 @@
 mod common;
 
 use std::path::{Path, PathBuf};
-use std::process::{Child, Command};
+use std::process::Command;
 
 use autostereo::image_io::{compare, RgbImage};
 
-/// An X server of our own, stopped on drop.
-struct Xvfb {
-    child: Child,
-    display: String,
-}
-
-impl Xvfb {
-    /// Start one on a free display (Xvfb picks it and says which: `-displayfd`), or `None`
-    /// where the machine has no Xvfb.
-    fn start() -> Option<Self> {
-        use std::io::BufRead;
-        let mut child = Command::new("Xvfb")
-            .args([
-                "-displayfd",
-                "1",
-                "-screen",
-                "0",
-                "1024x768x24",
-                "-nolisten",
-                "tcp",
-            ])
-            .stdout(std::process::Stdio::piped())
-            .stderr(std::process::Stdio::null())
-            .spawn()
-            .ok()?;
-        let mut line = String::new();
-        let stdout = child.stdout.take().expect("piped");
-        std::io::BufReader::new(stdout)
-            .read_line(&mut line)
-            .unwrap();
-        let n: u32 = line
-            .trim()
-            .parse()
-            .unwrap_or_else(|_| panic!("Xvfb did not come up (said {line:?})"));
-        Some(Self {
-            child,
-            display: format!(":{n}"),
-        })
-    }
-
-    /// Run the CLI on this display; (success, stdout, stderr).
-    fn cli(&self, args: &[&str]) -> (bool, String, String) {
-        let out = Command::new(env!("CARGO_BIN_EXE_autostereo"))
-            .args(args)
-            .env("DISPLAY", &self.display)
-            .env_remove("WAYLAND_DISPLAY")
-            .env("RUST_LOG", "off")
-            .output()
-            .unwrap();
-        (
-            out.status.success(),
-            String::from_utf8_lossy(&out.stdout).into_owned(),
-            String::from_utf8_lossy(&out.stderr).into_owned(),
-        )
-    }
-}
-
-impl Drop for Xvfb {
-    fn drop(&mut self) {
-        // SIGTERM, so that Xvfb removes its lock file and socket (a kill would leave them).
-        let _ = Command::new("kill")
-            .args(["-TERM", &self.child.id().to_string()])
-            .status();
-        let _ = self.child.wait();
-    }
-}
-
-/// An Xvfb of our own, or — on a machine without it — the viewer's clear error asserted and
-/// `None`.
-fn xvfb_or_clear_error() -> Option<Xvfb> {
-    if let Some(x) = Xvfb::start() {
-        return Some(x);
-    }
-    let out = Command::new(env!("CARGO_BIN_EXE_autostereo"))
-        .args(["view", "--quit-after-frames", "1"])
-        .env_remove("DISPLAY")
-        .env_remove("WAYLAND_DISPLAY")
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(!out.status.success(), "a window opened without a display");
-    assert!(stderr.contains("window system"), "{stderr}");
-    None
-}
+use common::xvfb::{xvfb_or_clear_error, Xvfb};
 
 fn out(name: &str) -> PathBuf {
     common::out_dir().join(name)

@@ -65,6 +65,53 @@ pub(crate) fn fullscreen_pipeline_to(
     })
 }
 
+/// A pipeline of instanced quads (`vs_main`, six vertices each, no vertex buffers) whose
+/// `fs_main` blends "over" what is in the `format` target with one α per channel (dual-source
+/// blending: `dst = color + (1 − α_c)·dst`): the volume slices' and the Gaussians' passes.
+pub(crate) fn over_per_channel_pipeline(
+    device: &wgpu::Device,
+    label: &str,
+    layout: &wgpu::PipelineLayout,
+    module: &wgpu::ShaderModule,
+    constants: &[(&str, f64)],
+    format: wgpu::TextureFormat,
+) -> wgpu::RenderPipeline {
+    let options = compilation(constants);
+    let over = wgpu::BlendComponent {
+        src_factor: wgpu::BlendFactor::One,
+        dst_factor: wgpu::BlendFactor::OneMinusSrc1,
+        operation: wgpu::BlendOperation::Add,
+    };
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some(label),
+        layout: Some(layout),
+        vertex: wgpu::VertexState {
+            module,
+            entry_point: Some("vs_main"),
+            compilation_options: options.clone(),
+            buffers: &[],
+        },
+        primitive: wgpu::PrimitiveState::default(),
+        depth_stencil: None,
+        multisample: Default::default(),
+        fragment: Some(wgpu::FragmentState {
+            module,
+            entry_point: Some("fs_main"),
+            compilation_options: options,
+            targets: &[Some(wgpu::ColorTargetState {
+                format,
+                blend: Some(wgpu::BlendState {
+                    color: over,
+                    alpha: over,
+                }),
+                write_mask: wgpu::ColorWrites::ALL,
+            })],
+        }),
+        multiview_mask: None,
+        cache: None,
+    })
+}
+
 /// Compilation options with `constants` (the overrides of `wgsl/shared/multiview.wgsl` and
 /// the stage's own) and zeroed workgroup memory: every pipeline of the crate compiles so.
 pub(crate) fn compilation<'a>(

@@ -5,7 +5,7 @@
 // blends it "over" what lies behind with its own α (dual-source blending: one α per channel).
 // With params.fixed_view every channel shows the view at params.offsets.z (N-pass, single view,
 // and the tiles of a quilt, drawn with the tile as the viewport).
-// Accumulates in an RGBA16F target cleared to the background (gaussians/resolve.wgsl copies it).
+// Accumulates in an RGBA16F target cleared to the background (render/accumulation_resolve.wgsl copies it).
 enable dual_source_blending;
 #import shared/frame.wgsl
 #import shared/multiview.wgsl

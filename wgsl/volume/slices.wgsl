@@ -5,7 +5,7 @@
 // pre-integrated and shaded, and composited "over" what lies behind.
 //   paper α: one α per pixel, the mean of the K views' (2007 GPUs had one blend α);
 //   exact α: dual-source blending, one α per channel (matches N-pass).
-// Accumulates in an RGBA16F target cleared to the background (volume/slices_resolve.wgsl
+// Accumulates in an RGBA16F target cleared to the background (render/accumulation_resolve.wgsl
 // copies it to the spatial image).
 enable dual_source_blending;
 #import shared/frame.wgsl

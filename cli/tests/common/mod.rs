@@ -9,6 +9,9 @@ pub use shared::*;
 /// A small 3DGS scene as graphdeco PLY.
 pub mod gaussians_ply;
 
+/// Xvfb for the viewer's tests.
+pub mod xvfb;
+
 /// Run the CLI with logging off; return (success, stderr).
 pub fn cli(args: &[&str]) -> (bool, String) {
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_autostereo"))

@@ -21,7 +21,7 @@ use crate::render::gpu_buffer::GpuBuffer;
 use crate::render::pass_params::PassParams;
 use crate::render::pipeline::{
     begin_pass, bind_group_layout, cleared, compilation, draw_fullscreen, fullscreen_pipeline,
-    pipeline_layout, storage_entry,
+    over_per_channel_pipeline, pipeline_layout, storage_entry,
 };
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::quilt::QuiltLayout;
@@ -211,7 +211,7 @@ impl GaussianSplatter {
                 count: None,
             }],
         );
-        let module = crate::shader::module(device, "gaussians/resolve.wgsl")?;
+        let module = crate::shader::module(device, "render/accumulation_resolve.wgsl")?;
         let resolve = crate::gpu::checked(device, "building the Gaussian resolve", || {
             fullscreen_pipeline(
                 device,
@@ -275,12 +275,6 @@ impl GaussianSplatter {
         let frame_layout = frame_bind_group_layout(device);
         let splat_layout = &self.splat_layout;
         let constants = spec.constants(&[]);
-        let options = compilation(&constants);
-        let over = wgpu::BlendComponent {
-            src_factor: wgpu::BlendFactor::One,
-            dst_factor: wgpu::BlendFactor::OneMinusSrc1,
-            operation: wgpu::BlendOperation::Add,
-        };
         self.pipelines.prepare(device, spec, |modules| {
             let layout = pipeline_layout(
                 device,
@@ -288,36 +282,14 @@ impl GaussianSplatter {
                 &[Some(&frame_layout), Some(splat_layout)],
             );
             let module = modules.get(device, "gaussians/splat.wgsl")?;
-            Ok(
-                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                    label: Some("gaussian splats"),
-                    layout: Some(&layout),
-                    vertex: wgpu::VertexState {
-                        module: &module,
-                        entry_point: Some("vs_main"),
-                        compilation_options: options.clone(),
-                        buffers: &[],
-                    },
-                    primitive: wgpu::PrimitiveState::default(),
-                    depth_stencil: None,
-                    multisample: Default::default(),
-                    fragment: Some(wgpu::FragmentState {
-                        module: &module,
-                        entry_point: Some("fs_main"),
-                        compilation_options: options,
-                        targets: &[Some(wgpu::ColorTargetState {
-                            format: ACCUMULATION_FORMAT,
-                            blend: Some(wgpu::BlendState {
-                                color: over,
-                                alpha: over,
-                            }),
-                            write_mask: wgpu::ColorWrites::ALL,
-                        })],
-                    }),
-                    multiview_mask: None,
-                    cache: None,
-                }),
-            )
+            Ok(over_per_channel_pipeline(
+                device,
+                "gaussian splats",
+                &layout,
+                &module,
+                &constants,
+                ACCUMULATION_FORMAT,
+            ))
         })?;
         Ok(())
     }

@@ -11,7 +11,7 @@ use super::resources::VolumeResources;
 use crate::error::{Error, Result};
 use crate::frame::Frame;
 use crate::render::pipeline::{
-    begin_pass, cleared, compilation, draw_fullscreen, fullscreen_pipeline,
+    begin_pass, cleared, draw_fullscreen, fullscreen_pipeline, over_per_channel_pipeline,
 };
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
@@ -119,7 +119,7 @@ impl VolumeSlicer {
                 multisampled: false,
             },
         );
-        let module = crate::shader::module(device, "volume/slices_resolve.wgsl")?;
+        let module = crate::shader::module(device, "render/accumulation_resolve.wgsl")?;
         let resolve = crate::gpu::checked(device, "building the volume slice resolve", || {
             fullscreen_pipeline(
                 device,
@@ -146,45 +146,17 @@ impl VolumeSlicer {
         let (alpha, resources, slices_layout) = (self.alpha, &self.resources, &self.slices_layout);
         let exact = (alpha == AlphaMode::Exact) as u32 as f64;
         let constants = spec.constants(&[("EXACT_ALPHA", exact)]);
-        let options = compilation(&constants);
-        let over = wgpu::BlendComponent {
-            src_factor: wgpu::BlendFactor::One,
-            dst_factor: wgpu::BlendFactor::OneMinusSrc1,
-            operation: wgpu::BlendOperation::Add,
-        };
         self.pipelines.prepare(device, spec, |modules| {
             let layout = resources.pipeline_layout(device, "volume slices", slices_layout);
             let module = modules.get(device, "volume/slices.wgsl")?;
-            Ok(
-                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                    label: Some("volume slices"),
-                    layout: Some(&layout),
-                    vertex: wgpu::VertexState {
-                        module: &module,
-                        entry_point: Some("vs_main"),
-                        compilation_options: options.clone(),
-                        buffers: &[],
-                    },
-                    primitive: wgpu::PrimitiveState::default(),
-                    depth_stencil: None,
-                    multisample: Default::default(),
-                    fragment: Some(wgpu::FragmentState {
-                        module: &module,
-                        entry_point: Some("fs_main"),
-                        compilation_options: options,
-                        targets: &[Some(wgpu::ColorTargetState {
-                            format: ACCUMULATION_FORMAT,
-                            blend: Some(wgpu::BlendState {
-                                color: over,
-                                alpha: over,
-                            }),
-                            write_mask: wgpu::ColorWrites::ALL,
-                        })],
-                    }),
-                    multiview_mask: None,
-                    cache: None,
-                }),
-            )
+            Ok(over_per_channel_pipeline(
+                device,
+                "volume slices",
+                &layout,
+                &module,
+                &constants,
+                ACCUMULATION_FORMAT,
+            ))
         })?;
         Ok(())
     }

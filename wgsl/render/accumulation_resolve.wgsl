@@ -1,5 +1,5 @@
-// Copies the RGBA16F slice accumulation (already composited over the background) into the
-// spatial image.
+// Copies an RGBA16F accumulation (already composited over the background: the volume slices',
+// the Gaussians') into the spatial image, a view layer or a quilt atlas.
 #import shared/frame.wgsl
 
 // Bindings read by shared/frame.wgsl.

@@ -1,0 +1,90 @@
+//! An X server of the tests' own (Xvfb; CI installs it: .ci/run), for the viewer's tests in a
+//! real window.
+
+use std::process::{Child, Command};
+
+/// An X server of our own, stopped on drop.
+pub struct Xvfb {
+    child: Child,
+    /// The `DISPLAY` it serves.
+    pub display: String,
+}
+
+impl Xvfb {
+    /// Start one on a free display (Xvfb picks it and says which: `-displayfd`), or `None`
+    /// where the machine has no Xvfb.
+    pub fn start() -> Option<Self> {
+        use std::io::BufRead;
+        let mut child = Command::new("Xvfb")
+            .args([
+                "-displayfd",
+                "1",
+                "-screen",
+                "0",
+                "1024x768x24",
+                "-nolisten",
+                "tcp",
+            ])
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .ok()?;
+        let mut line = String::new();
+        let stdout = child.stdout.take().expect("piped");
+        std::io::BufReader::new(stdout)
+            .read_line(&mut line)
+            .unwrap();
+        let n: u32 = line
+            .trim()
+            .parse()
+            .unwrap_or_else(|_| panic!("Xvfb did not come up (said {line:?})"));
+        Some(Self {
+            child,
+            display: format!(":{n}"),
+        })
+    }
+
+    /// Run the CLI on this display; (success, stdout, stderr).
+    pub fn cli(&self, args: &[&str]) -> (bool, String, String) {
+        let out = Command::new(env!("CARGO_BIN_EXE_autostereo"))
+            .args(args)
+            .env("DISPLAY", &self.display)
+            .env_remove("WAYLAND_DISPLAY")
+            .env("RUST_LOG", "off")
+            .output()
+            .unwrap();
+        (
+            out.status.success(),
+            String::from_utf8_lossy(&out.stdout).into_owned(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
+    }
+}
+
+impl Drop for Xvfb {
+    fn drop(&mut self) {
+        // SIGTERM, so that Xvfb removes its lock file and socket (a kill would leave them).
+        let _ = Command::new("kill")
+            .args(["-TERM", &self.child.id().to_string()])
+            .status();
+        let _ = self.child.wait();
+    }
+}
+
+/// An Xvfb of our own, or — on a machine without it — the viewer's clear error asserted and
+/// `None`.
+pub fn xvfb_or_clear_error() -> Option<Xvfb> {
+    if let Some(x) = Xvfb::start() {
+        return Some(x);
+    }
+    let out = Command::new(env!("CARGO_BIN_EXE_autostereo"))
+        .args(["view", "--quit-after-frames", "1"])
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success(), "a window opened without a display");
+    assert!(stderr.contains("window system"), "{stderr}");
+    None
+}
