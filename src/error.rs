@@ -64,7 +64,7 @@ pub enum Error {
         reason: String,
     },
     /// A display specification string could not be understood.
-    #[error("display spec '{spec}': {reason} (expected hubner8 | lenticular:N | slanted:N,PITCH,SLANT,PHASE | lkg[:PATH.json] | view:N,V)")]
+    #[error("display spec '{spec}': {reason}")]
     DisplaySpec {
         /// The spec as given.
         spec: String,

@@ -59,6 +59,10 @@ pub fn describe(error: &anyhow::Error) -> String {
                 Some(flag) => format!("{flag}: {cause}"),
                 None => cause.to_string(),
             },
+            // Every display spec the user types is `--display`'s.
+            Some(autostereo::Error::DisplaySpec { spec, reason }) => {
+                format!("--display {spec}: {reason}")
+            }
             _ => cause.to_string(),
         })
         .collect();

@@ -225,3 +225,51 @@ fn a_screenshot_ends_the_viewer_unless_keep_open() {
     let image = image::open(&shot).unwrap();
     assert_eq!([image.width(), image.height()], [64, 48]);
 }
+
+/// A 45-view quilt on an 8-view display: the display's views spread across the quilt's cone
+/// (view i ← quilt view round(i·44/7)), said on stderr, not quilt views 0–7 (one edge of it).
+#[test]
+fn a_larger_quilt_is_spread_over_the_display_views() {
+    use autostereo::image_io::RgbImage;
+    use autostereo::render::quilt::QuiltLayout;
+    let tile = [8, 6];
+    let layout = QuiltLayout::with_grid(9, 5, tile, 45).unwrap();
+    let size = layout.size();
+    let mut quilt = RgbImage::new(size[0], size[1]);
+    // Tile t is solid (t + 1)·5 in every channel (none black: black tiles count as empty).
+    let colour = |t: u32| ((t + 1) * 5) as u8;
+    for t in 0..45 {
+        let [x0, y0] = layout.tile_origin(t);
+        for y in 0..tile[1] {
+            for x in 0..tile[0] {
+                for c in 0..3 {
+                    quilt.set(x0 + x, y0 + y, c, colour(t));
+                }
+            }
+        }
+    }
+    let path = layout.file_name(&out("vocabulary_quilt45.png"));
+    quilt.save_png(&path).unwrap();
+    let spatial = out("vocabulary_quilt45_on_8.png");
+    let (ok, stderr) = cli(&[
+        "interleave",
+        path.to_str().unwrap(),
+        "--display",
+        "lenticular:8",
+        "--size",
+        "48x24",
+        "--out",
+        spatial.to_str().unwrap(),
+    ]);
+    assert!(ok, "{stderr}");
+    assert!(
+        stderr.contains(
+            "the quilt has 45 views, the display 8: using quilt views 0, 6, 13, 19, 25, 31, 38, 44"
+        ),
+        "{stderr}"
+    );
+    let image = RgbImage::load_png(&spatial).unwrap();
+    let seen: std::collections::BTreeSet<u8> = image.data.iter().copied().collect();
+    let picked: std::collections::BTreeSet<u8> = [0, 6, 13, 19, 25, 31, 38, 44].map(colour).into();
+    assert_eq!(seen, picked);
+}

@@ -34,10 +34,18 @@ fn bad(spec: &str, what: &str, text: &str) -> Error {
     spec_error(spec, format!("{what} '{text}' is not a number"))
 }
 
+/// The spec kinds, for an error that does not know which one was meant.
+const KINDS: &str =
+    "expected hubner8 | lenticular:N | slanted:N,PITCH,SLANT,PHASE | lkg[:PATH.json] | view:N,V";
+
 fn parse_views(spec: &str, text: &str) -> Result<u32> {
-    text.trim()
-        .parse()
-        .map_err(|_| spec_error(spec, format!("view count '{text}' is not a whole number")))
+    let text = text.trim();
+    text.parse().map_err(|_| {
+        spec_error(
+            spec,
+            format!("'{text}' is not a view count (a whole number ≥ 1)"),
+        )
+    })
 }
 
 pub(super) fn parse_kind(spec: &str) -> Result<DisplayKind> {
@@ -83,7 +91,13 @@ pub(super) fn parse_kind(spec: &str) -> Result<DisplayKind> {
                 ));
             }
             let view = parts[1].trim().parse().map_err(|_| {
-                spec_error(spec, format!("view '{}' is not a whole number", parts[1]))
+                spec_error(
+                    spec,
+                    format!(
+                        "'{}' is not a view index (a whole number from 0)",
+                        parts[1].trim()
+                    ),
+                )
             })?;
             Ok(DisplayKind::OneView {
                 views: parse_views(spec, parts[0])?,
@@ -100,14 +114,29 @@ pub(super) fn parse_kind(spec: &str) -> Result<DisplayKind> {
                     })?,
                 path => path.into(),
             };
-            let calibration = Calibration::load(&path)?;
+            let calibration = Calibration::load(&path).map_err(|e| match e {
+                Error::Io { error, .. } if error.kind() == std::io::ErrorKind::NotFound => {
+                    spec_error(
+                        spec,
+                        format!(
+                            "no such calibration file {} (lkg:PATH.json names a Looking Glass's \
+                             visual.json; lkg alone finds the attached one's)",
+                            path.display()
+                        ),
+                    )
+                }
+                other => other,
+            })?;
             // The family's view count (its quilt's tiles), as Looking Glass software uses.
             let views = calibration
                 .family()
                 .map_or(LOOKING_GLASS_DEFAULT_VIEWS, |f| f.views());
             Ok(DisplayKind::LookingGlass { views, calibration })
         }
-        other => Err(spec_error(spec, format!("unknown display kind '{other}'"))),
+        other => Err(spec_error(
+            spec,
+            format!("unknown display kind '{other}' ({KINDS})"),
+        )),
     }
 }
 
@@ -177,6 +206,27 @@ mod tests {
         ] {
             let err = parse_kind(spec).unwrap_err();
             assert!(matches!(err, Error::DisplaySpec { .. }), "{spec}: {err}");
+        }
+    }
+
+    #[test]
+    fn errors_say_what_is_wrong_with_the_number_and_the_file() {
+        for (spec, says) in [
+            (
+                "lenticular:abc",
+                "'abc' is not a view count (a whole number ≥ 1)",
+            ),
+            ("lenticular:-2", "'-2' is not a view count"),
+            ("slanted:x,8,1,0", "'x' is not a view count"),
+            ("view:8,x", "'x' is not a view index"),
+            (
+                "hologram",
+                "unknown display kind 'hologram' (expected hubner8",
+            ),
+            ("lkg:nosuch.json", "no such calibration file nosuch.json"),
+        ] {
+            let err = parse_kind(spec).unwrap_err().to_string();
+            assert!(err.contains(says), "{spec}: {err}");
         }
     }
 }

@@ -198,6 +198,69 @@ fn check_monitor(window: &Window, display: &Display) {
     }
 }
 
+/// The largest surface side among the adapters the viewer could choose (`WGPU_BACKEND`,
+/// `WGPU_ADAPTER_NAME`), and that adapter's name; wgpu's default limit (8192) where none is
+/// found (the context's own error then says so).
+fn largest_surface(instance: &wgpu::Instance) -> (u32, String) {
+    let backends = autostereo::gpu::GpuOptions::default().backends();
+    let name = std::env::var("WGPU_ADAPTER_NAME")
+        .ok()
+        .filter(|n| !n.is_empty())
+        .map(|n| n.to_lowercase());
+    block_on(instance.enumerate_adapters(backends))
+        .into_iter()
+        .filter_map(|adapter| {
+            let info = adapter.get_info();
+            let chosen = name
+                .as_ref()
+                .is_none_or(|n| info.name.to_lowercase().contains(n));
+            chosen.then(|| {
+                (
+                    adapter.limits().max_texture_dimension_2d,
+                    format!("{} ({:?})", info.name, info.backend),
+                )
+            })
+        })
+        .max_by_key(|(limit, _)| *limit)
+        .unwrap_or_else(|| {
+            (
+                wgpu::Limits::default().max_texture_dimension_2d,
+                "any adapter".into(),
+            )
+        })
+}
+
+/// Refuse a window larger than `limit` per side (the surface's largest on `adapter`).
+/// `fullscreen`: the size is the monitor's, not `--size`.
+fn check_window_size(size: [u32; 2], fullscreen: bool, limit: u32, adapter: &str) -> Result<()> {
+    if size[0] > limit || size[1] > limit {
+        let what = if fullscreen {
+            "--fullscreen: the monitor's size"
+        } else {
+            "--size"
+        };
+        anyhow::bail!(
+            "{what} {}x{}: larger than this adapter's largest surface ({limit} per side on \
+             {adapter})",
+            size[0],
+            size[1]
+        );
+    }
+    Ok(())
+}
+
+/// Run a future that does not wait on anything outside (wgpu's adapter list) to its end.
+fn block_on<F: std::future::Future>(future: F) -> F::Output {
+    let mut future = std::pin::pin!(future);
+    let mut cx = std::task::Context::from_waker(std::task::Waker::noop());
+    loop {
+        if let std::task::Poll::Ready(out) = future.as_mut().poll(&mut cx) {
+            return out;
+        }
+        std::thread::yield_now();
+    }
+}
+
 impl State {
     fn new(event_loop: &ActiveEventLoop, args: &ViewArgs) -> Result<Self> {
         let mut attributes = Window::default_attributes()
@@ -221,16 +284,34 @@ impl State {
                 .with_inner_size(monitor.size())
                 .with_fullscreen(Some(Fullscreen::Borderless(Some(monitor))));
         }
-        let window = Arc::new(event_loop.create_window(attributes)?);
         let mut desc = wgpu::InstanceDescriptor::new_with_display_handle(Box::new(
             event_loop.owned_display_handle(),
         ));
         desc.backends = autostereo::gpu::GpuOptions::default().backends();
         let instance = wgpu::Instance::new(desc);
+        // Before the window: a size no adapter here can present is refused by name (the window
+        // system and wgpu's surface validation would panic on it).
+        if args.fullscreen.is_none() {
+            let (limit, adapter) = largest_surface(&instance);
+            check_window_size(args.size, false, limit, &adapter)?;
+        }
+        let window = Arc::new(event_loop.create_window(attributes)?);
         let surface = instance
             .create_surface(window.clone())
             .context("creating the window's surface")?;
         let ctx = GpuContext::for_surface(&instance, &surface, &Default::default())?;
+        // And on the adapter chosen, which may allow less than the largest.
+        let inner = window.inner_size();
+        let size = match args.fullscreen {
+            None => args.size,
+            Some(_) => [inner.width, inner.height],
+        };
+        check_window_size(
+            size,
+            args.fullscreen.is_some(),
+            ctx.device.limits().max_texture_dimension_2d,
+            &ctx.adapter_label(),
+        )?;
         let caps = surface.get_capabilities(&ctx.adapter);
         let format = caps
             .formats
