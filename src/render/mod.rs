@@ -19,6 +19,7 @@
 //! [`crate::volume`], [`crate::rgbd`], [`crate::warp`]); [`crate::RendererOptions`] builds any
 //! of them.
 
+pub(crate) mod accumulation;
 pub mod atlas;
 mod bands;
 pub mod batches;

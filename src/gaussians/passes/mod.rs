@@ -15,13 +15,14 @@ use super::scene::GaussianScene;
 use crate::camera::CameraModel;
 use crate::error::{Error, Result};
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
+use crate::render::accumulation::AccumulationResolve;
 use crate::render::atlas::{Atlas, AtlasCompositor, TileSampling};
 use crate::render::composite::Compositor;
 use crate::render::gpu_buffer::GpuBuffer;
 use crate::render::pass_params::PassParams;
 use crate::render::pipeline::{
-    begin_pass, bind_group_layout, cleared, compilation, draw_fullscreen, fullscreen_pipeline,
-    over_per_channel_pipeline, pipeline_layout, storage_entry,
+    begin_pass, bind_group_layout, cleared, compilation, over_per_channel_pipeline,
+    pipeline_layout, storage_entry,
 };
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::quilt::QuiltLayout;
@@ -29,7 +30,7 @@ use crate::render::specialize::Specialization;
 use crate::render::texture::{texture_2d_reusing, Texture2d};
 use crate::render::view_layers::ViewLayers;
 use crate::render::{begin_prepare, prepared_state, Made as _, Method, Prepared, Renderer};
-use crate::target::{SpatialTarget, SPATIAL_FORMAT};
+use crate::target::SpatialTarget;
 
 /// Threads per workgroup of the colour table's fill.
 const COLORS_WORKGROUP: u32 = 64;
@@ -148,9 +149,8 @@ pub struct GaussianSplatter {
     views_frame: FrameBinding,
     scene_layout: wgpu::BindGroupLayout,
     splat_layout: wgpu::BindGroupLayout,
-    accumulated_layout: wgpu::BindGroupLayout,
     pipelines: PipelineCache<Specialization, wgpu::RenderPipeline>,
-    resolve: wgpu::RenderPipeline,
+    resolve: AccumulationResolve,
     compositor: Compositor,
     atlas_compositor: AtlasCompositor,
     sort: sort::DepthSort,
@@ -197,30 +197,7 @@ impl GaussianSplatter {
         splat_entries.push(storage_entry(3, true, wgpu::ShaderStages::VERTEX));
         splat_entries.push(storage_entry(4, true, wgpu::ShaderStages::FRAGMENT));
         let splat_layout = bind_group_layout(device, "gaussian splats", &splat_entries);
-        let accumulated_layout = bind_group_layout(
-            device,
-            "gaussian accumulation",
-            &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Texture {
-                    sample_type: wgpu::TextureSampleType::Float { filterable: false },
-                    view_dimension: wgpu::TextureViewDimension::D2,
-                    multisampled: false,
-                },
-                count: None,
-            }],
-        );
-        let module = crate::shader::module(device, "render/accumulation_resolve.wgsl")?;
-        let resolve = crate::gpu::checked(device, "building the Gaussian resolve", || {
-            fullscreen_pipeline(
-                device,
-                "gaussian resolve",
-                &module,
-                &[Some(&frame_layout), Some(&accumulated_layout)],
-                SPATIAL_FORMAT,
-            )
-        })?;
+        let resolve = AccumulationResolve::new(device, &frame_layout)?;
         let colors_layout = bind_group_layout(
             device,
             "gaussian colours",
@@ -262,7 +239,6 @@ impl GaussianSplatter {
             sort: sort::DepthSort::new(device, options.sort, &frame_layout, &scene_layout)?,
             scene_layout,
             splat_layout,
-            accumulated_layout,
             pipelines: PipelineCache::new("Gaussian splat"),
             resolve,
             params: PassParams::new(device, "gaussian params"),
@@ -408,31 +384,6 @@ impl GaussianSplatter {
         scene: &GaussianScene,
     ) -> Result<Vec<u32>> {
         self.sort.read_order(device, queue, scene.count)
-    }
-
-    /// Copy the accumulation (composited over the background) into `target` (RGBA8).
-    fn resolve(
-        &self,
-        device: &wgpu::Device,
-        encoder: &mut wgpu::CommandEncoder,
-        accumulation: &Texture2d,
-        target: &wgpu::TextureView,
-    ) {
-        let accumulated = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("gaussian accumulation"),
-            layout: &self.accumulated_layout,
-            entries: &[wgpu::BindGroupEntry {
-                binding: 0,
-                resource: wgpu::BindingResource::TextureView(&accumulation.view),
-            }],
-        });
-        draw_fullscreen(
-            encoder,
-            "gaussian resolve",
-            &self.resolve,
-            &[&self.frame.bind_group, &accumulated],
-            target,
-        );
     }
 
     /// Every view into its tile of the quilt-sized `accumulation` (cleared once to the
@@ -688,7 +639,13 @@ impl Renderer<GaussianScene> for GaussianSplatter {
                     count: scene.count,
                 };
                 self.draw_tiles(encoder, &draw, atlas, accumulation)?;
-                self.resolve(device, encoder, accumulation, &atlas.color.view);
+                self.resolve.encode(
+                    device,
+                    encoder,
+                    &self.frame,
+                    &accumulation.view,
+                    &atlas.color.view,
+                );
                 self.atlas_compositor.encode(
                     device,
                     encoder,
@@ -708,7 +665,13 @@ impl Renderer<GaussianScene> for GaussianSplatter {
                     count: scene.count,
                 };
                 self.draw(encoder, &draw, &accumulation.view)?;
-                self.resolve(device, encoder, accumulation, &target.view);
+                self.resolve.encode(
+                    device,
+                    encoder,
+                    &self.frame,
+                    &accumulation.view,
+                    &target.view,
+                );
             }
             _ => {
                 return Err(Error::NotPrepared {

@@ -10,14 +10,13 @@ use super::raycast::{PreparedFor, VolumeEncode};
 use super::resources::VolumeResources;
 use crate::error::{Error, Result};
 use crate::frame::Frame;
-use crate::render::pipeline::{
-    begin_pass, cleared, draw_fullscreen, fullscreen_pipeline, over_per_channel_pipeline,
-};
+use crate::render::accumulation::AccumulationResolve;
+use crate::render::pipeline::{begin_pass, cleared, over_per_channel_pipeline};
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
 use crate::render::texture::{texture_2d_reusing, Texture2d};
 use crate::render::{begin_prepare, prepared_state, Prepared, Renderer};
-use crate::target::{SpatialTarget, SPATIAL_FORMAT};
+use crate::target::SpatialTarget;
 use crate::volume::{VolumeScene, VolumeSettings};
 
 /// How the K views' opacities of one fragment are blended.
@@ -50,9 +49,8 @@ pub struct VolumeSlicer {
     settings: VolumeSettings,
     resources: VolumeResources,
     slices_layout: wgpu::BindGroupLayout,
-    accumulated_layout: wgpu::BindGroupLayout,
     pipelines: PipelineCache<Specialization, wgpu::RenderPipeline>,
-    resolve: wgpu::RenderPipeline,
+    resolve: AccumulationResolve,
     /// The prepared frame's accumulation texture (float: hundreds of slices do not quantise).
     prepared: Option<Prepared<PreparedFor, Texture2d>>,
     /// The parallel camera model's crop, recorded last.
@@ -111,30 +109,12 @@ impl VolumeSlicer {
                 min_binding_size: None,
             },
         );
-        let accumulated_layout = layout(
-            "slice accumulation",
-            wgpu::BindingType::Texture {
-                sample_type: wgpu::TextureSampleType::Float { filterable: false },
-                view_dimension: wgpu::TextureViewDimension::D2,
-                multisampled: false,
-            },
-        );
-        let module = crate::shader::module(device, "render/accumulation_resolve.wgsl")?;
-        let resolve = crate::gpu::checked(device, "building the volume slice resolve", || {
-            fullscreen_pipeline(
-                device,
-                "volume slices resolve",
-                &module,
-                &[Some(&resources.frame_layout), Some(&accumulated_layout)],
-                SPATIAL_FORMAT,
-            )
-        })?;
+        let resolve = AccumulationResolve::new(device, &resources.frame_layout)?;
         Ok(Self {
             alpha,
             settings,
             resources,
             slices_layout,
-            accumulated_layout,
             pipelines: PipelineCache::new("volume slice"),
             resolve,
             prepared: None,
@@ -343,19 +323,11 @@ impl Renderer<VolumeScene> for VolumeSlicer {
             pass.set_bind_group(2, &slices_group, &[]);
             pass.draw(0..6, 0..rects.len() as u32);
         }
-        let accumulated = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("slice accumulation"),
-            layout: &self.accumulated_layout,
-            entries: &[wgpu::BindGroupEntry {
-                binding: 0,
-                resource: wgpu::BindingResource::TextureView(accumulation),
-            }],
-        });
-        draw_fullscreen(
+        self.resolve.encode(
+            device,
             encoder,
-            "volume slices resolve",
-            &self.resolve,
-            &[&self.resources.frame.bind_group, &accumulated],
+            &self.resources.frame,
+            accumulation,
             &target.view,
         );
         self.crop.encode(device, encoder, frame, target);
