@@ -82,7 +82,8 @@ impl Viewer {
         let size = [self.config.width, self.config.height];
         let mut display = Display::parse("hubner8")?;
         let position = self.window.inner_position().unwrap_or_default();
-        display.origin = [position.x.max(0) as u32, position.y.max(0) as u32];
+        // Negative left of or above the primary monitor: the mask takes it as it is.
+        display.origin = [position.x, position.y];
         let aspect = size[0] as f32 / size[1] as f32;
         let camera = MultiViewCamera::framing(self.bounds, display.views(), None, 0.5, aspect)?;
         let frame = Frame::new(camera, display, size)?;

@@ -221,9 +221,11 @@ impl Frame {
         camera.aspect = band.x / band.y;
         camera.window_offset += centre;
         let mut display = self.display.clone();
+        // A band lies within the frame (its origin below the frame's size, far below 2³¹), so
+        // `as i32` keeps it; wrapping, as the mask's own sums do (modulo 2³²).
         display.origin = [
-            display.origin[0].wrapping_add(origin[0]),
-            display.origin[1].wrapping_add(origin[1]),
+            display.origin[0].wrapping_add(origin[0] as i32),
+            display.origin[1].wrapping_add(origin[1] as i32),
         ];
         Frame {
             camera,

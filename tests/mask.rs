@@ -44,7 +44,7 @@ fn hubner8_equals_paper_equations_and_slanted_8_8_two_thirds_seven_sixths() {
         for y in 0..1200 {
             for x in 0..1920 {
                 for c in 0..3 {
-                    let paper = hubner8_paper_view(x + origin[0], y + origin[1], c);
+                    let paper = hubner8_paper_view(x + origin[0] as u32, y + origin[1] as u32, c);
                     assert_eq!(
                         h.view(x, y, c),
                         paper,
@@ -62,7 +62,7 @@ fn hubner8_equals_paper_equations_and_slanted_8_8_two_thirds_seven_sixths() {
     assert_eq!(hubner, slanted);
 }
 
-fn slanted_with_origin(origin: [u32; 2]) -> Mask {
+fn slanted_with_origin(origin: [i32; 2]) -> Mask {
     slanted(8, 8.0, 2.0 / 3.0, 7.0 / 6.0)
         .with_origin(origin)
         .mask()
@@ -141,18 +141,9 @@ fn looking_glass_mapping_reproduces_the_holoplay_formula() {
     }
 }
 
-/// docs/DESIGN.md §1: the WGSL mask equals the Rust mask on every subpixel of a 7680×4320 panel with a
-/// non-zero window origin, for every display kind (Looking Glass with and without subpixel
-/// cells; the window reaches past the cells' panel, whose rows count from its bottom).
-#[test]
-fn wgsl_mask_equals_rust_mask_on_an_8k_panel() {
-    let ctx = common::gpu();
-    let mut renderer = MaskImageRenderer::new(&ctx.device).unwrap();
-    let lkg = DisplayKind::LookingGlass {
-        views: 45,
-        calibration: sample_calibration(),
-    };
-    let kinds = [
+/// Every display kind the GPU tests compare: Looking Glass with and without subpixel cells.
+fn all_kinds() -> [DisplayKind; 7] {
+    [
         DisplayKind::Hubner8,
         DisplayKind::Lenticular { views: 7 },
         DisplayKind::Lenticular { views: 256 },
@@ -162,13 +153,22 @@ fn wgsl_mask_equals_rust_mask_on_an_8k_panel() {
             slant: -0.4142,
             phase: 3.3,
         },
-        lkg,
+        DisplayKind::LookingGlass {
+            views: 45,
+            calibration: sample_calibration(),
+        },
         gen3("lkg_sample_32in_landscape_gen3_visual.json"),
         gen3("lkg_sample_go_gen3_visual.json"),
-    ];
-    let size = [7680, 4320];
-    for (i, kind) in kinds.into_iter().enumerate() {
-        let mut display = Display::new(kind).unwrap().with_origin([1234, 567]);
+    ]
+}
+
+/// The WGSL mask (`MaskImageRenderer`) equals the Rust mask on every subpixel of a `size`
+/// window at `origin`, for every display kind (flipped and BGR on some).
+fn assert_wgsl_mask_equals_rust_mask(origin: [i32; 2], size: [u32; 2]) {
+    let ctx = common::gpu();
+    let mut renderer = MaskImageRenderer::new(&ctx.device).unwrap();
+    for (i, kind) in all_kinds().into_iter().enumerate() {
+        let mut display = Display::new(kind).unwrap().with_origin(origin);
         display.flip_views = i % 2 == 1;
         display.bgr = i == 3;
         let mask = display.mask();
@@ -183,7 +183,7 @@ fn wgsl_mask_equals_rust_mask_on_an_8k_panel() {
                         mismatches += 1;
                         if mismatches <= 5 {
                             eprintln!(
-                                "{:?} ({x},{y},{c}): GPU {} CPU {}",
+                                "{:?} origin {origin:?} ({x},{y},{c}): GPU {} CPU {}",
                                 display.kind,
                                 image.get(x, y, c),
                                 mask.view(x, y, c)
@@ -193,7 +193,200 @@ fn wgsl_mask_equals_rust_mask_on_an_8k_panel() {
                 }
             }
         }
-        assert_eq!(mismatches, 0, "{:?}", display.kind);
+        assert_eq!(mismatches, 0, "{:?} origin {origin:?}", display.kind);
+    }
+}
+
+/// docs/DESIGN.md §1: the WGSL mask equals the Rust mask on every subpixel of a 7680×4320 panel with a
+/// non-zero window origin, for every display kind (Looking Glass with and without subpixel
+/// cells; the window reaches past the cells' panel, whose rows count from its bottom).
+#[test]
+fn wgsl_mask_equals_rust_mask_on_an_8k_panel() {
+    assert_wgsl_mask_equals_rust_mask([1234, 567], [7680, 4320]);
+}
+
+/// A window starting left of and above the panel (a monitor there on a virtual desktop has
+/// negative coordinates): the WGSL mask takes the origin's two's complement as the Rust one
+/// does, on the window's part off the panel and on it; and one reaching past the cells'
+/// panel's bottom from the left.
+#[test]
+fn wgsl_mask_equals_rust_mask_at_negative_origins() {
+    assert_wgsl_mask_equals_rust_mask([-1234, -567], [2560, 1440]);
+    assert_wgsl_mask_equals_rust_mask([-37, 1500], [640, 1000]);
+}
+
+/// The paper's Eq. 4–6 (docs/DESIGN.md §1) written out again for any integer panel column `x`
+/// and row `y`: negative ones (left of / above the panel) by the equations' periodic extension.
+fn paper_view_signed(x: i64, y: i64, c: i64) -> u32 {
+    let x_offset = (3 * x).rem_euclid(8);
+    let y_offset = (y + 1).rem_euclid(12);
+    let v_r = ((1 + y_offset + y_offset / 3) / 2 + x_offset) % 8;
+    ((v_r + c) % 8) as u32
+}
+
+/// The slanted model `⌊N·frac((k + s·l + φ)/P)⌋` in f64 on subpixel column `k = 3x + c` and
+/// row `l = y` of the panel, any sign; and a view boundary closer than the mask's fixed point
+/// resolves there (its phase is within (|k| + |l| + 1)·2⁻³² periods of the exact).
+fn slanted_reference_view(
+    [views, pitch, slant, phase]: [f64; 4],
+    x: i64,
+    y: i64,
+    c: i64,
+) -> (u32, bool) {
+    let k = 3 * x + c;
+    let t = (k as f64 + slant * y as f64 + phase) / pitch;
+    let scaled = (t - t.floor()) * views;
+    let tolerance = (k.abs() + y.abs() + 1) as f64 * views / 4_294_967_296.0 + 1e-9;
+    let on_boundary = (scaled - scaled.round()).abs() <= tolerance;
+    ((scaled.floor() as u32).min(views as u32 - 1), on_boundary)
+}
+
+/// A window left of or above the panel (negative origin, its two's complement in the mask's
+/// wrap-around u32 arithmetic): on its every subpixel, off the panel and on it, the mask
+/// equals the display's formula written out independently: the paper's equations (hubner8
+/// and the slanted model that is it, exactly: their phases sit at least 1/6 view from a
+/// boundary), the slanted model in f64 for a lens of no simple ratio, and the Looking Glass
+/// shader with subpixel cells (every cell pattern: the cells' parities at negative columns and
+/// rows).
+#[test]
+fn negative_origins_equal_the_display_formulas_on_both_sides_of_the_panel_edge() {
+    // The signed paper equations are the library's on the panel.
+    for (x, y) in [(0, 0), (5, 7), (1919, 1199), (123, 4567)] {
+        for c in 0..3 {
+            assert_eq!(
+                paper_view_signed(x, y, c),
+                hubner8_paper_view(x as u32, y as u32, c as u32)
+            );
+        }
+    }
+    let origins = [[-5, -3], [-1234, -567], [-7, 20], [33, -11]];
+    let size = [1600u32, 900u32];
+    let hubner8 = Display::new(DisplayKind::Hubner8).unwrap();
+    let lens = [64.0, 12.37, -0.4142, 3.3];
+    let odd = slanted(64, lens[1], lens[2], lens[3]);
+    let (mut checked, mut boundary) = (0u64, 0u64);
+    for origin in origins {
+        let h = hubner8.clone().with_origin(origin).mask();
+        let s = slanted_with_origin(origin);
+        let o = odd.clone().with_origin(origin).mask();
+        for y in 0..size[1] {
+            for x in 0..size[0] {
+                let (px, py) = (x as i64 + origin[0] as i64, y as i64 + origin[1] as i64);
+                for c in 0..3 {
+                    let paper = paper_view_signed(px, py, c as i64);
+                    assert_eq!(h.view(x, y, c), paper, "hubner8 ({x},{y},{c}) {origin:?}");
+                    assert_eq!(s.view(x, y, c), paper, "slanted ({x},{y},{c}) {origin:?}");
+                    let (reference, on_boundary) = slanted_reference_view(lens, px, py, c as i64);
+                    let ours = o.view(x, y, c);
+                    assert!(
+                        ours == reference || on_boundary,
+                        "slanted {lens:?} ({x},{y},{c}) origin {origin:?}: {ours} vs {reference}"
+                    );
+                    boundary += u64::from(on_boundary);
+                    checked += 1;
+                }
+            }
+        }
+    }
+    assert!(
+        boundary < checked / 1000,
+        "{boundary} of {checked} near boundaries"
+    );
+
+    // Subpixel cells: a window over the panel's top-left corner, and one left of the panel
+    // reaching past its bottom (rows counted from the bottom go negative there).
+    let panel = [3840, 2160];
+    let views = 49;
+    let cases: [Gen3Case; 6] = [
+        (0, &GEN3_CELLS[..1], false, None),
+        (1, &GEN3_CELLS[..2], false, Some(false)),
+        (2, &GEN3_CELLS[..2], true, Some(true)),
+        (3, &GEN3_CELLS, false, None),
+        (3, &GEN3_CELLS[..3], true, None),
+        (4, &GEN3_CELLS[..2], false, None),
+    ];
+    for (pattern, cells, flip_x, inv) in cases {
+        let json = gen3_json(pattern, cells, flip_x, inv, panel);
+        let calibration = Calibration::from_json(&json, "gen3.json".as_ref()).unwrap();
+        let display = Display::new(DisplayKind::LookingGlass { views, calibration }).unwrap();
+        for (origin, size) in [([-501, -299], [1000, 600]), ([-7, 1903], [64, 300])] {
+            let mask = display.clone().with_origin(origin).mask();
+            let (mut checked, mut boundary) = (0u64, 0u64);
+            for y in 0..size[1] {
+                for x in 0..size[0] {
+                    let (px, py) = (x as i64 + origin[0] as i64, y as i64 + origin[1] as i64);
+                    for c in 0..3 {
+                        let inv = inv.unwrap_or(false);
+                        let (reference, scaled) = gen3_reference_view(
+                            pattern, cells, flip_x, inv, panel, views, px, py, c,
+                        );
+                        let ours = mask.view(x, y, c as u32);
+                        // As on the panel (the test above): 0.32 fixed point, within
+                        // ~(|x| + |y|)·2⁻³² lens periods of a view boundary.
+                        let on_boundary = (scaled - scaled.round()).abs() < 1e-4;
+                        boundary += u64::from(on_boundary);
+                        assert!(
+                            ours == reference || on_boundary,
+                            "pattern {pattern} ({} cells, flip {flip_x}, inv {inv}) at \
+                             ({x},{y},{c}) origin {origin:?}: {ours} vs {reference}",
+                            cells.len()
+                        );
+                        checked += 1;
+                    }
+                }
+            }
+            assert!(
+                boundary < checked / 1000,
+                "pattern {pattern} origin {origin:?}: {boundary} of {checked} near boundaries"
+            );
+        }
+    }
+}
+
+/// Moving the window by (−dx, −dy) on the panel shows at window pixel (x, y) what the window
+/// at origin 0 shows at (x − dx, y − dy), for every display kind; and a band of a frame at a
+/// negative origin (`Frame::band`) is that frame's mask moved by the band's origin.
+#[test]
+fn a_negative_origin_is_the_origin_0_mask_moved() {
+    let mut kinds = all_kinds().to_vec();
+    kinds.push(DisplayKind::OneView { views: 8, view: 5 });
+    for kind in kinds {
+        let at_0 = Display::new(kind.clone()).unwrap().mask();
+        for [dx, dy] in [[5u32, 3u32], [1234, 567], [0, 9], [8, 0], [1, 1]] {
+            let origin = [-(dx as i32), -(dy as i32)];
+            let moved = Display::new(kind.clone())
+                .unwrap()
+                .with_origin(origin)
+                .mask();
+            for y in dy..dy + 240 {
+                for x in dx..dx + 320 {
+                    for c in 0..3 {
+                        assert_eq!(
+                            moved.view(x, y, c),
+                            at_0.view(x - dx, y - dy, c),
+                            "{kind:?} origin {origin:?} at ({x},{y},{c})"
+                        );
+                    }
+                }
+            }
+        }
+    }
+
+    let bounds = autostereo::camera::Bounds {
+        min: glam::Vec3::splat(-1.0),
+        max: glam::Vec3::splat(1.0),
+    };
+    let mut frame = common::frame(bounds, "hubner8", 0.1, 1.0, [256, 128]);
+    frame.display = frame.display.clone().with_origin([-100, -50]);
+    let band = frame.band([64, 32], [128, 64]);
+    assert_eq!(band.display.origin, [-36, -18]);
+    let (whole, part) = (frame.display.mask(), band.display.mask());
+    for y in 0..64 {
+        for x in 0..128 {
+            for c in 0..3 {
+                assert_eq!(part.view(x, y, c), whole.view(x + 64, y + 32, c));
+            }
+        }
     }
 }
 
@@ -243,7 +436,8 @@ const GEN3_CELLS: [[f64; 6]; 4] = [
 
 /// The Looking Glass lenticular shader with subpixel cells (WebXR library 0.6, Unity plugin),
 /// written out here independently of the library: the view of channel `c` of panel pixel
-/// (x, y top-down) and `N·f`, to judge closeness to a view boundary.
+/// (x, y top-down; negative left of / above the panel, where the shader's formula goes on
+/// periodically) and `N·f`, to judge closeness to a view boundary.
 #[allow(clippy::too_many_arguments)]
 fn gen3_reference_view(
     pattern: u32,
@@ -252,8 +446,8 @@ fn gen3_reference_view(
     inv_view: bool,
     size: [u32; 2],
     views: u32,
-    x: u32,
-    y: u32,
+    x: i64,
+    y: i64,
     c: usize,
 ) -> (u32, f64) {
     let (pitch, slope, center, dpi) = (
@@ -263,17 +457,17 @@ fn gen3_reference_view(
         283.0,
     );
     let (w, h) = (size[0] as f64, size[1] as f64);
-    let y_gl = size[1] - 1 - y;
+    let y_gl = size[1] as i64 - 1 - y;
     let u = (x as f64 + 0.5) / w;
     let v = (y_gl as f64 + 0.5) / h;
     let pitch_adjusted = pitch * w / dpi * (1.0f64 / slope).atan().cos();
     let tilt = h / (w * slope) * if flip_x { -1.0 } else { 1.0 };
     let cell = match pattern {
         0 => 0,
-        1 => u32::from(x % 2 != y_gl % 2),
-        2 => x % 2,
-        3 => (y_gl + 2 * (x % 2)) % 4,
-        4 => y_gl % 2,
+        1 => i64::from(x.rem_euclid(2) != y_gl.rem_euclid(2)),
+        2 => x.rem_euclid(2),
+        3 => (y_gl + 2 * x.rem_euclid(2)).rem_euclid(4),
+        4 => y_gl.rem_euclid(2),
         _ => unreachable!(),
     } as usize
         % cells.len();
@@ -319,8 +513,9 @@ fn subpixel_cell_masks_equal_the_looking_glass_formula_on_a_full_panel() {
             for x in 0..size[0] {
                 for c in 0..3 {
                     let inv = inv.unwrap_or(false);
-                    let (reference, scaled) =
-                        gen3_reference_view(pattern, cells, flip_x, inv, size, views, x, y, c);
+                    let (reference, scaled) = gen3_reference_view(
+                        pattern, cells, flip_x, inv, size, views, x as i64, y as i64, c,
+                    );
                     let ours = mask.view(x, y, c as u32);
                     // 0.32 fixed point: only subpixels within ~(x + y)·2⁻³² lens periods of a
                     // view boundary may differ (there `⌊N(1 − f)⌋` and `N − 1 − ⌊Nf⌋` differ too).

@@ -154,7 +154,7 @@ fn render_pair(p: &Primitive, frame: &Frame) -> (RgbImage, RgbImage) {
 struct Extreme {
     name: &'static str,
     display: &'static str,
-    origin: [u32; 2],
+    origin: [i32; 2],
     /// (camera, bounds radius) → modified camera.
     camera: fn(&mut MultiViewCamera, f32),
 }

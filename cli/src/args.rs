@@ -67,9 +67,12 @@ pub struct DisplayArgs {
     /// 45 where the serial names none; others: must match the display).
     #[arg(long)]
     pub views: Option<u32>,
-    /// Window origin on the panel in pixels, X,Y.
-    #[arg(long, value_parser = parse_pair, default_value = "0,0")]
-    pub origin: [u32; 2],
+    /// Window origin on the panel in pixels, X,Y; negative where the window starts left of or
+    /// above the panel (`--origin -100,20`). `view` adds the window's position on the screen:
+    /// there it is minus the panel's (`--origin -1920,0` for a panel right of a 1920-wide
+    /// monitor).
+    #[arg(long, value_name = "X,Y", value_parser = crate::view::parse_point, default_value = "0,0", allow_hyphen_values = true)]
+    pub origin: [i32; 2],
     /// Reverse the view order.
     #[arg(long)]
     pub flip_views: bool,

@@ -3,9 +3,11 @@
 //! `view = ⌊N · frac((k + s·l + φ)/P)⌋` is evaluated as `t = k·A + l·B + C (mod 2³²)` with
 //! `A = frac(1/P)`, `B = frac(s/P)`, `C = frac(φ/P)` in 0.32 fixed point (u32 wrap-around is the
 //! `frac`), then `view = (t·N) >> 32`. Integer-only, so any `k` keeps full precision and
-//! `wgsl/shared/mask.wgsl` reproduces it bit for bit. A, B, C are rounded *up*: the fixed-point
-//! phase is never below the exact one, so a subpixel whose exact phase sits on a view boundary
-//! (every lenticular pixel, for instance) gets the exact view.
+//! `wgsl/shared/mask.wgsl` reproduces it bit for bit. A, B, C are rounded *up*: on the panel
+//! (k, l ≥ 0) the fixed-point phase is never below the exact one, so a subpixel whose exact
+//! phase sits on a view boundary (every lenticular pixel, for instance) gets the exact view.
+//! A window origin left of or above the panel (negative) is its two's complement: see
+//! [`Mask::new`].
 //!
 //! Subpixel cells (`subpixel_cells.rs`) replace the subpixel column by the pixel column and the
 //! one phase C by one per cell and channel: `t = x·A + y·B + C[cell][c]`, the cell from the
@@ -21,7 +23,9 @@ pub(crate) struct MaskGeometry {
     pub slant: f64,
     pub phase: f64,
     pub subpixel: bool,
-    pub origin: [u32; 2],
+    /// The window's origin on the panel; negative where the window starts left of or above
+    /// the panel (a monitor placed there on a virtual desktop).
+    pub origin: [i32; 2],
     pub flip_views: bool,
     pub bgr: bool,
     /// Subpixel cells: the steps and phases in lens periods instead of pitch, slant and phase.
@@ -103,8 +107,18 @@ impl Mask {
             step_row: fixed_frac_ceil(g.slant / g.pitch),
             phase: fixed_frac_ceil(g.phase / g.pitch),
             views: g.views,
-            origin_x: g.origin[0],
-            origin_y: g.origin[1],
+            // A negative origin as its two's complement, here and nowhere else: the origin
+            // enters only through wrap-around sums and products (`view` below, `mask_view` in
+            // WGSL), which are exact modulo 2³² whatever the sign. So `x + origin_x` is the
+            // true panel column k modulo 2³², and so are `3·k + slot`, `k·A` and `l·B` (the
+            // phase is only ever wanted modulo 2³², one lens period) and `panel_top − l`; the
+            // cells' parities (`& 1`, `& 3`) agree because 2³² is a multiple of 4. The one
+            // difference from k, l ≥ 0: A and B are rounded up, so a negative k or l moves
+            // the phase *below* the exact one (by under (|column| + |l|)·2⁻³² periods): only a
+            // subpixel that close to a view boundary can change view, and negative k or l are
+            // off the panel.
+            origin_x: g.origin[0] as u32,
+            origin_y: g.origin[1] as u32,
             flags,
             ..Zeroable::zeroed()
         };

@@ -65,8 +65,9 @@ pub enum DisplayKind {
 pub struct Display {
     /// The optical layout.
     pub kind: DisplayKind,
-    /// Window origin on the physical panel, in pixels (0,0 for full screen / offline).
-    pub origin: [u32; 2],
+    /// Window origin on the physical panel, in pixels (0,0 for full screen / offline);
+    /// negative where the window starts left of or above the panel.
+    pub origin: [i32; 2],
     /// Reverse the view order (view 0 on the other side).
     pub flip_views: bool,
     /// Panel subpixels are ordered B, G, R left to right.
@@ -187,8 +188,9 @@ impl Display {
         Ok(self)
     }
 
-    /// Place the window at `origin` (pixels) on the panel.
-    pub fn with_origin(mut self, origin: [u32; 2]) -> Self {
+    /// Place the window at `origin` (pixels) on the panel; negative where it starts left of or
+    /// above the panel.
+    pub fn with_origin(mut self, origin: [i32; 2]) -> Self {
         self.origin = origin;
         self
     }

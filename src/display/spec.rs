@@ -174,7 +174,7 @@ mod tests {
         for (views, view) in [(8, 0), (8, 3), (8, 7), (45, 44), (1, 0)] {
             let display = super::super::Display::parse(&format!("view:{views},{view}")).unwrap();
             assert_eq!(display.views_per_pixel(), 1);
-            let mask = display.with_origin([12345, 678]).mask();
+            let mask = display.with_origin([12345, -678]).mask();
             for (x, y, c) in [(0, 0, 0), (1, 0, 2), (4095, 17, 1), (u32::MAX / 4, 99, 0)] {
                 assert_eq!(
                     mask.view(x, y, c),

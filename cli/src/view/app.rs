@@ -89,8 +89,9 @@ struct State {
     /// The window's spatial image, and the stereo previews' left and right eyes.
     targets: [Option<SpatialTarget>; 3],
     stereo: StereoCompositor,
-    /// Window client area on the screen (the mask's origin).
-    position: [u32; 2],
+    /// Window client area on the screen (the mask's origin; negative on a monitor left of or
+    /// above the primary).
+    position: [i32; 2],
     cursor: Option<PhysicalPosition<f64>>,
     buttons: (bool, bool),
     frames: u32,
@@ -402,7 +403,7 @@ impl State {
     /// The mask's origin from where the client area sits on the screen.
     fn update_position(&mut self) {
         if let Ok(p) = self.window.inner_position() {
-            self.position = [p.x.max(0) as u32, p.y.max(0) as u32];
+            self.position = [p.x, p.y];
         }
     }
 
@@ -419,9 +420,10 @@ impl State {
     /// The frame of the current camera settings on `display`, `size` pixels. The display's
     /// origin is where the window sits, plus --origin (a panel not at the screen's top-left).
     fn frame_on(&self, args: &ViewArgs, mut display: Display, size: [u32; 2]) -> Result<Frame> {
+        // Wrapping, as the mask's own sums: it uses the origin only modulo 2³².
         display.origin = [
-            self.position[0] + args.display.origin[0],
-            self.position[1] + args.display.origin[1],
+            self.position[0].wrapping_add(args.display.origin[0]),
+            self.position[1].wrapping_add(args.display.origin[1]),
         ];
         let base = args.camera.camera(self.scene.bounds, &display, size)?;
         // The orbit starts from the command line's camera and turns about what it looks at.
@@ -590,8 +592,7 @@ impl State {
         ));
         if let Some((k, [x, y])) = args.move_after {
             if self.frames == k {
-                self.window
-                    .set_outer_position(PhysicalPosition::new(x as i32, y as i32));
+                self.window.set_outer_position(PhysicalPosition::new(x, y));
             }
         }
         self.memory.after_frame(self.frames);

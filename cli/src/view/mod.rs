@@ -11,7 +11,7 @@ use std::path::PathBuf;
 use anyhow::Result;
 use autostereo::render::Method;
 
-use crate::args::{check_output, parse_pair, parse_size, CameraArgs, DisplayArgs};
+use crate::args::{check_output, parse_size, CameraArgs, DisplayArgs};
 
 pub use scene::KindArg;
 
@@ -93,9 +93,10 @@ pub struct ViewArgs {
     /// Window client-area size WxH in pixels.
     #[arg(long, value_parser = parse_size, default_value = "512x512")]
     size: [u32; 2],
-    /// Window position X,Y on the screen (the mask's origin follows it).
-    #[arg(long, value_parser = parse_pair)]
-    position: Option<[u32; 2]>,
+    /// Window position X,Y on the screen (the mask's origin follows it); negative on a
+    /// monitor left of or above the primary (`--position -1920,0`).
+    #[arg(long, value_name = "X,Y", value_parser = parse_point, allow_hyphen_values = true)]
+    position: Option<[i32; 2]>,
     /// Full screen on monitor MONITOR (0 = the first; default 0).
     #[arg(long, num_args = 0..=1, default_missing_value = "0")]
     fullscreen: Option<usize>,
@@ -117,9 +118,10 @@ pub struct ViewArgs {
     /// Exit after K presented frames.
     #[arg(long)]
     quit_after_frames: Option<u32>,
-    /// Move the window to X,Y after frame K (tests: the mask phase must follow): K:X,Y.
-    #[arg(long, value_parser = parse_move)]
-    move_after: Option<(u32, [u32; 2])>,
+    /// Move the window to X,Y after frame K (tests: the mask phase must follow): K:X,Y (X, Y
+    /// negative as --position's).
+    #[arg(long, value_name = "K:X,Y", value_parser = parse_move)]
+    move_after: Option<(u32, [i32; 2])>,
     /// Scripted stress run for K frames: switch the method every 10 frames, the display every
     /// 70, the window size every 35; prints (JSON) resident memory every 50 frames, the heap
     /// in use every 10, the live GPU objects at each end of the period after which the run's
@@ -136,7 +138,22 @@ pub struct ViewArgs {
     exercise_switch: Vec<Switch>,
 }
 
-fn parse_move(s: &str) -> Result<(u32, [u32; 2]), String> {
+/// A point X,Y in pixels, either negative: a virtual desktop (X11, Wayland, Windows) puts a
+/// monitor left of or above the primary at negative coordinates, and a window's origin on a
+/// panel is negative where the window starts left of or above it (`--origin`, `--position`).
+pub fn parse_point(s: &str) -> Result<[i32; 2], String> {
+    let (a, b) = s
+        .split_once(',')
+        .ok_or_else(|| format!("'{s}' is not X,Y"))?;
+    let parse = |v: &str| {
+        v.trim()
+            .parse::<i32>()
+            .map_err(|_| format!("'{s}' is not two whole numbers X,Y (negative allowed)"))
+    };
+    Ok([parse(a)?, parse(b)?])
+}
+
+fn parse_move(s: &str) -> Result<(u32, [i32; 2]), String> {
     let (frame, at) = s
         .split_once(':')
         .ok_or_else(|| format!("'{s}' is not K:X,Y"))?;
@@ -144,7 +161,7 @@ fn parse_move(s: &str) -> Result<(u32, [u32; 2]), String> {
         .trim()
         .parse()
         .map_err(|_| format!("'{s}': K is not a whole number"))?;
-    Ok((frame, parse_pair(at)?))
+    Ok((frame, parse_point(at)?))
 }
 
 impl ViewArgs {
