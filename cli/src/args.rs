@@ -3,7 +3,6 @@
 use anyhow::{bail, Context, Result};
 use autostereo::render::Method;
 use clap::builder::TypedValueParser;
-use std::path::PathBuf;
 
 use autostereo::camera::MultiViewCamera;
 use autostereo::display::Display;
@@ -57,6 +56,7 @@ pub fn parse_pair(s: &str) -> Result<[u32; 2], String> {
 
 /// Display selection flags.
 #[derive(clap::Args, Clone, Debug)]
+#[command(next_help_heading = "Display")]
 pub struct DisplayArgs {
     /// Display: hubner8 | lenticular:N | slanted:N,PITCH,SLANT,PHASE | lkg:PATH.json | lkg (the
     /// attached Looking Glass's calibration) | view:N,V
@@ -146,6 +146,7 @@ pub fn check_output(path: &std::path::Path) -> Result<()> {
 
 /// Camera flags shared by the renderers.
 #[derive(clap::Args, Clone, Debug)]
+#[command(next_help_heading = "Camera")]
 pub struct CameraArgs {
     /// Separation of adjacent views, scene units (default: a Looking Glass calibration's
     /// viewCone, else 5 % of the bounding radius); negative reverses the views' order
@@ -299,100 +300,61 @@ pub fn method_parser() -> impl clap::builder::TypedValueParser<Value = Method> {
 /// Flags every render command shares (extend, don't break: tools and benchmarks use them).
 #[derive(clap::Args)]
 pub struct RenderArgs {
+    /// CPU memory budget for loading (bytes, or with K/M/G/T, KB…TB or KiB…TiB, all binary:
+    /// 1K = 1KB = 1KiB = 1024 bytes; default 8G): inputs that would
+    /// need more are refused before anything is allocated.
+    #[arg(long, value_parser = autostereo::budget::parse_bytes, help_heading = "Input")]
+    pub max_memory: Option<u64>,
     #[command(flatten)]
     pub display: DisplayArgs,
     #[command(flatten)]
     pub camera: CameraArgs,
     /// Image size WxH in pixels (default: a Looking Glass calibration's panel, else 512x512).
-    #[arg(long, value_parser = parse_size)]
+    #[arg(long, value_parser = parse_size, help_heading = "Display")]
     pub size: Option<[u32; 2]>,
     /// Rendering method: single-pass | n-pass | single-view | tiled | layered | mrt | warp
     /// (tiled, layered and mrt duplicate the geometry per view in one draw; warp renders
     /// --references views and synthesises the others; docs/USAGE.md compares them).
-    #[arg(long, value_parser = method_parser(), default_value = "single-pass")]
+    #[arg(long, value_parser = method_parser(), default_value = "single-pass", help_heading = "Method")]
     pub method: Method,
-    /// With --method tiled: also write the atlas as a Looking Glass quilt (PNG; the name gets
-    /// the `_qs{cols}x{rows}a{aspect}` suffix Looking Glass software reads).
-    #[arg(long)]
-    pub quilt_out: Option<PathBuf>,
-    /// Also render N-pass and report psnr_db, max_abs_err, frac_off_2 against it.
-    #[arg(long)]
-    pub compare: bool,
-    /// Timed frames (after two warm-up frames); the median is reported.
-    #[arg(long, default_value_t = 1, value_parser = frames_parser())]
-    pub frames: u32,
-    /// Output PNG (of the spatial image, or of --output's format).
-    #[arg(long)]
-    pub out: Option<PathBuf>,
-    /// What --out holds: spatial | quilt | views | anaglyph | anaglyph-half | anaglyph-dubois |
-    /// side-by-side | side-by-side-half | top-bottom | top-bottom-half | rows | columns |
-    /// checkerboard (every format but spatial renders each view it needs with the --method).
-    #[arg(long, value_enum, default_value = "spatial")]
-    pub output: crate::output::OutputArg,
-    /// With --output quilt: the quilt's grid COLSxROWS (default: chosen for the view count;
-    /// Looking Glass software also reads e.g. 8x6 for 48 views, the last tiles empty).
-    #[arg(long = "quilt", value_name = "COLSxROWS", value_parser = parse_size)]
-    pub quilt_grid: Option<[u32; 2]>,
-    /// The left and right views of the stereo outputs (default: two views a quarter of the
-    /// views apart, about the middle).
-    #[arg(long, value_parser = parse_pair)]
-    pub eyes: Option<[u32; 2]>,
     /// Per-view resolution: the n-pass, tiled, layered and mrt methods render their view
     /// images at S × --size (each side rounded up) and up-sample them bilinearly when
     /// compositing; 1 = full size. In (0, 1].
-    #[arg(long, value_name = "S", default_value_t = 1.0, value_parser = parse_view_scale)]
+    #[arg(long, value_name = "S", default_value_t = 1.0, value_parser = parse_view_scale, help_heading = "Method")]
     pub view_scale: f32,
     /// The view images' size instead of --view-scale (each side at most --size's; the views
     /// keep the camera's aspect, so tiles of another aspect stretch as Looking Glass's quilts
-    /// do: e.g. --method tiled --view-size 857x857 renders a 16" panel's 7x7 quilt of 857x857).
-    #[arg(long, value_name = "WxH", value_parser = parse_size, conflicts_with = "view_scale")]
+    /// do: e.g. --method tiled --view-size 857x857 renders a 16" panel's 7x7 quilt of 857x857);
+    /// with --output quilt (any method) the size of the quilt's tiles.
+    #[arg(long, value_name = "WxH", value_parser = parse_size, conflicts_with = "view_scale", help_heading = "Method")]
     pub view_size: Option<[u32; 2]>,
-    /// Print one JSON object with the run's parameters and timing on stdout.
-    #[arg(long)]
-    pub json: bool,
     #[command(flatten)]
     pub warp: crate::warp_cmd::WarpArgs,
     #[command(flatten)]
+    pub output: crate::output::OutputArgs,
+    #[command(flatten)]
     pub turntable: crate::turntable::TurntableArgs,
-    /// CPU memory budget for loading (bytes, or with K/M/G/T, KB…TB or KiB…TiB, all binary:
-    /// 1K = 1KB = 1KiB = 1024 bytes; default 8G): inputs that would
-    /// need more are refused before anything is allocated.
-    #[arg(long, value_parser = autostereo::budget::parse_bytes)]
-    pub max_memory: Option<u64>,
+    /// Also render N-pass and report psnr_db, max_abs_err, frac_off_2 against it.
+    #[arg(long, help_heading = "Measuring")]
+    pub compare: bool,
+    /// Time N frames after two warm-up frames and report the median (without it: one frame,
+    /// no warm-up).
+    #[arg(long, value_name = "N", value_parser = frames_parser(), help_heading = "Measuring")]
+    pub frames: Option<u32>,
 }
 
 impl RenderArgs {
     /// Fail early on what can be checked before loading anything.
     pub fn check(&self) -> Result<()> {
-        if let Some(out) = &self.out {
-            check_output(out)?;
-        } else if self.output != crate::output::OutputArg::Spatial {
-            bail!(
-                "--output {} writes to --out, which is missing",
-                self.output.name()
-            );
-        }
-        if self.quilt_grid.is_some() && self.output != crate::output::OutputArg::Quilt {
-            bail!(
-                "--quilt sets the grid of --output quilt, not of --output {}",
-                self.output.name()
-            );
-        }
-        if let Some(quilt) = &self.quilt_out {
-            check_output(quilt)?;
-            if self.method != Method::Tiled {
-                bail!(
-                    "--quilt-out: the {} method renders no quilt atlas; use --method tiled",
-                    self.method
-                );
-            }
-        }
+        self.output.check(self.compare || self.frames.is_some())?;
         let scaled = [Method::NPass, Method::Tiled, Method::Layered, Method::Mrt];
         let flag = match self.view_size {
             Some([w, h]) => Some(format!("--view-size {w}x{h}")),
             None => (self.view_scale != 1.0).then(|| format!("--view-scale {}", self.view_scale)),
         };
-        if let Some(flag) = flag.filter(|_| !scaled.contains(&self.method)) {
+        // A quilt's tiles are view images of any method: the flag sets their size.
+        let quilt = self.output.format == crate::output::OutputArg::Quilt;
+        if let Some(flag) = flag.filter(|_| !scaled.contains(&self.method) && !quilt) {
             bail!(
                 "{flag}: the {} method renders no view images to scale (only n-pass, tiled, \
                  layered and mrt do)",
@@ -400,7 +362,7 @@ impl RenderArgs {
             );
         }
         self.warp.check(self.method)?;
-        self.turntable.check(self.out.as_deref())?;
+        self.turntable.check(self.output.out.as_deref())?;
         if let Some(bytes) = self.max_memory {
             autostereo::budget::set_max_memory(bytes);
         }

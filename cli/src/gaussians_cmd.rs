@@ -42,6 +42,7 @@ pub struct GaussiansArgs {
 
 /// How Gaussian splats are rendered: the flags `gaussians` and `view` share.
 #[derive(clap::Args, Clone, Debug, PartialEq)]
+#[command(next_help_heading = "Method")]
 pub struct GaussianFlags {
     /// Where the depth sort runs each frame: gpu (a bitonic sort in compute passes) or cpu
     /// (sorted on the CPU and uploaded).
@@ -55,6 +56,18 @@ pub struct GaussianFlags {
 }
 
 impl GaussianFlags {
+    /// Refuse what the chosen method would ignore.
+    pub fn check(&self, method: Method) -> Result<()> {
+        if self.sh_per_subpixel && method != Method::SinglePass {
+            anyhow::bail!(
+                "--sh-per-subpixel: only the single pass reads a colour table per subpixel \
+                 (the {method} method evaluates each view's colours once per view); drop it or \
+                 use --method single-pass"
+            );
+        }
+        Ok(())
+    }
+
     /// The Gaussians in `file`, the generated scene without one.
     pub fn load(&self, file: Option<&Path>) -> Result<Gaussians> {
         Ok(match file {
@@ -86,6 +99,7 @@ pub fn builtin_scene() -> Gaussians {
 
 pub fn run(args: GaussiansArgs) -> Result<()> {
     args.common.check()?;
+    args.gaussians.check(args.common.method)?;
     let start = Instant::now();
     let gaussians = args.gaussians.load(args.file.as_deref())?;
     let load_ms = start.elapsed().as_secs_f64() * 1e3;
@@ -106,7 +120,7 @@ pub fn run(args: GaussiansArgs) -> Result<()> {
     let (count, sh_degree) = (gaussians.len(), gaussians.sh_degree);
     drop(gaussians);
     let run = timed(&ctx, renderer.as_mut(), &scene, &frame, args.common.frames)?;
-    let turntable = crate::output::save_all(
+    let saved = crate::output::save_all(
         &ctx,
         renderer.as_mut(),
         &scene,
@@ -138,16 +152,14 @@ pub fn run(args: GaussiansArgs) -> Result<()> {
         "sort": sort,
         "load_ms": load_ms,
     });
-    if let Some(t) = &turntable {
-        merge(&mut extra, t.fields());
-    }
+    merge(&mut extra, saved.fields());
     let fields = run_fields(&ctx, &args.common, &frame, &run, extra);
     let summary = format!(
         "{}: {count} Gaussians (SH degree {sh_degree}, loaded in {load_ms:.0} ms), {sort} sort, {}",
         args.common.method.name(),
         run_summary(&ctx, &args.common, &frame, &run)
     );
-    report(args.common.json, fields, diff, &summary);
+    report(args.common.output.json, fields, diff, &summary);
     Ok(())
 }
 

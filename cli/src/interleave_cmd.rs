@@ -26,8 +26,12 @@ pub struct InterleaveArgs {
     #[arg(long, value_parser = parse_size)]
     size: Option<[u32; 2]>,
     /// Output PNG of the spatial image.
-    #[arg(long)]
+    #[arg(long, value_name = "F.png", help_heading = "Output")]
     out: PathBuf,
+    /// Print one JSON object with the run's parameters and the files written (`written`) on
+    /// stdout.
+    #[arg(long, help_heading = "Output")]
+    json: bool,
 }
 
 pub fn run(args: InterleaveArgs) -> Result<()> {
@@ -59,10 +63,12 @@ pub fn run(args: InterleaveArgs) -> Result<()> {
     let picked = spread_views(n, q);
     let image = if q > n {
         let list: Vec<String> = picked.iter().map(u32::to_string).collect();
-        eprintln!(
-            "the quilt has {q} views, the display {n}: using quilt views {}",
-            list.join(", ")
-        );
+        if !args.json {
+            eprintln!(
+                "the quilt has {q} views, the display {n}: using quilt views {}",
+                list.join(", ")
+            );
+        }
         pick_tiles(&image, &layout, &picked)
     } else {
         image
@@ -76,16 +82,32 @@ pub fn run(args: InterleaveArgs) -> Result<()> {
     let target = SpatialTarget::new(device, size)?;
     QuiltInterleaver::new(device)?.render(device, queue, &atlas, &frame, &target)?;
     target.read(device, queue)?.save_png(&args.out)?;
-    eprintln!(
-        "{}: {}x{} for {} from a {}x{} quilt of {} views",
-        args.out.display(),
-        size[0],
-        size[1],
-        args.display.display,
-        layout.cols,
-        layout.rows,
-        q
-    );
+    if args.json {
+        let fields = serde_json::json!({
+            "display": args.display.display,
+            "views": n,
+            "size": size,
+            "adapter": ctx.adapter_label(),
+            "quilt": args.quilt,
+            "quilt_grid": [layout.cols, layout.rows],
+            "quilt_tile": layout.tile,
+            "quilt_views": q,
+            "quilt_views_used": picked,
+            "written": [&args.out],
+        });
+        println!("{fields}");
+    } else {
+        eprintln!(
+            "wrote {}: {}x{} for {} from a {}x{} quilt of {} views",
+            args.out.display(),
+            size[0],
+            size[1],
+            args.display.display,
+            layout.cols,
+            layout.rows,
+            q
+        );
+    }
     Ok(())
 }
 

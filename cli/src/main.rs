@@ -2,6 +2,7 @@
 
 mod args;
 mod bench;
+mod examples;
 mod flags;
 mod gaussians_cmd;
 mod interleave_cmd;
@@ -31,30 +32,46 @@ struct Cli {
     command: Command,
 }
 
+/// In the order a user meets them: the renderers of each kind of data, then the converters
+/// and viewers, then the tools.
 #[derive(Subcommand)]
 enum Command {
-    /// Write a display mask as a view-index image (each channel = view of that subpixel).
-    Mask(mask_cmd::MaskArgs),
-    /// Render a triangle mesh (OBJ; a generated torus scene when no file is given).
+    /// Render a triangle mesh (OBJ, PLY, STL, glTF; a generated torus scene when no file is
+    /// given).
+    #[command(after_help = examples::MESH)]
     Mesh(mesh_cmd::MeshArgs),
-    /// Render a point cloud as splats (PLY / OBJ vertices; a generated scene when no file is given).
+    /// Render a point cloud as splats (PLY, LAS/LAZ, OBJ vertices; a generated scene when no
+    /// file is given).
+    #[command(after_help = examples::POINTS)]
     Points(points_cmd::PointsArgs),
+    /// Render a volume (NRRD, NIfTI, MetaImage, VTK, DICOM series, raw; a built-in CT-like
+    /// head when no file is given).
+    #[command(after_help = examples::VOLUME)]
+    Volume(volume_cmd::VolumeArgs),
     /// Render 3D Gaussian splats (graphdeco PLY, .splat, .spz; a generated scene when no file
     /// is given).
+    #[command(after_help = examples::GAUSSIANS)]
     Gaussians(gaussians_cmd::GaussiansArgs),
-    /// A Looking Glass quilt (views rendered anywhere) to any display's spatial image.
-    Interleave(interleave_cmd::InterleaveArgs),
-    /// An RGB-D image (colour + depth, or side by side) to any display, a quilt or per-view PNGs.
+    /// An RGB-D image (colour + depth, or side by side) to any display, a quilt or per-view
+    /// PNGs.
+    #[command(after_help = examples::RGBD)]
     Rgbd(rgbd_cmd::RgbdArgs),
-    /// Benchmark every renderer side by side, with speed/accuracy trade-offs (`--report DIR`).
-    Bench(bench::BenchArgs),
-    /// Render a volume (a built-in CT-like head when no file is given).
-    Volume(volume_cmd::VolumeArgs),
+    /// A Looking Glass quilt (views rendered anywhere) to any display's spatial image.
+    #[command(after_help = examples::INTERLEAVE)]
+    Interleave(interleave_cmd::InterleaveArgs),
     /// Open a window and render live (mouse: orbit, zoom, pan; keys: m method, d display,
     /// p preview, [ ] separation, - = focal plane, r reset, Esc quit).
+    #[command(after_help = examples::VIEW)]
     View(view::ViewArgs),
     /// Extract what one view zone sees from a spatial image, or a red/cyan anaglyph.
+    #[command(after_help = examples::VIEWS)]
     Views(views_cmd::ViewsArgs),
+    /// Write a display mask as a view-index image (each channel = view of that subpixel).
+    #[command(after_help = examples::MASK)]
+    Mask(mask_cmd::MaskArgs),
+    /// Benchmark every renderer side by side, with speed/accuracy trade-offs (`--report DIR`).
+    #[command(after_help = examples::BENCH)]
+    Bench(bench::BenchArgs),
 }
 
 fn main() -> std::process::ExitCode {

@@ -19,8 +19,11 @@ pub struct MaskArgs {
     #[arg(long)]
     gpu: bool,
     /// Output PNG (RGB8, channel = view index).
-    #[arg(long)]
+    #[arg(long, value_name = "F.png", help_heading = "Output")]
     out: PathBuf,
+    /// Print one JSON object with the display, the size and the file written (`written`).
+    #[arg(long, help_heading = "Output")]
+    json: bool,
 }
 
 pub fn run(args: MaskArgs) -> Result<()> {
@@ -44,5 +47,12 @@ pub fn run(args: MaskArgs) -> Result<()> {
         image
     };
     image.save_png(&args.out)?;
+    let fields = serde_json::json!({
+        "display": args.display.display,
+        "views": display.views(),
+        "size": args.size,
+        "gpu": args.gpu,
+    });
+    crate::output::report_written(args.json, fields, &[args.out]);
     Ok(())
 }

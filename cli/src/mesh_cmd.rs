@@ -55,6 +55,7 @@ pub struct MeshArgs {
 
 /// How a mesh is prepared and rendered: the flags `mesh` and `view` share.
 #[derive(clap::Args, Clone, Debug, PartialEq)]
+#[command(next_help_heading = "Method")]
 pub struct MeshFlags {
     /// Single-pass visibility: auto | compute | atomic | exact (per-subpixel depth) | fast (the
     /// paper's one depth per pixel); auto = compute where 64-bit atomics exist, else exact.
@@ -73,6 +74,29 @@ pub struct MeshFlags {
 }
 
 impl MeshFlags {
+    /// Refuse a setting the chosen method would ignore, naming the method that uses it.
+    pub fn check(&self, method: Method) -> Result<()> {
+        let single_pass_only = [
+            ("--visibility", self.visibility != VisibilityArg::Auto),
+            ("--bounds", self.bounds != BoundsArg::Exact),
+        ];
+        for (flag, set) in single_pass_only {
+            if set && method != Method::SinglePass {
+                anyhow::bail!(
+                    "{flag}: only the single pass uses it (the {method} method renders each view \
+                     with its own depth buffer); drop it or use --method single-pass"
+                );
+            }
+        }
+        if self.tile_clip != TileClipArg::Auto && method != Method::Tiled {
+            anyhow::bail!(
+                "--tile-clip: only --method tiled keeps views inside tiles (the method is \
+                 {method}); drop it or use --method tiled"
+            );
+        }
+        Ok(())
+    }
+
     /// The mesh in `file` (the generated torus scene without one), reordered if asked.
     pub fn load(&self, file: Option<&Path>) -> Result<Mesh> {
         let mut mesh = match file {
@@ -110,6 +134,7 @@ impl MeshFlags {
 
 pub fn run(args: MeshArgs) -> Result<()> {
     args.common.check()?;
+    args.mesh.check(args.common.method)?;
     let mesh = args.mesh.load(args.obj.as_deref())?;
     let bounds = mesh.bounds().context("the mesh has no vertices")?;
     let frame = args.common.frame(bounds)?;
@@ -128,7 +153,7 @@ pub fn run(args: MeshArgs) -> Result<()> {
         &frame,
         args.common.frames,
     )?;
-    let turntable = crate::output::save_all(
+    let mut saved = crate::output::save_all(
         &ctx,
         renderer.as_mut(),
         &buffers,
@@ -155,12 +180,18 @@ pub fn run(args: MeshArgs) -> Result<()> {
         let build = |o: &RendererOptions| o.mesh_renderer(device);
         merge(
             &mut extra,
-            hole_report(&ctx, &args.common.warp, &options, build, &buffers, &frame)?,
+            hole_report(
+                &ctx,
+                &args.common,
+                &options,
+                build,
+                &buffers,
+                &frame,
+                &mut saved,
+            )?,
         );
     }
-    if let Some(t) = &turntable {
-        merge(&mut extra, t.fields());
-    }
+    merge(&mut extra, saved.fields());
     let mut fields = run_fields(&ctx, &args.common, &frame, &run, extra);
     if args.common.method == Method::SinglePass {
         fields["visibility"] = options.mesh_single_pass(device).visibility.name().into();
@@ -171,6 +202,6 @@ pub fn run(args: MeshArgs) -> Result<()> {
         mesh.triangle_count(),
         run_summary(&ctx, &args.common, &frame, &run)
     );
-    report(args.common.json, fields, diff, &summary);
+    report(args.common.output.json, fields, diff, &summary);
     Ok(())
 }

@@ -21,7 +21,8 @@ pub enum OutputArg {
     Spatial,
     /// A Looking Glass quilt of every view (view 0 bottom-left), named `…_qs{c}x{r}a{aspect}`.
     Quilt,
-    /// One PNG per view: `{stem}_view{V}.png`.
+    /// One PNG per view: `{stem}_{V}.png`, V zero-padded to the digits of the last view (at
+    /// least two), so that the files sort in view order.
     Views,
     /// Red-cyan anaglyph of the --eyes pair, full colour.
     Anaglyph,
@@ -73,6 +74,98 @@ impl OutputArg {
     }
 }
 
+/// What a command writes and where: the flags every command that renders views shares
+/// (`mesh`, `points`, `volume`, `gaussians`, `rgbd`), one definition.
+#[derive(clap::Args, Clone, Debug)]
+#[command(next_help_heading = "Output")]
+pub struct OutputArgs {
+    /// Output PNG (of the spatial image, or of --output's format). Without it nothing is
+    /// written, which only --json, --compare or --frames (a measurement) may ask for.
+    #[arg(long, value_name = "F.png")]
+    pub out: Option<PathBuf>,
+    /// What --out holds: spatial | quilt (named `{stem}_qs{c}x{r}a{aspect}.png`) | views
+    /// (`{stem}_00.png`…, zero-padded) | anaglyph | anaglyph-half | anaglyph-dubois |
+    /// side-by-side | side-by-side-half | top-bottom | top-bottom-half | rows | columns |
+    /// checkerboard (every format but spatial renders each view it needs with the --method).
+    #[arg(
+        long = "output",
+        value_name = "FORMAT",
+        value_enum,
+        default_value = "spatial"
+    )]
+    pub format: OutputArg,
+    /// With --output quilt: the quilt's grid COLSxROWS (default: a Looking Glass's own grid,
+    /// else one chosen for the view count; Looking Glass software also reads e.g. 8x6 for 48
+    /// views, the last tiles empty).
+    #[arg(long = "quilt", value_name = "COLSxROWS", value_parser = crate::args::parse_size)]
+    pub quilt_grid: Option<[u32; 2]>,
+    /// With the stereo formats of --output (anaglyph…, side-by-side…, top-bottom…, rows,
+    /// columns, checkerboard): the left and right views L,R (default: two views a quarter of
+    /// the views apart, about the middle).
+    #[arg(long, value_name = "L,R", value_parser = crate::args::parse_pair)]
+    pub eyes: Option<[u32; 2]>,
+    /// Print one JSON object with the run's parameters, timing and the files written
+    /// (`written`) on stdout.
+    #[arg(long)]
+    pub json: bool,
+    /// Retired: `--output quilt --out F.png` writes the quilt.
+    #[arg(long, hide = true)]
+    pub quilt_out: Option<PathBuf>,
+    /// Retired: `--output views --out DIR/view.png` writes every view.
+    #[arg(long, hide = true)]
+    pub views_out: Option<PathBuf>,
+}
+
+impl OutputArgs {
+    /// Fail early on what can be checked before loading anything; `measuring`: the run was
+    /// asked for something besides --out (numbers: --compare, --frames; or another file), so
+    /// writing no --out is what was asked.
+    pub fn check(&self, measuring: bool) -> Result<()> {
+        if let Some(f) = &self.quilt_out {
+            bail!(
+                "--quilt-out was retired: write the quilt with --output quilt --out {} (one \
+                 output per run; the name gets the _qs{{cols}}x{{rows}}a{{aspect}} suffix)",
+                f.display()
+            );
+        }
+        if let Some(dir) = &self.views_out {
+            bail!(
+                "--views-out was retired: write every view with --output views --out {} \
+                 (writes view_00.png, view_01.png, … there, as --views-out did)",
+                dir.join("view.png").display()
+            );
+        }
+        match &self.out {
+            Some(out) => crate::args::check_output(out)?,
+            None if self.format != OutputArg::Spatial => bail!(
+                "--output {} writes to --out, which is missing",
+                self.format.name()
+            ),
+            None if !(measuring || self.json) => bail!(
+                "nothing to write: give --out F.png (or --json, --compare or --frames N to \
+                 measure without writing an image)"
+            ),
+            None => {}
+        }
+        if self.quilt_grid.is_some() && self.format != OutputArg::Quilt {
+            bail!(
+                "--quilt sets the grid of --output quilt, not of --output {}",
+                self.format.name()
+            );
+        }
+        if let Some([l, r]) = self.eyes {
+            if self.format.stereo([1, 1]).is_none() {
+                bail!(
+                    "--eyes {l},{r} chooses the views of a stereo --output (anaglyph, \
+                     side-by-side, top-bottom, rows, columns, checkerboard), not of --output {}",
+                    self.format.name()
+                );
+            }
+        }
+        Ok(())
+    }
+}
+
 /// The two views of the stereo formats: `eyes`, or [`default_eyes`].
 pub fn eye_views(eyes: Option<[u32; 2]>, views: u32) -> Result<[u32; 2]> {
     let [l, r] = eyes.unwrap_or(default_eyes(views));
@@ -98,8 +191,57 @@ pub fn default_eyes(views: u32) -> [u32; 2] {
     [left, left + apart]
 }
 
-/// What a render command writes after its timed run: `--quilt-out` (the tiled method's atlas,
-/// first, since `--output` renders more frames with the same renderer), then `--out`, or with
+/// What a run wrote: every file, and the turntable's summary where it turned.
+pub struct Saved {
+    pub written: Vec<PathBuf>,
+    pub turntable: Option<crate::turntable::Summary>,
+}
+
+impl Saved {
+    /// The `--json` fields: `written` (every file, in order) and the turntable's.
+    pub fn fields(&self) -> serde_json::Value {
+        let mut fields = serde_json::json!({ "written": self.written });
+        if let Some(t) = &self.turntable {
+            crate::run::merge(&mut fields, t.fields());
+        }
+        fields
+    }
+}
+
+/// Say on stderr what was written (unless `json`: then the JSON's `written` says it): every
+/// file, or for many the count, the first and the last.
+pub fn say_written(json: bool, written: &[PathBuf]) {
+    if json {
+        return;
+    }
+    match written {
+        [] => {}
+        [one] => eprintln!("wrote {}", one.display()),
+        [first, .., last] if written.len() > 4 => eprintln!(
+            "wrote {} files: {} … {}",
+            written.len(),
+            first.display(),
+            last.display()
+        ),
+        many => {
+            let names: Vec<String> = many.iter().map(|p| p.display().to_string()).collect();
+            eprintln!("wrote {}", names.join(", "));
+        }
+    }
+}
+
+/// The end of a command that writes files and renders nothing to time (`mask`, `views`): with
+/// `json`, one object of `fields` plus `written`; else the files on stderr.
+pub fn report_written(json: bool, mut fields: serde_json::Value, written: &[PathBuf]) {
+    if json {
+        fields["written"] = serde_json::json!(written);
+        println!("{fields}");
+    } else {
+        say_written(false, written);
+    }
+}
+
+/// What a render command writes after its timed run: `--out` in `--output`'s format, or with
 /// `--turntable` its numbered frames (scene turned around the centre of `bounds`).
 pub fn save_all<S: ?Sized>(
     ctx: &GpuContext,
@@ -109,22 +251,55 @@ pub fn save_all<S: ?Sized>(
     bounds: autostereo::camera::Bounds,
     common: &crate::args::RenderArgs,
     spatial: &RgbImage,
-) -> Result<Option<crate::turntable::Summary>> {
-    if let Some(quilt) = &common.quilt_out {
-        crate::run::save_quilt(ctx, &*renderer, quilt)?;
-    }
+) -> Result<Saved> {
+    let output = &common.output;
     let turntable = crate::turntable::render(ctx, renderer, scene, frame, bounds, common)?;
-    if let Some(summary) = &turntable {
-        if !common.json {
+    let written = if let Some(summary) = &turntable {
+        if !output.json {
             eprintln!("{}", summary.line());
         }
-    } else if let Some(out) = &common.out {
-        write(ctx, renderer, scene, frame, common, Some(spatial), out)?;
-        if common.output == OutputArg::Spatial {
+        summary.written.clone()
+    } else if let Some(out) = &output.out {
+        let written = write(ctx, renderer, scene, frame, output, Some(spatial), out)?;
+        say_written(output.json, &written);
+        if output.format == OutputArg::Spatial {
             crate::run::how_to_look(out, common, frame);
         }
-    }
-    Ok(turntable)
+        written
+    } else {
+        Vec::new()
+    };
+    Ok(Saved { written, turntable })
+}
+
+/// The quilt of `views` views `--output quilt` writes for `display` at `size` (and the
+/// viewer's quilt preview shows): the `--quilt` grid, else a Looking Glass's own (the family's
+/// grid, tiles of the panel's aspect within the family's quilt size), else the grid for the
+/// view count; tiles of the Looking Glass's size, else of `size`.
+pub fn quilt_layout(
+    display: &Display,
+    views: u32,
+    size: [u32; 2],
+    grid: Option<[u32; 2]>,
+) -> Result<QuiltLayout> {
+    let lkg = display.default_quilt(views);
+    let tile = lkg.map_or(size, |q| q.tile);
+    Ok(match (grid, lkg) {
+        (Some([cols, rows]), _) => QuiltLayout::with_grid(cols, rows, tile, views)
+            .map_err(|e| anyhow::anyhow!("--quilt {cols}x{rows}: {e}"))?,
+        (None, Some(lkg)) => lkg,
+        (None, None) => QuiltLayout::for_views(views, tile),
+    })
+}
+
+/// `{stem}_{v}.png` next to `out`, `v` zero-padded to the digits of view `views − 1` (at
+/// least two), so that a listing sorts the files in view order.
+pub fn view_file(out: &Path, v: u32, views: u32) -> PathBuf {
+    let digits = (views.saturating_sub(1).max(1).ilog10() + 1).max(2) as usize;
+    PathBuf::from(format!(
+        "{}_{v:0digits$}.png",
+        out.with_extension("").display()
+    ))
 }
 
 /// Write `--out` in `--output`'s format; `spatial` is the frame's image if already rendered
@@ -134,7 +309,7 @@ pub fn write<S: ?Sized>(
     renderer: &mut dyn Renderer<S>,
     scene: &S,
     frame: &Frame,
-    common: &crate::args::RenderArgs,
+    output: &OutputArgs,
     spatial: Option<&RgbImage>,
     out: &Path,
 ) -> Result<Vec<PathBuf>> {
@@ -149,18 +324,20 @@ pub fn write<S: ?Sized>(
             ..frame.clone()
         };
         if own_aspect {
+            // A quilt's tile is the view image itself: rendered at its own size.
             eye.camera.aspect = size[0] as f32 / size[1] as f32;
+            eye.view_scale = [1.0; 2];
         }
         let target = SpatialTarget::new(&ctx.device, size)?;
         renderer
             .render(&ctx.device, &ctx.queue, scene, &eye, &target)
-            .with_context(|| format!("--output {}: rendering view {view}", common.output.name()))?;
+            .with_context(|| format!("--output {}: rendering view {view}", output.format.name()))?;
         Ok(target)
     };
-    if let Some((format, eye)) = common.output.stereo(frame.size) {
-        let [l, r] = eye_views(common.eyes, views)?;
+    if let Some((format, eye)) = output.format.stereo(frame.size) {
+        let [l, r] = eye_views(output.eyes, views)?;
         let (left, right) = (one(l, eye, false)?, one(r, eye, false)?);
-        let output = SpatialTarget::new(&ctx.device, format.output_size(eye))?;
+        let target = SpatialTarget::new(&ctx.device, format.output_size(eye))?;
         let mut encoder = ctx
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor {
@@ -172,18 +349,17 @@ pub fn write<S: ?Sized>(
             format,
             &left,
             &right,
-            &output,
+            &target,
         )?;
         ctx.queue.submit([encoder.finish()]);
-        output.read(&ctx.device, &ctx.queue)?.save_png(out)?;
+        target.read(&ctx.device, &ctx.queue)?.save_png(out)?;
         return Ok(vec![out.to_path_buf()]);
     }
-    match common.output {
+    match output.format {
         OutputArg::Views => {
-            let stem = out.with_extension("");
             let mut written = Vec::new();
             for v in 0..views {
-                let path = PathBuf::from(format!("{}_view{v}.png", stem.display()));
+                let path = view_file(out, v, views);
                 one(v, frame.size, false)?
                     .read(&ctx.device, &ctx.queue)?
                     .save_png(&path)?;
@@ -192,15 +368,17 @@ pub fn write<S: ?Sized>(
             Ok(written)
         }
         OutputArg::Quilt => {
-            // A Looking Glass's own quilt unless --quilt says otherwise: the family's grid,
-            // tiles of the panel's aspect within the family's quilt size.
-            let layout = match (common.quilt_grid, frame.display.default_quilt(views)) {
-                (Some([cols, rows]), _) => {
-                    QuiltLayout::with_grid(cols, rows, frame.size, views).context("--quilt")?
-                }
-                (None, Some(lkg)) => lkg,
-                (None, None) => QuiltLayout::for_views(views, frame.size),
+            // --view-size / --view-scale set the tiles' size, over a Looking Glass's own.
+            let scaled = frame.view_scale != [1.0; 2];
+            let size = if scaled {
+                frame.view_size()
+            } else {
+                frame.size
             };
+            let mut layout = quilt_layout(&frame.display, views, size, output.quilt_grid)?;
+            if scaled {
+                layout.tile = size;
+            }
             let [w, h] = layout.size();
             RgbImage::check_size(w, h).context("--output quilt")?;
             let mut quilt = RgbImage::new(w, h);
@@ -246,5 +424,20 @@ mod tests {
             let [l, r] = default_eyes(n);
             assert!(l < r && r < n, "{n}: {l},{r}");
         }
+    }
+
+    #[test]
+    fn view_files_are_zero_padded_to_sort_in_view_order() {
+        use super::view_file;
+        use std::path::{Path, PathBuf};
+        let out = Path::new("dir/head.png");
+        assert_eq!(view_file(out, 3, 8), PathBuf::from("dir/head_03.png"));
+        assert_eq!(view_file(out, 7, 45), PathBuf::from("dir/head_07.png"));
+        assert_eq!(view_file(out, 7, 101), PathBuf::from("dir/head_007.png"));
+        assert_eq!(view_file(out, 0, 1), PathBuf::from("dir/head_00.png"));
+        let mut names: Vec<PathBuf> = (0..45).map(|v| view_file(out, v, 45)).collect();
+        let in_order = names.clone();
+        names.sort();
+        assert_eq!(names, in_order);
     }
 }

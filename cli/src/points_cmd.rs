@@ -35,6 +35,7 @@ pub struct PointsArgs {
 
 /// How a point cloud is prepared and rendered: the flags `points` and `view` share.
 #[derive(clap::Args, Clone, Debug, PartialEq)]
+#[command(next_help_heading = "Method")]
 pub struct PointFlags {
     /// ε of the ε-z compositing, as a fraction of the scene's depth extent (bounding diameter).
     #[arg(long, default_value_t = autostereo::points::DEFAULT_EPSILON_FRACTION)]
@@ -51,8 +52,21 @@ pub struct PointFlags {
 }
 
 impl PointFlags {
-    /// Refuse what would render nothing or nonsense.
-    pub fn check(&self) -> Result<()> {
+    /// Refuse what `method` would ignore, then [`Self::check_values`].
+    pub fn check(&self, method: Method) -> Result<()> {
+        if self.depth != DepthArg::Exact && method != Method::SinglePass {
+            bail!(
+                "--depth: only the single pass keeps one depth per group image (the {method} \
+                 method renders each view with its own depth); drop it or use --method \
+                 single-pass"
+            );
+        }
+        self.check_values()
+    }
+
+    /// Refuse what would render nothing or nonsense (the viewer, which cycles methods, checks
+    /// only this).
+    pub fn check_values(&self) -> Result<()> {
         if !(self.epsilon.is_finite() && self.epsilon >= 0.0) {
             bail!("--epsilon {}: must be finite and ≥ 0", self.epsilon);
         }
@@ -108,7 +122,7 @@ fn parse_groups(s: &str) -> Result<GroupCount, String> {
 
 pub fn run(args: PointsArgs) -> Result<()> {
     args.common.check()?;
-    args.points.check()?;
+    args.points.check(args.common.method)?;
     let start = Instant::now();
     let cloud = PointFlags::cloud(args.file.as_deref())?;
     let load_ms = start.elapsed().as_secs_f64() * 1e3;
@@ -127,7 +141,7 @@ pub fn run(args: PointsArgs) -> Result<()> {
     let method = args.common.method;
     let mut renderer = options.points_renderer(device, &scene)?;
     let run = timed(&ctx, renderer.as_mut(), &scene, &frame, args.common.frames)?;
-    let turntable = crate::output::save_all(
+    let mut saved = crate::output::save_all(
         &ctx,
         renderer.as_mut(),
         &scene,
@@ -171,12 +185,18 @@ pub fn run(args: PointsArgs) -> Result<()> {
         let build = |o: &RendererOptions| o.points_renderer(device, &scene);
         merge(
             &mut extra,
-            hole_report(&ctx, &args.common.warp, &options, build, &scene, &frame)?,
+            hole_report(
+                &ctx,
+                &args.common,
+                &options,
+                build,
+                &scene,
+                &frame,
+                &mut saved,
+            )?,
         );
     }
-    if let Some(t) = &turntable {
-        merge(&mut extra, t.fields());
-    }
+    merge(&mut extra, saved.fields());
     let fields = run_fields(&ctx, &args.common, &frame, &run, extra);
     let estimated = match (completion.normals_estimated, completion.radii_estimated) {
         (false, false) => String::new(),
@@ -197,6 +217,6 @@ pub fn run(args: PointsArgs) -> Result<()> {
         scene.grouping_ms,
         run_summary(&ctx, &args.common, &frame, &run)
     );
-    report(args.common.json, fields, diff, &summary);
+    report(args.common.output.json, fields, diff, &summary);
     Ok(())
 }

@@ -1,19 +1,20 @@
 //! `autostereo rgbd`: an RGB-D image (colour + depth map, or one side-by-side file) to any
-//! display's spatial image, a Looking Glass quilt or per-view PNGs, by warping.
+//! display's spatial image, or any `--output` format (a Looking Glass quilt, per-view PNGs,
+//! stereo pairs), by warping.
 
 use std::path::PathBuf;
 
-use anyhow::{bail, Context, Result};
+use anyhow::{bail, Result};
 use autostereo::frame::Frame;
-use autostereo::image_io::RgbImage;
-use autostereo::render::quilt::QuiltLayout;
 use autostereo::render::Renderer;
 use autostereo::rgbd::{DepthMapOptions, RgbdImage, RgbdScene};
 use autostereo::target::SpatialTarget;
-use autostereo::timing::{median, FrameTimer};
-use autostereo::warp::{RgbdWarp, WarpOptions, WarpPath};
+use autostereo::warp::{RgbdWarp, WarpOptions};
 
-use crate::args::{check_output, parse_size, DisplayArgs};
+use crate::args::{parse_size, DisplayArgs};
+use crate::output::{say_written, OutputArgs, Saved};
+use crate::run::{report, timed};
+use crate::warp_cmd::{WarpPathArg, WarpSynthesisArgs};
 
 #[derive(clap::Args)]
 pub struct RgbdArgs {
@@ -24,80 +25,62 @@ pub struct RgbdArgs {
     #[arg(required_unless_present = "sbs")]
     depth: Option<PathBuf>,
     /// COLOR is one side-by-side image: colour in the left half, depth in the right.
-    #[arg(long, conflicts_with = "depth")]
+    #[arg(long, conflicts_with = "depth", help_heading = "Input")]
     sbs: bool,
     /// The depth map is black = near (distance rather than nearness).
-    #[arg(long)]
+    #[arg(long, help_heading = "Input")]
     depth_invert: bool,
     /// Resample a depth map of another size than the colour image (bilinear) instead of
     /// refusing it.
-    #[arg(long)]
+    #[arg(long, help_heading = "Input")]
     depth_resample: bool,
-    /// Depth value (0…1, after --depth-invert) that lands on the display plane.
-    #[arg(long, allow_negative_numbers = true, default_value_t = 0.5)]
-    focus: f32,
-    /// Parallax scale: 1 shifts the nearest depth (focus 0) by 3 % of the width in the
-    /// outermost views.
-    #[arg(long, allow_negative_numbers = true, default_value_t = 1.0)]
-    depthiness: f32,
-    /// Neighbours warped further apart than this many pixels straddle a disocclusion, filled
-    /// from the background side.
-    #[arg(long, default_value_t = autostereo::warp::DEFAULT_HOLE_GAP)]
-    hole_gap: f32,
+    /// CPU memory budget for loading (bytes, or with K/M/G/T, KB…TB or KiB…TiB, all binary:
+    /// 1K = 1KB = 1KiB = 1024 bytes; default 8G).
+    #[arg(long, value_parser = autostereo::budget::parse_bytes, help_heading = "Input")]
+    max_memory: Option<u64>,
     #[command(flatten)]
     display: DisplayArgs,
     /// Output size WxH (default: the colour image's).
-    #[arg(long, value_parser = parse_size)]
+    #[arg(long, value_parser = parse_size, help_heading = "Display")]
     size: Option<[u32; 2]>,
-    /// Output PNG of the spatial image.
-    #[arg(long)]
-    out: Option<PathBuf>,
-    /// Also write the spatial image's hole mask (white = subpixel filled from the background
-    /// side or the edge, not seen) and print the filled share.
-    #[arg(long)]
-    hole_mask: Option<PathBuf>,
-    /// Also write every view as a Looking Glass quilt (PNG; the name gets the
-    /// `_qs{cols}x{rows}a{aspect}` suffix).
-    #[arg(long)]
-    quilt_out: Option<PathBuf>,
-    /// Also write every view as DIR/view_NN.png (DIR must exist).
-    #[arg(long)]
-    views_out: Option<PathBuf>,
-    /// Where the warp writes: direct (each subpixel warps its own view into the spatial
-    /// image) or per-view (every view into its own image, then the mask compositing).
-    #[arg(long, value_enum, default_value = "direct")]
-    path: PathArg,
-    /// Timed frames of the spatial image (after two warm-up frames); the median is reported.
-    #[arg(long, default_value_t = 1, value_parser = crate::args::frames_parser())]
-    frames: u32,
-    /// CPU memory budget for loading (bytes, or with K/M/G/T, KB…TB or KiB…TiB, all binary:
-    /// 1K = 1KB = 1KiB = 1024 bytes; default 8G).
-    #[arg(long, value_parser = autostereo::budget::parse_bytes)]
-    max_memory: Option<u64>,
-}
-
-#[derive(Clone, Copy, clap::ValueEnum)]
-enum PathArg {
-    Direct,
-    PerView,
+    /// Depth value (0…1, after --depth-invert) that lands on the display plane.
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        default_value_t = 0.5,
+        help_heading = "Camera"
+    )]
+    focus: f32,
+    /// Parallax scale: 1 shifts the nearest depth (focus 0) by 3 % of the width in the
+    /// outermost views.
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        default_value_t = 1.0,
+        help_heading = "Camera"
+    )]
+    depthiness: f32,
+    #[command(flatten)]
+    warp: WarpSynthesisArgs,
+    #[command(flatten)]
+    output: OutputArgs,
+    /// Time N frames of the spatial image after two warm-up frames and report the median
+    /// (without it: one frame, no warm-up).
+    #[arg(long, value_name = "N", value_parser = crate::args::frames_parser(), help_heading = "Measuring")]
+    frames: Option<u32>,
+    /// Renamed --warp-path (direct | per-view), as in --method warp.
+    #[arg(long, hide = true)]
+    path: Option<String>,
 }
 
 pub fn run(args: RgbdArgs) -> Result<()> {
-    for path in [&args.out, &args.quilt_out, &args.hole_mask]
-        .into_iter()
-        .flatten()
-    {
-        check_output(path)?;
+    if let Some(path) = &args.path {
+        bail!("--path was renamed: --warp-path {path} (direct | per-view), as with --method warp");
     }
-    if let Some(dir) = &args.views_out {
-        if !dir.is_dir() {
-            bail!("--views-out {}: no such directory", dir.display());
-        }
-    }
-    let outputs = [&args.out, &args.quilt_out, &args.views_out, &args.hole_mask];
-    if outputs.iter().all(|o| o.is_none()) {
-        bail!("nothing to write: give --out, --quilt-out, --views-out or --hole-mask");
-    }
+    // The hole mask is an output too: with it alone nothing else need be written.
+    args.output
+        .check(args.frames.is_some() || args.warp.hole_mask.is_some())?;
+    args.warp.check()?;
     if let Some(bytes) = args.max_memory {
         autostereo::budget::set_max_memory(bytes);
     }
@@ -111,109 +94,87 @@ pub fn run(args: RgbdArgs) -> Result<()> {
     };
     let size = args.size.unwrap_or(image.size());
     let frame = Frame::for_display(args.display.display()?, size)?;
-    let options = WarpOptions {
+    let options = args.warp.apply(WarpOptions {
         focus: args.focus,
         depthiness: args.depthiness,
-        hole_gap: args.hole_gap,
         view: None,
-        path: match args.path {
-            PathArg::Direct => WarpPath::Direct,
-            PathArg::PerView => WarpPath::PerView,
-        },
         ..WarpOptions::default()
-    };
+    });
     let ctx = crate::args::gpu()?;
     let (device, queue) = (&ctx.device, &ctx.queue);
     let scene = RgbdScene::new(device, queue, &image)?;
     let mut warp = RgbdWarp::new(device, options)?;
-    let target = SpatialTarget::new(device, size)?;
-    if let Some(out) = &args.out {
-        warp.prepare(device, queue, &scene, &frame)?;
-        let timer = FrameTimer::new(device, queue);
-        let mut samples = Vec::new();
-        for i in 0..args.frames + 2 {
-            let ms = timer.time_frame(device, queue, |encoder| {
-                warp.encode(device, encoder, &scene, &frame, &target)
-            })?;
-            if i >= 2 {
-                samples.push(ms);
-            }
-        }
-        target.read(device, queue)?.save_png(out)?;
-        eprintln!(
-            "{}: {}x{} for {} ({} views), {:?} warp, {:.2} ms/frame (median of {}, {:?})",
-            out.display(),
-            size[0],
-            size[1],
-            args.display.display,
-            frame.camera.views,
-            options.path,
-            median(&samples),
-            args.frames,
-            timer.source()
-        );
+    let run = timed(&ctx, &mut warp, &scene, &frame, args.frames)?;
+    let mut saved = Saved {
+        written: Vec::new(),
+        turntable: None,
+    };
+    if let Some(out) = &args.output.out {
+        saved.written = crate::output::write(
+            &ctx,
+            &mut warp,
+            &scene,
+            &frame,
+            &args.output,
+            Some(&run.image),
+            out,
+        )?;
+        say_written(args.output.json, &saved.written);
     }
-    if let Some(path) = &args.hole_mask {
+    let mut hole_share = None;
+    if let Some(path) = &args.warp.hole_mask {
         warp.set_options(WarpOptions {
             hole_mask: true,
             ..options
         });
+        let target = SpatialTarget::new(device, size)?;
         warp.render(device, queue, &scene, &frame, &target)?;
         let mask = target.read(device, queue)?;
         let filled = mask.data.iter().filter(|&&v| v > 127).count();
         mask.save_png(path)?;
-        eprintln!(
-            "{}: {:.3} % of subpixels filled (disocclusions and edges)",
-            path.display(),
-            100.0 * filled as f64 / mask.data.len() as f64
-        );
-        warp.set_options(options);
-    }
-    if args.quilt_out.is_none() && args.views_out.is_none() {
-        return Ok(());
-    }
-    let views = frame.camera.views;
-    let layout = QuiltLayout::for_views(views, size);
-    let quilt_size = layout.size();
-    let mut quilt = args
-        .quilt_out
-        .as_ref()
-        .map(|_| {
-            RgbImage::check_size(quilt_size[0], quilt_size[1])?;
-            Ok::<_, autostereo::Error>(RgbImage::new(quilt_size[0], quilt_size[1]))
-        })
-        .transpose()?;
-    for v in 0..views {
-        warp.set_options(WarpOptions {
-            view: Some(v),
-            path: WarpPath::Direct,
-            ..options
-        });
-        warp.render(device, queue, &scene, &frame, &target)?;
-        let view = target.read(device, queue)?;
-        if let Some(dir) = &args.views_out {
-            let path = dir.join(format!("view_{v:02}.png"));
-            view.save_png(&path)
-                .with_context(|| format!("writing view {v}"))?;
+        let share = filled as f64 / mask.data.len() as f64;
+        hole_share = Some(share);
+        if !args.output.json {
+            eprintln!(
+                "{}: {:.3} % of subpixels filled (disocclusions and edges)",
+                path.display(),
+                100.0 * share
+            );
         }
-        if let Some(quilt) = &mut quilt {
-            let [x0, y0] = layout.tile_origin(v);
-            for y in 0..size[1] {
-                for x in 0..size[0] {
-                    for c in 0..3 {
-                        quilt.set(x0 + x, y0 + y, c, view.get(x, y, c));
-                    }
-                }
-            }
-        }
+        saved.written.push(path.clone());
     }
-    if let (Some(path), Some(quilt)) = (&args.quilt_out, &quilt) {
-        let path = layout.file_name(path);
-        quilt.save_png(&path)?;
-        eprintln!("quilt {}", path.display());
-    }
-    if let Some(dir) = &args.views_out {
-        eprintln!("{views} views in {}", dir.display());
-    }
+    let fields = serde_json::json!({
+        "method": "warp",
+        "views": frame.camera.views,
+        "views_per_pixel": frame.display.views_per_pixel(),
+        "display": args.display.display,
+        "size": size,
+        "adapter": ctx.adapter_label(),
+        "ms": run.ms,
+        "frames": args.frames.unwrap_or(1),
+        "warm_up_frames": if args.frames.is_some() { crate::run::WARM_UP_FRAMES } else { 0 },
+        "timing": run.timing,
+        "gpu_bytes": run.gpu_bytes,
+        "warp_path": WarpPathArg::of(options.path),
+        "focus": options.focus,
+        "depthiness": options.depthiness,
+        "hole_gap": options.hole_gap,
+        "hole_share": hole_share,
+        "output": args.output.format.name(),
+        "written": saved.written,
+    });
+    let summary = format!(
+        "rgbd: {}x{} for {} ({} views), {} warp, {:.2} ms/frame (median of {}, {:?}) on {}",
+        size[0],
+        size[1],
+        args.display.display,
+        frame.camera.views,
+        WarpPathArg::of(options.path),
+        run.ms,
+        args.frames.unwrap_or(1),
+        run.timing,
+        ctx.adapter_label()
+    );
+    report(args.output.json, fields, None, &summary);
     Ok(())
 }

@@ -1,8 +1,8 @@
 //! What the render commands share: timed frames, the N-pass comparison, the report.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-use anyhow::{Context, Result};
+use anyhow::Result;
 use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::image_io::{compare, ImageDiff, RgbImage};
@@ -10,8 +10,9 @@ use autostereo::render::Renderer;
 use autostereo::target::SpatialTarget;
 use autostereo::timing::{median, FrameTimer, TimingSource};
 
-/// Frames rendered before timing: lavapipe compiles shaders on first use.
-const WARM_UP_FRAMES: u32 = 2;
+/// Frames rendered before timing, when timing is asked for (`--frames`): lavapipe compiles
+/// shaders on first use.
+pub const WARM_UP_FRAMES: u32 = 2;
 
 /// The last frame's image and the median time over the timed frames.
 pub struct Timed {
@@ -25,24 +26,28 @@ pub struct Timed {
     pub how: Option<String>,
 }
 
-/// Render `frames` timed frames after the warm-up; keep the last image.
+/// Render `frames` timed frames after the warm-up (`--frames N`), else one frame without a
+/// warm-up (nobody asked for timing: the one frame's time is still reported); keep the last
+/// image.
 pub fn timed<S: ?Sized>(
     ctx: &GpuContext,
     renderer: &mut dyn Renderer<S>,
     scene: &S,
     frame: &Frame,
-    frames: u32,
+    frames: Option<u32>,
 ) -> Result<Timed> {
+    let warm_up = if frames.is_some() { WARM_UP_FRAMES } else { 0 };
+    let frames = frames.unwrap_or(1);
     let (device, queue) = (&ctx.device, &ctx.queue);
     let target = SpatialTarget::new(device, frame.size)?;
     let timer = FrameTimer::new(device, queue);
     renderer.prepare(device, queue, scene, frame)?;
     let mut times = Vec::new();
-    for i in 0..frames + WARM_UP_FRAMES {
+    for i in 0..frames + warm_up {
         let ms = timer.time_frame(device, queue, |encoder| {
             renderer.encode(device, encoder, scene, frame, &target)
         })?;
-        if i >= WARM_UP_FRAMES {
+        if i >= warm_up {
             times.push(ms);
         }
     }
@@ -106,13 +111,15 @@ pub fn run_fields(
 ) -> serde_json::Value {
     let mut fields = serde_json::json!({
         "method": common.method.name(),
+        "output": common.output.format.name(),
         "views": frame.camera.views,
         "views_per_pixel": frame.display.views_per_pixel(),
         "display": common.display.display,
         "size": frame.size,
         "adapter": ctx.adapter_label(),
         "ms": run.ms,
-        "frames": common.frames,
+        "frames": common.frames.unwrap_or(1),
+        "warm_up_frames": if common.frames.is_some() { WARM_UP_FRAMES } else { 0 },
         "view_scale": frame.view_scale,
         "view_size": frame.view_size(),
         "timing": run.timing,
@@ -128,7 +135,7 @@ pub fn run_fields(
 /// Tell the user how to look at the spatial image `out` without the panel: it only looks
 /// right through the display's optics (stderr, so that `--json` output stays one object).
 pub fn how_to_look(out: &Path, common: &crate::args::RenderArgs, frame: &Frame) {
-    if common.json {
+    if common.output.json {
         return;
     }
     let [l, r] = crate::output::default_eyes(frame.camera.views);
@@ -140,7 +147,7 @@ pub fn how_to_look(out: &Path, common: &crate::args::RenderArgs, frame: &Frame) 
         "{} is interleaved for {display} (it looks right only through that display). Without \
          one: render the same command with `--output anaglyph --out {stem}_anaglyph.png` (red-cyan \
          glasses; views {l} and {r}, --eyes L,R chooses), or pick them from this image with \
-         `autostereo views {} {display} --anaglyph {l},{r} --out {stem}_anaglyph.png` (streaky: \
+         `autostereo views {} {display} --eyes {l},{r} --out {stem}_anaglyph.png` (streaky: \
          each view has only its own subpixels), or look live in a window: `autostereo view \
          {display} --preview side-by-side`.",
         out.display(),
@@ -174,23 +181,8 @@ pub fn run_summary(
         frame.size[1],
         run.gpu_bytes as f64 / (1u64 << 20) as f64,
         run.ms,
-        common.frames,
+        common.frames.unwrap_or(1),
         run.timing,
         ctx.adapter_label()
     )
-}
-
-/// `--quilt-out`: the last frame's atlas as a Looking Glass quilt, named with its grid; returns
-/// the name written.
-pub fn save_quilt<S: ?Sized>(
-    ctx: &GpuContext,
-    renderer: &dyn Renderer<S>,
-    path: &Path,
-) -> Result<PathBuf> {
-    let atlas = renderer
-        .atlas()
-        .context("--quilt-out: this method renders no quilt atlas; use --method tiled")?;
-    let named = atlas.layout.file_name(path);
-    atlas.read(&ctx.device, &ctx.queue)?.save_png(&named)?;
-    Ok(named)
 }

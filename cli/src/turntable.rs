@@ -26,6 +26,7 @@ pub enum Axis {
 
 /// The turntable's flags.
 #[derive(clap::Args, Clone, Debug)]
+#[command(next_help_heading = "Output")]
 pub struct TurntableArgs {
     /// Render one full turn of the scene as FRAMES numbered files `{--out stem}_{k:04}.png`
     /// (quilts: `{stem}_{k:04}_qs…png`) in --output's format, frame k turned by k/FRAMES·360°.
@@ -51,6 +52,8 @@ pub struct Summary {
     pub frames: u32,
     pub first: PathBuf,
     pub last: PathBuf,
+    /// Every file, in order.
+    pub written: Vec<PathBuf>,
     /// Per-frame wall time (render, read back, write), ms.
     pub frame_ms: Vec<f64>,
     pub seconds: f64,
@@ -121,7 +124,7 @@ pub fn render<S: ?Sized>(
     bounds: Bounds,
     common: &RenderArgs,
 ) -> Result<Option<Summary>> {
-    let (Some(frames), Some(out)) = (common.turntable.turntable, &common.out) else {
+    let (Some(frames), Some(out)) = (common.turntable.turntable, &common.output.out) else {
         return Ok(None);
     };
     let start = Instant::now();
@@ -132,8 +135,15 @@ pub fn render<S: ?Sized>(
         let angle = std::f32::consts::TAU * k as f32 / frames as f32;
         let this = turned(frame, common.turntable.axis, bounds.center(), angle);
         let t = Instant::now();
-        let paths =
-            crate::output::write(ctx, renderer, scene, &this, common, None, &numbered(out, k))?;
+        let paths = crate::output::write(
+            ctx,
+            renderer,
+            scene,
+            &this,
+            &common.output,
+            None,
+            &numbered(out, k),
+        )?;
         frame_ms.push(t.elapsed().as_secs_f64() * 1e3);
         written.extend(paths);
         bar.inc(1);
@@ -143,6 +153,7 @@ pub fn render<S: ?Sized>(
         frames,
         first: written.first().cloned().unwrap_or_default(),
         last: written.last().cloned().unwrap_or_default(),
+        written,
         frame_ms,
         seconds: start.elapsed().as_secs_f64(),
     }))

@@ -15,14 +15,19 @@ pub struct ViewsArgs {
     #[command(flatten)]
     display: DisplayArgs,
     /// Extract what an eye in view zone I sees.
-    #[arg(long, conflicts_with = "anaglyph")]
+    #[arg(long, value_name = "I", conflicts_with = "eyes")]
     view: Option<u32>,
-    /// Red/cyan anaglyph of views I (left eye, red) and J (right eye).
-    #[arg(long, value_parser = parse_pair)]
-    anaglyph: Option<[u32; 2]>,
+    /// Red/cyan anaglyph of views L (left eye, red) and R (right eye), the pair --eyes names in
+    /// every command (formerly --anaglyph L,R, still accepted).
+    #[arg(long, value_name = "L,R", alias = "anaglyph", value_parser = parse_pair)]
+    eyes: Option<[u32; 2]>,
     /// Output PNG.
-    #[arg(long)]
+    #[arg(long, value_name = "F.png", help_heading = "Output")]
     out: PathBuf,
+    /// Print one JSON object with the display, the views taken and the file written
+    /// (`written`).
+    #[arg(long, help_heading = "Output")]
+    json: bool,
 }
 
 pub fn run(args: ViewsArgs) -> Result<()> {
@@ -40,7 +45,7 @@ pub fn run(args: ViewsArgs) -> Result<()> {
         }
         Ok(())
     };
-    let out = match (args.view, args.anaglyph) {
+    let out = match (args.view, args.eyes) {
         (Some(v), None) => {
             check(v)?;
             extract_view(&spatial, &mask, v)
@@ -50,8 +55,15 @@ pub fn run(args: ViewsArgs) -> Result<()> {
             check(r)?;
             anaglyph(&spatial, &mask, l, r)
         }
-        _ => bail!("give one of --view I or --anaglyph I,J"),
+        _ => bail!("give one of --view I (one view) or --eyes L,R (a red/cyan anaglyph)"),
     };
     out.save_png(&args.out)?;
+    let fields = serde_json::json!({
+        "display": args.display.display,
+        "views": n,
+        "view": args.view,
+        "eyes": args.eyes,
+    });
+    crate::output::report_written(args.json, fields, &[args.out]);
     Ok(())
 }

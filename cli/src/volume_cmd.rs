@@ -3,17 +3,13 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
-use autostereo::frame::Frame;
-use autostereo::image_io::RgbImage;
-use autostereo::readback::read_texture_rgba8;
-use autostereo::render::{Method, Renderer};
-use autostereo::views::anaglyph;
+use autostereo::render::Method;
 use autostereo::volume::load::{load_any, load_raw, RawSpec, SampleType};
 use autostereo::volume::{phantom, TransferFunction, Volume};
 use autostereo::volume::{AlphaMode, VolumeScene};
 use glam::Mat4;
 
-use crate::args::{check_output, gpu, RenderArgs};
+use crate::args::{gpu, RenderArgs};
 use crate::run::{compare_with, merge, report, run_fields, run_summary, timed};
 use crate::warp_cmd::hole_report;
 use autostereo::volume::VolumeRaycaster;
@@ -57,16 +53,14 @@ pub struct VolumeArgs {
     common: RenderArgs,
     #[command(flatten)]
     render: VolumeRenderArgs,
-    /// Also write every view as DIR/view_NN.png.
-    #[arg(long)]
-    views_out: Option<PathBuf>,
-    /// Also write a red/cyan anaglyph of the two views around the centre.
-    #[arg(long)]
+    /// Retired: `--output anaglyph --out F.png` writes the red/cyan anaglyph.
+    #[arg(long, hide = true)]
     anaglyph: Option<PathBuf>,
 }
 
 /// How a volume is loaded and placed: the flags `volume` and `view` share.
 #[derive(clap::Args, Clone, Debug, PartialEq)]
+#[command(next_help_heading = "Input")]
 pub struct VolumeDataArgs {
     /// Built-in data set used when no file is given.
     #[arg(long, value_enum, default_value = "head")]
@@ -109,6 +103,7 @@ pub struct VolumeDataArgs {
 
 /// How a volume is rendered: the flags `volume` and `view` share.
 #[derive(clap::Args, Clone, Debug, PartialEq)]
+#[command(next_help_heading = "Method")]
 pub struct VolumeRenderArgs {
     /// Single-pass path.
     #[arg(long, value_enum, default_value = "compute")]
@@ -281,6 +276,50 @@ impl VolumeDataArgs {
 }
 
 impl VolumeRenderArgs {
+    /// Refuse what `method` and `--path` would ignore, naming what uses it.
+    pub fn check(&self, method: Method) -> Result<()> {
+        if self.path == PathArg::Slices && method != Method::SinglePass {
+            bail!(
+                "--path slices: only the single pass draws proxy slices (the {method} method \
+                 ray-marches each view); drop it or use --method single-pass"
+            );
+        }
+        if self.alpha != AlphaArg::Exact && self.path != PathArg::Slices {
+            bail!(
+                "--alpha: only --path slices blends one α per pixel or per channel (the compute \
+                 path's α is always per channel, exact); drop it or add --path slices"
+            );
+        }
+        let compute_only = [
+            ("--no-skip-empty", self.no_skip_empty),
+            ("--empty-stride", self.empty_stride != 1),
+            ("--thin-alpha", self.thin_alpha != 0.0),
+            ("--share-samples", self.share_samples != 0.0),
+        ];
+        for (flag, set) in compute_only {
+            if set && self.path != PathArg::Compute {
+                bail!(
+                    "{flag}: only the compute path (--path compute) ray-marches; the slices \
+                     path samples every slice"
+                );
+            }
+        }
+        if self.share_samples != 0.0 && method != Method::SinglePass {
+            bail!(
+                "--share-samples: only the single pass marches a pixel's rays together (the \
+                 {method} method marches one view at a time); drop it or use --method \
+                 single-pass"
+            );
+        }
+        if self.thin_alpha != 0.0 && self.empty_stride == 1 {
+            bail!(
+                "--thin-alpha sets how far the probes of --empty-stride P step through thin \
+                 material, and there are none with --empty-stride 1: add --empty-stride P > 1"
+            );
+        }
+        Ok(())
+    }
+
     /// The sampling step the flags say (voxels of the smallest spacing; None = the default).
     pub fn step(&self, volume: &Volume) -> Option<f32> {
         match (self.slices, self.step) {
@@ -309,13 +348,15 @@ impl VolumeRenderArgs {
 }
 
 pub fn run(args: VolumeArgs) -> Result<()> {
-    args.common.check()?;
     if let Some(path) = &args.anaglyph {
-        check_output(path)?;
+        bail!(
+            "--anaglyph was retired: write the red/cyan anaglyph with --output anaglyph --out {} \
+             (--eyes L,R picks the views)",
+            path.display()
+        );
     }
-    if args.render.path == PathArg::Slices && args.common.method != Method::SinglePass {
-        bail!("--path slices is a single-pass method; N-pass and single view use the ray-marching kernel");
-    }
+    args.common.check()?;
+    args.render.check(args.common.method)?;
     let (volume, default_tf) = args.data.load(args.file.as_deref())?;
     let tf = args.data.transfer(default_tf)?;
     let step = args.render.step(&volume);
@@ -333,7 +374,7 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     settings.validate_for(&scene)?;
     let mut renderer = options.volume_renderer(&ctx.device)?;
     let run = timed(&ctx, renderer.as_mut(), &scene, &frame, args.common.frames)?;
-    let turntable = crate::output::save_all(
+    let mut saved = crate::output::save_all(
         &ctx,
         renderer.as_mut(),
         &scene,
@@ -342,13 +383,6 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         &args.common,
         &run.image,
     )?;
-    if let Some(path) = &args.anaglyph {
-        let [l, r] = crate::output::default_eyes(frame.camera.views);
-        anaglyph(&run.image, &frame.display.mask(), l, r).save_png(path)?;
-    }
-    if let Some(dir) = &args.views_out {
-        write_views(&ctx, &scene, &settings, &frame, dir)?;
-    }
     let step = settings.step_length(&scene);
     // Against the exact N-pass: the probes would otherwise thin out the oracle's samples too,
     // and a coarser step than the default is an approximation of the default's image.
@@ -388,38 +422,24 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         let build = |o: &RendererOptions| o.volume_renderer(&ctx.device);
         merge(
             &mut extra,
-            hole_report(&ctx, &args.common.warp, &options, build, &scene, &frame)?,
+            hole_report(
+                &ctx,
+                &args.common,
+                &options,
+                build,
+                &scene,
+                &frame,
+                &mut saved,
+            )?,
         );
     }
-    if let Some(t) = &turntable {
-        merge(&mut extra, t.fields());
-    }
+    merge(&mut extra, saved.fields());
     let fields = run_fields(&ctx, &args.common, &frame, &run, extra);
     let summary = format!(
         "{method}: volume {:?}, {}",
         volume.dims,
         run_summary(&ctx, &args.common, &frame, &run)
     );
-    report(args.common.json, fields, diff, &summary);
-    Ok(())
-}
-
-/// Every view as its own PNG (the N-pass layers).
-fn write_views(
-    ctx: &autostereo::gpu::GpuContext,
-    scene: &VolumeScene,
-    settings: &VolumeSettings,
-    frame: &Frame,
-    dir: &Path,
-) -> Result<()> {
-    std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
-    let mut npass = VolumeRaycaster::new(&ctx.device, Method::NPass, *settings)?;
-    let target = autostereo::target::SpatialTarget::new(&ctx.device, frame.size)?;
-    npass.render(&ctx.device, &ctx.queue, scene, frame, &target)?;
-    let layers = npass.view_layers().context("N-pass allocates its layers")?;
-    for i in 0..frame.camera.views {
-        let rgba = read_texture_rgba8(&ctx.device, &ctx.queue, &layers.texture, i)?;
-        RgbImage::from_rgba(frame.size, &rgba).save_png(&dir.join(format!("view_{i:02}.png")))?;
-    }
+    report(args.common.output.json, fields, diff, &summary);
     Ok(())
 }

@@ -19,47 +19,94 @@ pub enum WarpPathArg {
     PerView,
 }
 
+impl WarpPathArg {
+    /// The flag value (`direct`, `per-view`), as the user writes it and `--json` reports it.
+    pub fn of(path: WarpPath) -> &'static str {
+        match path {
+            WarpPath::Direct => "direct",
+            WarpPath::PerView => "per-view",
+        }
+    }
+}
+
+/// How a warp makes its views: the flags `--method warp` and `rgbd` (always a warp) share.
+#[derive(clap::Args, Clone, Debug)]
+#[command(next_help_heading = "Warping (--method warp; rgbd)")]
+pub struct WarpSynthesisArgs {
+    /// Neighbours warped further apart than this many pixels straddle a disocclusion, filled
+    /// from the background side (default 2).
+    #[arg(long, value_name = "PIXELS")]
+    pub hole_gap: Option<f32>,
+    /// direct (each subpixel warps its own view straight into the spatial image) or per-view
+    /// (N view images first, then the mask compositing).
+    #[arg(long, value_enum)]
+    pub warp_path: Option<WarpPathArg>,
+    /// Also write the hole mask (255 on subpixels that were filled rather than seen) as PNG;
+    /// the report gives its share either way.
+    #[arg(long, value_name = "F.png")]
+    pub hole_mask: Option<PathBuf>,
+}
+
+impl WarpSynthesisArgs {
+    /// The flags given, by name.
+    fn given(&self) -> [(&'static str, bool); 3] {
+        [
+            ("--hole-gap", self.hole_gap.is_some()),
+            ("--warp-path", self.warp_path.is_some()),
+            ("--hole-mask", self.hole_mask.is_some()),
+        ]
+    }
+
+    /// Refuse bad values before loading anything.
+    pub fn check(&self) -> Result<()> {
+        if let Some(path) = &self.hole_mask {
+            crate::args::check_output(path)?;
+        }
+        Ok(())
+    }
+
+    /// `options` with these flags' settings.
+    pub fn apply(&self, options: WarpOptions) -> WarpOptions {
+        WarpOptions {
+            hole_gap: self.hole_gap.unwrap_or(options.hole_gap),
+            path: match self.warp_path {
+                Some(WarpPathArg::PerView) => WarpPath::PerView,
+                Some(WarpPathArg::Direct) => WarpPath::Direct,
+                None => options.path,
+            },
+            ..options
+        }
+    }
+}
+
 /// The warp method's flags (refused with any other method).
 #[derive(clap::Args)]
 pub struct WarpArgs {
     /// With --method warp: reference views R, 1 … N, spread evenly over the views (default 2:
     /// the outermost views; 1: the centre view).
-    #[arg(long)]
+    #[arg(long, help_heading = "Warping (--method warp; rgbd)")]
     pub references: Option<u32>,
-    /// With --method warp: neighbours warped further apart than this many pixels straddle a
-    /// disocclusion, filled from the background side (default 2).
-    #[arg(long)]
-    pub hole_gap: Option<f32>,
-    /// With --method warp: direct (straight into the spatial image) or per-view (N view
-    /// images first, then the mask compositing).
-    #[arg(long, value_enum)]
-    pub warp_path: Option<WarpPathArg>,
-    /// With --method warp: also write the hole mask (255 on subpixels that were filled rather
-    /// than seen by a reference) as PNG; the report gives its share either way.
-    #[arg(long)]
-    pub hole_mask: Option<PathBuf>,
+    #[command(flatten)]
+    pub synthesis: WarpSynthesisArgs,
 }
 
 impl WarpArgs {
     /// Refuse warp flags with another method, and bad values, before loading anything.
     pub fn check(&self, method: Method) -> Result<()> {
-        let given = [
-            ("--references", self.references.is_some()),
-            ("--hole-gap", self.hole_gap.is_some()),
-            ("--warp-path", self.warp_path.is_some()),
-            ("--hole-mask", self.hole_mask.is_some()),
-        ];
+        let mut given = vec![("--references", self.references.is_some())];
+        given.extend(self.synthesis.given());
         if let Some((flag, _)) = given.iter().find(|(_, set)| *set) {
             if method != Method::Warp {
-                bail!("{flag}: only with --method warp (the method is {method})");
+                bail!(
+                    "{flag}: only --method warp warps views (the method is {method}); drop it \
+                     or add --method warp"
+                );
             }
         }
         if self.references == Some(0) {
             bail!("--references 0: at least one reference view");
         }
-        if let Some(path) = &self.hole_mask {
-            crate::args::check_output(path)?;
-        }
+        self.synthesis.check()?;
         WarpOptions::from(self).check()?;
         Ok(())
     }
@@ -73,15 +120,10 @@ impl WarpArgs {
 impl From<&WarpArgs> for WarpOptions {
     fn from(args: &WarpArgs) -> Self {
         let default = WarpOptions::default();
-        WarpOptions {
+        args.synthesis.apply(WarpOptions {
             references: args.references.unwrap_or(default.references),
-            hole_gap: args.hole_gap.unwrap_or(default.hole_gap),
-            path: match args.warp_path {
-                Some(WarpPathArg::PerView) => WarpPath::PerView,
-                Some(WarpPathArg::Direct) | None => WarpPath::Direct,
-            },
             ..default
-        }
+        })
     }
 }
 
@@ -90,25 +132,29 @@ impl From<&WarpArgs> for WarpOptions {
 /// from `options`, written where asked).
 pub fn hole_report<S: ?Sized>(
     ctx: &GpuContext,
-    args: &WarpArgs,
+    common: &crate::args::RenderArgs,
     options: &RendererOptions,
     build: impl FnOnce(&RendererOptions) -> autostereo::Result<Box<dyn Renderer<S>>>,
     scene: &S,
     frame: &Frame,
+    saved: &mut crate::output::Saved,
 ) -> Result<serde_json::Value> {
+    let (args, json) = (&common.warp, common.output.json);
     let mut options = *options;
     options.warp.hole_mask = true;
     let mut warp = build(&options)?;
     let target = SpatialTarget::new(&ctx.device, frame.size)?;
     warp.render(&ctx.device, &ctx.queue, scene, frame, &target)?;
     let mask = target.read(&ctx.device, &ctx.queue)?;
-    if let Some(path) = &args.hole_mask {
+    if let Some(path) = &args.synthesis.hole_mask {
         mask.save_png(path)?;
+        crate::output::say_written(json, std::slice::from_ref(path));
+        saved.written.push(path.clone());
     }
     let filled = mask.data.iter().filter(|&&v| v >= 128).count();
     Ok(serde_json::json!({
         "references": options.warp.references,
-        "warp_path": format!("{:?}", options.warp.path).to_lowercase(),
+        "warp_path": WarpPathArg::of(options.warp.path),
         "warp": warp.describe(),
         "hole_share": filled as f64 / mask.data.len().max(1) as f64,
     }))

@@ -416,7 +416,7 @@ fn cli_reports_bad_input_without_panicking() {
         ),
     ];
     for (args, expect) in cases {
-        let (ok, stderr) = cli(&args);
+        let (ok, stderr) = cli(&common::measuring(&args));
         assert!(!ok, "{args:?} should fail");
         assert!(!stderr.contains("panicked"), "{args:?} panicked: {stderr}");
         assert!(

@@ -363,7 +363,7 @@ fn models_a_method_cannot_render_are_refused_by_name() {
             "toe-in",
         ),
     ] {
-        let (ok, err) = common::cli(args);
+        let (ok, err) = common::cli(&common::measuring(args));
         assert!(!ok && err.contains(expect), "{args:?}: {err}");
     }
 }

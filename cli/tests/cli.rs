@@ -150,7 +150,8 @@ fn mask_cpu_and_gpu_images_agree_and_views_extracts() {
         "--out",
         spatial.to_str().unwrap(),
     ]);
-    for extra in [["--view", "3"], ["--anaglyph", "2,5"]] {
+    // --eyes names a pair as in every command; --anaglyph is its old name, still accepted.
+    for extra in [["--view", "3"], ["--eyes", "2,5"], ["--anaglyph", "2,5"]] {
         let out = out_path("cli_view.png");
         let mut args = vec!["views", spatial.to_str().unwrap(), "--display", "hubner8"];
         args.extend(extra);
@@ -165,39 +166,40 @@ fn volume_main_job_writes_spatial_views_and_anaglyph() {
     let spatial = out_path("cli_volume.png");
     let anaglyph = out_path("cli_volume_anaglyph.png");
     let views = out_path("cli_volume_views");
-    let stdout = run(&[
-        "volume",
-        "--builtin-size",
-        "24",
-        "--size",
-        "64x48",
-        "--rotate",
-        "20,30,0",
-        "--json",
-        "--compare",
-        "--out",
-        spatial.to_str().unwrap(),
-        "--anaglyph",
-        anaglyph.to_str().unwrap(),
-        "--views-out",
-        views.to_str().unwrap(),
-    ]);
-    let json: serde_json::Value = serde_json::from_str(stdout.trim()).unwrap();
+    std::fs::create_dir_all(&views).unwrap();
+    let volume = |output: &str, out: &std::path::Path| {
+        let stdout = run(&[
+            "volume",
+            "--builtin-size",
+            "24",
+            "--size",
+            "64x48",
+            "--rotate",
+            "20,30,0",
+            "--json",
+            "--compare",
+            "--output",
+            output,
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        serde_json::from_str::<serde_json::Value>(stdout.trim()).unwrap()
+    };
+    let json = volume("spatial", &spatial);
     assert_eq!(json["method"], "single-pass");
     assert_eq!(json["volume_dims"], serde_json::json!([24, 24, 19]));
     assert!(json["psnr_db"].as_f64().unwrap() >= 45.0, "{json}");
-    for path in [
-        spatial,
-        anaglyph,
-        views.join("view_00.png"),
-        views.join("view_07.png"),
-    ] {
-        assert_eq!(
-            image::open(&path).unwrap().width(),
-            64,
-            "{}",
-            path.display()
-        );
+    assert_eq!(json["written"], serde_json::json!([spatial]));
+    let json = volume("anaglyph", &anaglyph);
+    assert_eq!(json["written"], serde_json::json!([anaglyph]));
+    let json = volume("views", &views.join("view.png"));
+    // Every view, named in view order with two digits (what --views-out DIR wrote).
+    let names: Vec<std::path::PathBuf> = (0..8)
+        .map(|v| views.join(format!("view_{v:02}.png")))
+        .collect();
+    assert_eq!(json["written"], serde_json::json!(names));
+    for path in [&spatial, &anaglyph, &names[0], &names[7]] {
+        assert_eq!(image::open(path).unwrap().width(), 64, "{}", path.display());
     }
     let slices = run(&[
         "volume",
@@ -403,13 +405,14 @@ fn rgbd_pairs_side_by_side_quilts_and_bad_maps() {
         d.to_str().unwrap(),
         s.to_str().unwrap(),
     );
+    run(&["rgbd", c_s, d_s, "--out", pair_out.to_str().unwrap()]);
     run(&[
         "rgbd",
         c_s,
         d_s,
+        "--output",
+        "quilt",
         "--out",
-        pair_out.to_str().unwrap(),
-        "--quilt-out",
         quilt.to_str().unwrap(),
     ]);
     run(&["rgbd", s_s, "--sbs", "--out", sbs_out.to_str().unwrap()]);

@@ -364,7 +364,7 @@ fn a_file_of_another_kind_names_the_command_that_reads_it() {
         ),
     ];
     for (args, expected) in cases {
-        let (ok, err) = common::cli(&args);
+        let (ok, err) = common::cli(&common::measuring(&args));
         assert!(!ok, "{args:?} succeeded");
         assert!(
             err.contains(&expected),

@@ -163,17 +163,24 @@ fn cli_flags_are_refused_not_clamped_and_failures_leave_no_file() {
     assert!(!ok && stderr.contains("only PNG"), "{stderr}");
     assert!(!jpg.exists(), "no file is left behind");
     // --downsample 0 was silently 1.
-    let (ok, stderr) = cli(&["volume", "--downsample", "0", "--size", "16x16"]);
+    let (ok, stderr) = cli(&["volume", "--downsample", "0", "--size", "16x16", "--json"]);
     assert!(!ok && stderr.contains("--downsample"), "{stderr}");
     // A missing --tf file said "unknown preset".
-    let (ok, stderr) = cli(&["volume", "--tf", "missing_tf.txt", "--size", "16x16"]);
+    let (ok, stderr) = cli(&[
+        "volume",
+        "--tf",
+        "missing_tf.txt",
+        "--size",
+        "16x16",
+        "--json",
+    ]);
     assert!(
         !ok && stderr.contains("missing_tf.txt") && !stderr.contains("unknown preset"),
         "{stderr}"
     );
     assert!(stderr.contains("No such file"), "{stderr}");
     // The budget is a flag.
-    let (ok, stderr) = cli(&["volume", "--max-memory", "1K", "--size", "16x16"]);
+    let (ok, stderr) = cli(&["volume", "--max-memory", "1K", "--size", "16x16", "--json"]);
     assert!(
         !ok && stderr.contains("memory budget of 1024 bytes"),
         "{stderr}"
@@ -217,6 +224,7 @@ fn a_very_long_volume_gets_the_texture_limit_error() {
         "u8",
         "--size",
         "16x16",
+        "--json",
     ]);
     assert!(!ok && !stderr.contains("sampling step"), "{stderr}");
     assert!(stderr.contains("--downsample"), "{stderr}");
@@ -233,13 +241,21 @@ fn meshes_and_point_clouds_are_under_the_budget() {
     );
     for (command, file) in [("mesh", &obj), ("points", &ply)] {
         let file = file.to_str().unwrap();
-        let (ok, stderr) = cli(&[command, file, "--max-memory", "64", "--size", "8x8"]);
+        let (ok, stderr) = cli(&[
+            command,
+            file,
+            "--max-memory",
+            "64",
+            "--size",
+            "8x8",
+            "--json",
+        ]);
         assert!(
             !ok && stderr.contains("memory budget of 64 bytes"),
             "{command}: {stderr}"
         );
         assert!(stderr.contains(file), "{command} names the file: {stderr}");
-        let (ok, stderr) = cli(&[command, file, "--size", "8x8"]);
+        let (ok, stderr) = cli(&[command, file, "--size", "8x8", "--json"]);
         assert!(ok, "{command} within the default budget: {stderr}");
     }
 }
@@ -259,6 +275,7 @@ fn the_gpu_budget_counts_everything_held_at_once() {
             "256x256",
             "--max-memory",
             budget,
+            "--json",
         ])
     };
     let (ok, stderr) = run("2500K");

@@ -124,22 +124,24 @@ fn a_quilt_of_the_npass_views_interleaves_to_the_npass_image() {
         let dir = out(&format!("interleave_npass_views_{i}"));
         std::fs::create_dir_all(&dir).unwrap();
         let spatial = out(&format!("interleave_npass_{i}.png"));
-        let (ok, err) = run(&[
-            "volume",
-            "--builtin-size",
-            "32",
-            "--size",
-            "48x40",
-            "--method",
-            "n-pass",
-            "--display",
-            spec,
-            "--out",
-            s(&spatial),
-            "--views-out",
-            s(&dir),
-        ]);
-        assert!(ok, "{err}");
+        let volume = |more: &[&str]| {
+            let mut args = vec![
+                "volume",
+                "--builtin-size",
+                "32",
+                "--size",
+                "48x40",
+                "--method",
+                "n-pass",
+                "--display",
+                spec,
+            ];
+            args.extend_from_slice(more);
+            let (ok, err) = run(&args);
+            assert!(ok, "{err}");
+        };
+        volume(&["--out", s(&spatial)]);
+        volume(&["--output", "views", "--out", s(&dir.join("view.png"))]);
         let mut views = Vec::new();
         for entry in std::fs::read_dir(&dir).unwrap() {
             views.push(entry.unwrap().path());

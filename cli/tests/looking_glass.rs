@@ -195,7 +195,7 @@ fn stereo_defaults_have_disparity_and_the_hint_repeats_every_display_flag() {
     for flag in [
         "--display slanted:45,7.5,-1,0 --views 45 --origin 3,4 --flip-views --bgr",
         "--output anaglyph",
-        "--anaglyph 16,27",
+        "--eyes 16,27",
     ] {
         assert!(stderr.contains(flag), "hint lacks {flag}: {stderr}");
     }

@@ -251,7 +251,7 @@ fn views_and_quilt_outputs_hold_every_view() {
     let three = quilt("outputs_quilt3.png", &picked, &["--quilt", "3x3"]);
     for v in 0..8 {
         let alone = view(v, [W, H]);
-        let file = views.with_file_name(format!("outputs_all_view{v}.png"));
+        let file = views.with_file_name(format!("outputs_all_{v:02}.png"));
         let written = RgbImage::load_png(&file).unwrap();
         assert!(
             off_share(&written, |x, y| pixel(&alone, x, y)) < 0.001,

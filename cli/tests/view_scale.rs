@@ -303,7 +303,7 @@ fn view_sizes_round_up_and_methods_without_view_images_refuse_a_scale() {
             "the warp method renders no view images",
         ),
     ] {
-        let (ok, err) = common::cli(args);
+        let (ok, err) = common::cli(&common::measuring(args));
         assert!(!ok && err.contains(expect), "{args:?}: {err}");
     }
 }

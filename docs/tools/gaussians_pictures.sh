@@ -16,5 +16,5 @@ $bin gaussians $cam --size 384x384 --out $img/gaussians_spatial_hubner8.png
 $bin gaussians $cam --size 384x384 --display view:8,3 --out $img/gaussians_view3.png
 $bin gaussians $cam --size 384x384 --output anaglyph-dubois --out $img/gaussians_anaglyph.png
 $bin gaussians $cam --display lkg:data/lkg_sample_16in_landscape_gen3_visual.json \
-  --size 960x540 --method tiled --view-size 112x63 --quilt-out $img/gaussians_quilt.png \
-  --out /tmp/gaussians_lkg16_spatial.png
+  --size 960x540 --method tiled --view-size 112x63 --output quilt --quilt 5x10 \
+  --out $img/gaussians_quilt.png

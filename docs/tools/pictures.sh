@@ -13,7 +13,7 @@ img=docs/images
 # Meshes: the full dragon (871k triangles), single pass with exact visibility and with the
 # paper's one depth per pixel.
 $bin mesh data/fetched/dragon_vrip.obj --size 384x256 --out $img/dragon_spatial_hubner8.png
-$bin views $img/dragon_spatial_hubner8.png --anaglyph 1,6 --out $img/dragon_anaglyph.png
+$bin views $img/dragon_spatial_hubner8.png --eyes 1,6 --out $img/dragon_anaglyph.png
 $bin mesh data/fetched/dragon_vrip.obj --size 384x256 --visibility fast \
   --out $img/dragon_fast_visibility.png
 
@@ -21,8 +21,8 @@ $bin mesh data/fetched/dragon_vrip.obj --size 384x256 --visibility fast \
 $bin points data/fetched/dragon_vrip.ply --size 512x512 --out $img/points_dragon_hubner8.png
 
 # Volumes: the built-in head (ct-skin) and VolPack's MRI brain (mri), compute path.
-$bin volume --size 384x384 --out $img/volume_head_hubner8.png \
-  --anaglyph $img/volume_head_anaglyph.png
+$bin volume --size 384x384 --out $img/volume_head_hubner8.png
+$bin views $img/volume_head_hubner8.png --eyes 3,4 --out $img/volume_head_anaglyph.png
 $bin volume data/fetched/brainsmall.den --rotate=-90,0,0 --size 384x384 \
   --out $img/volume_brainsmall_hubner8.png
 # The viewer's window (README "The viewer"): the built-in head, presented frames read back, in

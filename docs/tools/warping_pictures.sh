@@ -10,16 +10,17 @@ cargo build --release --quiet
 bin=target/release/autostereo
 img=docs/images/rgbd
 mkdir -p "$img" "$img/views" "$img/strong"
+rgbd=("$img/scene.png" "$img/scene_depth.png" --display hubner8)
 target/release/examples/rgbd_scene "$img"
-$bin rgbd "$img/scene.png" "$img/scene_depth.png" --display hubner8 --out "$img/spatial_hubner8.png" \
-  --views-out "$img/views" --hole-mask "$img/holes.png"
-$bin rgbd "$img/scene.png" "$img/scene_depth.png" --display hubner8 --depthiness 3 \
-  --views-out "$img/strong" --hole-mask "$img/holes_strong.png"
+$bin rgbd "${rgbd[@]}" --out "$img/spatial_hubner8.png" --hole-mask "$img/holes.png"
+$bin rgbd "${rgbd[@]}" --output views --out "$img/views/view.png"
+$bin rgbd "${rgbd[@]}" --depthiness 3 --hole-mask "$img/holes_strong.png"
+$bin rgbd "${rgbd[@]}" --depthiness 3 --output views --out "$img/strong/view.png"
 # Keep the outermost views only.
 for dir in views strong; do
   mv "$img/$dir/view_00.png" "$img/${dir}_left.png"
   mv "$img/$dir/view_07.png" "$img/${dir}_right.png"
   rm -r "${img:?}/$dir"
 done
-$bin views "$img/spatial_hubner8.png" --anaglyph 1,6 --out "$img/anaglyph.png"
+$bin views "$img/spatial_hubner8.png" --eyes 1,6 --out "$img/anaglyph.png"
 echo "pictures written to $img"

@@ -14,7 +14,7 @@ for display in hubner8 slanted:45,7.5,1/6,0.2; do
   for round in 1 2; do
     for path in direct per-view; do
       ms=$($bin rgbd "$img/scene.png" "$img/scene_depth.png" --display "$display" \
-        --size 1920x1080 --path "$path" --frames 5 --out "$out/s.png" 2>&1 \
+        --size 1920x1080 --warp-path "$path" --frames 5 --out "$out/s.png" 2>&1 \
         | grep -o '[0-9.]* ms/frame' | grep -o '^[0-9.]*')
       echo "$display round $round $path: $ms ms"
     done

@@ -448,9 +448,10 @@ impl State {
             (Preview::Spatial, _) => vec![(self.frame_on(args, panel, size)?, 0, None)],
             (Preview::View, _) => vec![(self.frame_on(args, one(centre)?, size)?, 0, None)],
             (Preview::Quilt, _) => {
-                // Looking Glass order: view 0 bottom-left, left to right, bottom to top.
-                // The squarest grid: tiles keep about the window's aspect.
-                let grid = QuiltLayout::for_views(n, [1, 1]);
+                // Looking Glass order: view 0 bottom-left, left to right, bottom to top. The
+                // grid `--output quilt` writes for this display (a Looking Glass's own), its
+                // tiles shrunk to fit the window.
+                let grid = crate::output::quilt_layout(&panel, n, size, None)?;
                 let tile = [(size[0] / grid.cols).max(1), (size[1] / grid.rows).max(1)];
                 let layout = QuiltLayout { tile, ..grid };
                 (0..n)

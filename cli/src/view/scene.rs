@@ -174,7 +174,7 @@ pub fn load(ctx: &autostereo::gpu::GpuContext, flags: &SceneFlags) -> Result<Vie
             (AnyScene::Mesh(MeshBuffers::new(device, &mesh)?), bounds)
         }
         KindArg::Points => {
-            flags.points.check()?;
+            flags.points.check_values()?;
             let (splats, _) = flags.points.load(file)?;
             let bounds = splats.bounds().expect("complete() rejects empty clouds");
             let scene = flags.points.scene(device, &splats)?;

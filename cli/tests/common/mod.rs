@@ -24,3 +24,15 @@ pub fn cli(args: &[&str]) -> (bool, String) {
         String::from_utf8_lossy(&out.stderr).into_owned(),
     )
 }
+
+/// `args` as a run that writes nothing and only reports (`--json`) where a render command has
+/// no `--out`: without either, the command refuses to render ("nothing to write") before
+/// reaching what a test checks (a load error, a refused flag, the memory budget).
+pub fn measuring<'a>(args: &[&'a str]) -> Vec<&'a str> {
+    let mut args = args.to_vec();
+    let renders = ["mesh", "points", "volume", "gaussians"];
+    if args.first().is_some_and(|c| renders.contains(c)) && !args.contains(&"--out") {
+        args.push("--json");
+    }
+    args
+}

@@ -1,0 +1,415 @@
+//! Issue 31, "one vocabulary": every output goes through `--output FORMAT --out F` (the special
+//! cases `--quilt-out`, `--views-out`, volume's `--anaglyph` retired, naming the replacement),
+//! every command's `--json` names each file written, per-view files are zero-padded, no `--out`
+//! is refused unless a measurement was asked for, a flag the chosen method or path would
+//! ignore is refused by name, one frame is rendered unless timing is asked for, and `--help`
+//! is grouped with examples. Each test fails on the binary before these changes.
+
+mod common;
+
+use std::path::PathBuf;
+
+fn out(name: &str) -> PathBuf {
+    let dir = common::out_dir().join("vocabulary_outputs");
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name)
+}
+
+/// Run the CLI; (success, stdout, stderr).
+fn run(args: &[&str]) -> (bool, String, String) {
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_autostereo"))
+        .args(args)
+        .env("RUST_LOG", "off")
+        .output()
+        .unwrap();
+    (
+        o.status.success(),
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
+/// A run that must succeed with `--json`: its object.
+fn json(args: &[&str]) -> serde_json::Value {
+    let (ok, stdout, stderr) = run(args);
+    assert!(ok, "{args:?}: {stderr}");
+    serde_json::from_str(stdout.trim()).unwrap_or_else(|e| panic!("{args:?}: {e}: {stdout}"))
+}
+
+/// A run that must fail cleanly: its stderr, checked to name every one of `words`.
+fn refused(args: &[&str], words: &[&str]) -> String {
+    let (ok, _, stderr) = run(args);
+    assert!(!ok, "{args:?} succeeded");
+    assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
+    for w in words {
+        assert!(stderr.contains(w), "{args:?} does not say {w:?}: {stderr}");
+    }
+    stderr
+}
+
+const SMALL: [&str; 2] = ["--size", "32x24"];
+
+fn with<'a>(command: &'a str, extra: &[&'a str]) -> Vec<&'a str> {
+    let mut args = vec![command];
+    if command == "volume" {
+        args.extend(["--builtin-size", "16"]);
+    }
+    args.extend(SMALL);
+    args.extend_from_slice(extra);
+    args
+}
+
+#[test]
+fn no_out_is_refused_unless_a_measurement_is_asked_for() {
+    // Rendered and then written nowhere, with exit 0: now refused before any work.
+    for command in ["mesh", "points", "volume", "gaussians"] {
+        refused(&with(command, &[]), &["nothing to write", "--out"]);
+        // Asking for numbers writes none, and says so in the JSON.
+        let report = json(&with(command, &["--json"]));
+        assert_eq!(report["written"], serde_json::json!([]), "{command}");
+        let (ok, _, stderr) = run(&with(command, &["--frames", "1"]));
+        assert!(ok, "{command} --frames 1: {stderr}");
+    }
+}
+
+#[test]
+fn a_flag_the_method_or_path_would_ignore_is_refused_by_name() {
+    let png = out("ignored.png");
+    let png = png.to_str().unwrap();
+    let cases: [(&str, &[&str], &[&str]); 11] = [
+        (
+            "mesh",
+            &["--visibility", "fast", "--method", "n-pass"],
+            &["--visibility", "single"],
+        ),
+        (
+            "mesh",
+            &["--bounds", "paper", "--method", "tiled"],
+            &["--bounds", "single"],
+        ),
+        (
+            "mesh",
+            &["--tile-clip", "discard"],
+            &["--tile-clip", "--method tiled"],
+        ),
+        (
+            "points",
+            &["--depth", "paper", "--method", "n-pass"],
+            &["--depth", "single"],
+        ),
+        (
+            "volume",
+            &["--alpha", "paper"],
+            &["--alpha", "--path slices"],
+        ),
+        (
+            "volume",
+            &["--path", "slices", "--method", "n-pass"],
+            &["--path slices", "single"],
+        ),
+        (
+            "volume",
+            &["--path", "slices", "--empty-stride", "4"],
+            &["--empty-stride", "compute"],
+        ),
+        (
+            "volume",
+            &["--share-samples", "0.5", "--method", "n-pass"],
+            &["--share-samples"],
+        ),
+        (
+            "volume",
+            &["--thin-alpha", "0.1"],
+            &["--thin-alpha", "--empty-stride"],
+        ),
+        (
+            "gaussians",
+            &["--sh-per-subpixel", "--method", "n-pass"],
+            &["--sh-per-subpixel"],
+        ),
+        ("mesh", &["--eyes", "1,2"], &["--eyes", "--output"]),
+    ];
+    for (command, flags, words) in cases {
+        let mut args = with(command, flags);
+        args.extend(["--out", png]);
+        refused(&args, words);
+    }
+    // The same flags with the method that uses them render.
+    for (command, flags) in [
+        ("mesh", &["--visibility", "fast"][..]),
+        ("mesh", &["--tile-clip", "discard", "--method", "tiled"]),
+        ("volume", &["--alpha", "paper", "--path", "slices"]),
+        ("volume", &["--thin-alpha", "0.1", "--empty-stride", "4"]),
+        ("mesh", &["--eyes", "1,2", "--output", "anaglyph"]),
+    ] {
+        let mut args = with(command, flags);
+        args.extend(["--out", png]);
+        let (ok, _, stderr) = run(&args);
+        assert!(ok, "{args:?}: {stderr}");
+    }
+}
+
+#[test]
+fn per_view_files_are_zero_padded_and_every_json_names_what_it_wrote() {
+    let stem = out("padded.png");
+    let report = json(&with(
+        "mesh",
+        &[
+            "--display",
+            "lenticular:12",
+            "--output",
+            "views",
+            "--json",
+            "--out",
+            stem.to_str().unwrap(),
+        ],
+    ));
+    let names: Vec<PathBuf> = (0..12)
+        .map(|v| out(&format!("padded_{v:02}.png")))
+        .collect();
+    assert_eq!(report["written"], serde_json::json!(names));
+    let mut sorted = names.clone();
+    sorted.sort();
+    assert_eq!(sorted, names, "a listing sorts the views in order");
+    for name in &names {
+        assert!(name.exists(), "{}", name.display());
+    }
+    // A quilt: the name written carries the Looking Glass suffix, and the JSON says it.
+    let quilt = out("q.png");
+    let report = json(&with(
+        "mesh",
+        &[
+            "--output",
+            "quilt",
+            "--json",
+            "--out",
+            quilt.to_str().unwrap(),
+        ],
+    ));
+    let named = out("q_qs2x4a1.3333.png");
+    assert_eq!(report["written"], serde_json::json!([named]));
+    assert!(named.exists());
+}
+
+/// A 32×24 colour image and a depth ramp for `rgbd`.
+fn rgbd_pair() -> (PathBuf, PathBuf) {
+    let (c, d) = (out("rgbd_color.png"), out("rgbd_depth.png"));
+    image::RgbImage::from_fn(32, 24, |x, y| {
+        image::Rgb([(x * 8) as u8, (y * 10) as u8, 90])
+    })
+    .save(&c)
+    .unwrap();
+    image::GrayImage::from_fn(32, 24, |x, _| image::Luma([(x * 8) as u8]))
+        .save(&d)
+        .unwrap();
+    (c, d)
+}
+
+#[test]
+fn rgbd_and_interleave_take_the_same_output_flags_and_json() {
+    let (c, d) = rgbd_pair();
+    let (c, d) = (c.to_str().unwrap(), d.to_str().unwrap());
+    // --output views as in every command (rgbd had --views-out DIR with other names).
+    let views = out("rgbd_views.png");
+    let report = json(&[
+        "rgbd",
+        c,
+        d,
+        "--output",
+        "views",
+        "--json",
+        "--out",
+        views.to_str().unwrap(),
+    ]);
+    let names: Vec<PathBuf> = (0..8)
+        .map(|v| out(&format!("rgbd_views_{v:02}.png")))
+        .collect();
+    assert_eq!(report["written"], serde_json::json!(names));
+    assert_eq!(report["warp_path"], "direct");
+    // A quilt of the same views: tile v is view v.
+    let quilt = out("rgbd_quilt.png");
+    let report = json(&[
+        "rgbd",
+        c,
+        d,
+        "--output",
+        "quilt",
+        "--json",
+        "--warp-path",
+        "per-view",
+        "--out",
+        quilt.to_str().unwrap(),
+    ]);
+    assert_eq!(report["warp_path"], "per-view");
+    let named = out("rgbd_quilt_qs2x4a1.3333.png");
+    assert_eq!(report["written"], serde_json::json!([named]));
+    let q = image::open(&named).unwrap().to_rgb8();
+    let layout = autostereo::render::quilt::QuiltLayout::for_views(8, [32, 24]);
+    for v in [0, 5, 7] {
+        let [x0, y0] = layout.tile_origin(v);
+        let view = image::open(&names[v as usize]).unwrap().to_rgb8();
+        let tile = image::imageops::crop_imm(&q, x0, y0, 32, 24).to_image();
+        assert_eq!(tile, view, "quilt tile {v} is view {v}");
+    }
+    // The stereo formats too.
+    let sbs = out("rgbd_sbs.png");
+    json(&[
+        "rgbd",
+        c,
+        d,
+        "--output",
+        "side-by-side",
+        "--json",
+        "--out",
+        sbs.to_str().unwrap(),
+    ]);
+    assert_eq!(image::open(&sbs).unwrap().width(), 64);
+    // interleave's JSON names its file.
+    let spatial = out("interleaved.png");
+    let report = json(&[
+        "interleave",
+        named.to_str().unwrap(),
+        "--json",
+        "--out",
+        spatial.to_str().unwrap(),
+    ]);
+    assert_eq!(report["written"], serde_json::json!([spatial]));
+    assert_eq!(report["quilt_views"], 8);
+}
+
+#[test]
+fn retired_flags_name_their_replacement() {
+    let f = out("retired.png");
+    let f = f.to_str().unwrap();
+    let dir = common::out_dir();
+    let dir = dir.to_str().unwrap();
+    refused(
+        &with("mesh", &["--method", "tiled", "--quilt-out", f]),
+        &["--output quilt --out"],
+    );
+    refused(
+        &with("volume", &["--views-out", dir, "--out", f]),
+        &["--output views --out"],
+    );
+    refused(
+        &with("volume", &["--anaglyph", f, "--out", f]),
+        &["--output anaglyph --out"],
+    );
+    let (c, d) = rgbd_pair();
+    let (c, d) = (c.to_str().unwrap(), d.to_str().unwrap());
+    refused(&["rgbd", c, d, "--quilt-out", f], &["--output quilt --out"]);
+    refused(
+        &["rgbd", c, d, "--views-out", dir],
+        &["--output views --out"],
+    );
+    refused(
+        &["rgbd", c, d, "--path", "per-view", "--out", f],
+        &["--warp-path per-view"],
+    );
+}
+
+#[test]
+fn one_frame_unless_timing_is_asked_for() {
+    // Three frames (two warm-ups) were rendered for every image; now one, and --frames N
+    // times N after the warm-ups.
+    let report = json(&with("mesh", &["--json"]));
+    assert_eq!(
+        (report["frames"].as_u64(), report["warm_up_frames"].as_u64()),
+        (Some(1), Some(0))
+    );
+    let report = json(&with("mesh", &["--json", "--frames", "3"]));
+    assert_eq!(
+        (report["frames"].as_u64(), report["warm_up_frames"].as_u64()),
+        (Some(3), Some(2))
+    );
+    let (c, d) = rgbd_pair();
+    let report = json(&["rgbd", c.to_str().unwrap(), d.to_str().unwrap(), "--json"]);
+    assert_eq!(report["warm_up_frames"], 0);
+}
+
+#[test]
+fn help_is_grouped_with_examples_and_commands_come_in_order() {
+    let (ok, stdout, _) = run(&["--help"]);
+    assert!(ok);
+    let at = |name: &str| {
+        stdout
+            .find(&format!("\n  {name} "))
+            .unwrap_or_else(|| panic!("{name}: {stdout}"))
+    };
+    let order = [
+        "mesh",
+        "points",
+        "volume",
+        "gaussians",
+        "rgbd",
+        "interleave",
+        "view",
+        "views",
+        "mask",
+        "bench",
+    ];
+    for pair in order.windows(2) {
+        assert!(at(pair[0]) < at(pair[1]), "{pair:?}: {stdout}");
+    }
+    for command in ["mesh", "points", "volume", "gaussians"] {
+        let (ok, help, _) = run(&[command, "--help"]);
+        assert!(ok);
+        let mut last = 0;
+        for heading in [
+            "Input:",
+            "Display:",
+            "Camera:",
+            "Method:",
+            "Output:",
+            "Examples:",
+        ] {
+            let at = help
+                .find(&format!("\n{heading}\n"))
+                .unwrap_or_else(|| panic!("{command}: no {heading}\n{help}"));
+            assert!(at > last, "{command}: {heading} out of order");
+            last = at;
+        }
+        assert!(
+            help.contains(&format!("autostereo {command} ")),
+            "{command}: no example"
+        );
+    }
+    // The flags shared by definition read the same in every command.
+    let line = |command: &str| {
+        let (_, help, _) = run(&[command, "--help"]);
+        help.lines()
+            .find(|l| l.trim_start().starts_with("--output <FORMAT>"))
+            .map(str::to_string)
+            .unwrap_or_else(|| panic!("{command}: no --output"))
+    };
+    assert_eq!(line("mesh"), line("rgbd"));
+}
+
+#[test]
+fn mask_and_views_name_what_they_wrote() {
+    let mask = out("mask.png");
+    let report = json(&[
+        "mask",
+        "--size",
+        "16x8",
+        "--json",
+        "--out",
+        mask.to_str().unwrap(),
+    ]);
+    assert_eq!(report["written"], serde_json::json!([mask]));
+    assert_eq!(report["views"], 8);
+    let (ok, _, stderr) = run(&["mask", "--size", "16x8", "--out", mask.to_str().unwrap()]);
+    assert!(ok && stderr.contains("wrote"), "{stderr}");
+    let anaglyph = out("views_anaglyph.png");
+    let report = json(&[
+        "views",
+        mask.to_str().unwrap(),
+        "--eyes",
+        "3,4",
+        "--json",
+        "--out",
+        anaglyph.to_str().unwrap(),
+    ]);
+    assert_eq!(report["written"], serde_json::json!([anaglyph]));
+    assert_eq!(report["eyes"], serde_json::json!([3, 4]));
+}
