@@ -297,14 +297,50 @@ pub fn method_parser() -> impl clap::builder::TypedValueParser<Value = Method> {
         .map(|name| name.parse::<Method>().expect("one of the possible values"))
 }
 
-/// Flags every render command shares (extend, don't break: tools and benchmarks use them).
-#[derive(clap::Args)]
-pub struct RenderArgs {
+/// `--max-memory`: the loading budget, one definition for every command that loads data.
+#[derive(clap::Args, Clone, Debug)]
+pub struct MemoryArgs {
     /// CPU memory budget for loading (bytes, or with K/M/G/T, KB…TB or KiB…TiB, all binary:
     /// 1K = 1KB = 1KiB = 1024 bytes; default 8G): inputs that would
     /// need more are refused before anything is allocated.
     #[arg(long, value_parser = autostereo::budget::parse_bytes, help_heading = "Input")]
     pub max_memory: Option<u64>,
+}
+
+impl MemoryArgs {
+    /// Set the library's budget where the flag gives one.
+    pub fn apply(&self) {
+        if let Some(bytes) = self.max_memory {
+            autostereo::budget::set_max_memory(bytes);
+        }
+    }
+}
+
+/// `--frames N`: timing, one definition for every command that renders frames.
+#[derive(clap::Args, Clone, Debug)]
+pub struct FramesArgs {
+    /// Time N frames after two warm-up frames and report the median (without it: one frame,
+    /// no warm-up).
+    #[arg(long, value_name = "N", value_parser = frames_parser(), help_heading = "Measuring")]
+    pub frames: Option<u32>,
+}
+
+impl FramesArgs {
+    /// The `--json` fields: frames timed and warm-up frames before them.
+    pub fn fields(&self) -> serde_json::Value {
+        let warm_up = match self.frames {
+            Some(_) => crate::run::WARM_UP_FRAMES,
+            None => 0,
+        };
+        serde_json::json!({ "frames": self.frames.unwrap_or(1), "warm_up_frames": warm_up })
+    }
+}
+
+/// Flags every render command shares (extend, don't break: tools and benchmarks use them).
+#[derive(clap::Args)]
+pub struct RenderArgs {
+    #[command(flatten)]
+    pub memory: MemoryArgs,
     #[command(flatten)]
     pub display: DisplayArgs,
     #[command(flatten)]
@@ -337,16 +373,15 @@ pub struct RenderArgs {
     /// Also render N-pass and report psnr_db, max_abs_err, frac_off_2 against it.
     #[arg(long, help_heading = "Measuring")]
     pub compare: bool,
-    /// Time N frames after two warm-up frames and report the median (without it: one frame,
-    /// no warm-up).
-    #[arg(long, value_name = "N", value_parser = frames_parser(), help_heading = "Measuring")]
-    pub frames: Option<u32>,
+    #[command(flatten)]
+    pub timing: FramesArgs,
 }
 
 impl RenderArgs {
     /// Fail early on what can be checked before loading anything.
     pub fn check(&self) -> Result<()> {
-        self.output.check(self.compare || self.frames.is_some())?;
+        self.output
+            .check(self.compare || self.timing.frames.is_some())?;
         let scaled = [Method::NPass, Method::Tiled, Method::Layered, Method::Mrt];
         let flag = match self.view_size {
             Some([w, h]) => Some(format!("--view-size {w}x{h}")),
@@ -363,9 +398,7 @@ impl RenderArgs {
         }
         self.warp.check(self.method)?;
         self.turntable.check(self.output.out.as_deref())?;
-        if let Some(bytes) = self.max_memory {
-            autostereo::budget::set_max_memory(bytes);
-        }
+        self.memory.apply();
         Ok(())
     }
 

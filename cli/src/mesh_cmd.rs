@@ -151,7 +151,7 @@ pub fn run(args: MeshArgs) -> Result<()> {
         renderer.as_mut(),
         &buffers,
         &frame,
-        args.common.frames,
+        args.common.timing.frames,
     )?;
     let mut saved = crate::output::save_all(
         &ctx,

@@ -34,10 +34,8 @@ pub struct RgbdArgs {
     /// refusing it.
     #[arg(long, help_heading = "Input")]
     depth_resample: bool,
-    /// CPU memory budget for loading (bytes, or with K/M/G/T, KB…TB or KiB…TiB, all binary:
-    /// 1K = 1KB = 1KiB = 1024 bytes; default 8G).
-    #[arg(long, value_parser = autostereo::budget::parse_bytes, help_heading = "Input")]
-    max_memory: Option<u64>,
+    #[command(flatten)]
+    memory: crate::args::MemoryArgs,
     #[command(flatten)]
     display: DisplayArgs,
     /// Output size WxH (default: the colour image's).
@@ -64,10 +62,8 @@ pub struct RgbdArgs {
     warp: WarpSynthesisArgs,
     #[command(flatten)]
     output: OutputArgs,
-    /// Time N frames of the spatial image after two warm-up frames and report the median
-    /// (without it: one frame, no warm-up).
-    #[arg(long, value_name = "N", value_parser = crate::args::frames_parser(), help_heading = "Measuring")]
-    frames: Option<u32>,
+    #[command(flatten)]
+    timing: crate::args::FramesArgs,
     /// Renamed --warp-path (direct | per-view), as in --method warp.
     #[arg(long, hide = true)]
     path: Option<String>,
@@ -79,11 +75,9 @@ pub fn run(args: RgbdArgs) -> Result<()> {
     }
     // The hole mask is an output too: with it alone nothing else need be written.
     args.output
-        .check(args.frames.is_some() || args.warp.hole_mask.is_some())?;
+        .check(args.timing.frames.is_some() || args.warp.hole_mask.is_some())?;
     args.warp.check()?;
-    if let Some(bytes) = args.max_memory {
-        autostereo::budget::set_max_memory(bytes);
-    }
+    args.memory.apply();
     let depth_options = DepthMapOptions {
         invert: args.depth_invert,
         resample: args.depth_resample,
@@ -104,7 +98,7 @@ pub fn run(args: RgbdArgs) -> Result<()> {
     let (device, queue) = (&ctx.device, &ctx.queue);
     let scene = RgbdScene::new(device, queue, &image)?;
     let mut warp = RgbdWarp::new(device, options)?;
-    let run = timed(&ctx, &mut warp, &scene, &frame, args.frames)?;
+    let run = timed(&ctx, &mut warp, &scene, &frame, args.timing.frames)?;
     let mut saved = Saved {
         written: Vec::new(),
         turntable: None,
@@ -151,8 +145,6 @@ pub fn run(args: RgbdArgs) -> Result<()> {
         "size": size,
         "adapter": ctx.adapter_label(),
         "ms": run.ms,
-        "frames": args.frames.unwrap_or(1),
-        "warm_up_frames": if args.frames.is_some() { crate::run::WARM_UP_FRAMES } else { 0 },
         "timing": run.timing,
         "gpu_bytes": run.gpu_bytes,
         "warp_path": WarpPathArg::of(options.path),
@@ -163,6 +155,8 @@ pub fn run(args: RgbdArgs) -> Result<()> {
         "output": args.output.format.name(),
         "written": saved.written,
     });
+    let mut fields = fields;
+    crate::run::merge(&mut fields, args.timing.fields());
     let summary = format!(
         "rgbd: {}x{} for {} ({} views), {} warp, {:.2} ms/frame (median of {}, {:?}) on {}",
         size[0],
@@ -171,7 +165,7 @@ pub fn run(args: RgbdArgs) -> Result<()> {
         frame.camera.views,
         WarpPathArg::of(options.path),
         run.ms,
-        args.frames.unwrap_or(1),
+        args.timing.frames.unwrap_or(1),
         run.timing,
         ctx.adapter_label()
     );

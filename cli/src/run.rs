@@ -118,8 +118,6 @@ pub fn run_fields(
         "size": frame.size,
         "adapter": ctx.adapter_label(),
         "ms": run.ms,
-        "frames": common.frames.unwrap_or(1),
-        "warm_up_frames": if common.frames.is_some() { WARM_UP_FRAMES } else { 0 },
         "view_scale": frame.view_scale,
         "view_size": frame.view_size(),
         "timing": run.timing,
@@ -128,6 +126,7 @@ pub fn run_fields(
         "gpu_bytes": run.gpu_bytes,
         "rendered": run.how,
     });
+    merge(&mut fields, common.timing.fields());
     merge(&mut fields, extra);
     fields
 }
@@ -181,7 +180,7 @@ pub fn run_summary(
         frame.size[1],
         run.gpu_bytes as f64 / (1u64 << 20) as f64,
         run.ms,
-        common.frames.unwrap_or(1),
+        common.timing.frames.unwrap_or(1),
         run.timing,
         ctx.adapter_label()
     )

@@ -373,7 +373,13 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     let settings = options.volume.settings;
     settings.validate_for(&scene)?;
     let mut renderer = options.volume_renderer(&ctx.device)?;
-    let run = timed(&ctx, renderer.as_mut(), &scene, &frame, args.common.frames)?;
+    let run = timed(
+        &ctx,
+        renderer.as_mut(),
+        &scene,
+        &frame,
+        args.common.timing.frames,
+    )?;
     let mut saved = crate::output::save_all(
         &ctx,
         renderer.as_mut(),
