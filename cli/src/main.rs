@@ -2,6 +2,8 @@
 
 mod args;
 mod bench;
+#[cfg(test)]
+mod doc_examples;
 mod examples;
 mod flags;
 mod gaussians_cmd;
