@@ -36,13 +36,12 @@ pub struct GaussiansArgs {
     file: Option<PathBuf>,
     #[command(flatten)]
     common: RenderArgs,
-    #[command(flatten)]
+    #[command(flatten, next_help_heading = "Method")]
     gaussians: GaussianFlags,
 }
 
 /// How Gaussian splats are rendered: the flags `gaussians` and `view` share.
 #[derive(clap::Args, Clone, Debug, PartialEq)]
-#[command(next_help_heading = "Method")]
 pub struct GaussianFlags {
     /// Where the depth sort runs each frame: gpu (a bitonic sort in compute passes) or cpu
     /// (sorted on the CPU and uploaded).

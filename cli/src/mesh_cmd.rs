@@ -49,13 +49,12 @@ pub struct MeshArgs {
     obj: Option<PathBuf>,
     #[command(flatten)]
     common: RenderArgs,
-    #[command(flatten)]
+    #[command(flatten, next_help_heading = "Method")]
     mesh: MeshFlags,
 }
 
 /// How a mesh is prepared and rendered: the flags `mesh` and `view` share.
 #[derive(clap::Args, Clone, Debug, PartialEq)]
-#[command(next_help_heading = "Method")]
 pub struct MeshFlags {
     /// Single-pass visibility: auto | compute | atomic | exact (per-subpixel depth) | fast (the
     /// paper's one depth per pixel); auto = compute where 64-bit atomics exist, else exact.

@@ -29,13 +29,12 @@ pub struct PointsArgs {
     file: Option<PathBuf>,
     #[command(flatten)]
     common: RenderArgs,
-    #[command(flatten)]
+    #[command(flatten, next_help_heading = "Method")]
     points: PointFlags,
 }
 
 /// How a point cloud is prepared and rendered: the flags `points` and `view` share.
 #[derive(clap::Args, Clone, Debug, PartialEq)]
-#[command(next_help_heading = "Method")]
 pub struct PointFlags {
     /// ε of the ε-z compositing, as a fraction of the scene's depth extent (bounding diameter).
     #[arg(long, default_value_t = autostereo::points::DEFAULT_EPSILON_FRACTION)]

@@ -47,11 +47,11 @@ pub struct VolumeArgs {
     /// VTK image data .vti/.vtk, DICOM, .den, or raw with --raw-dims/--raw-type); a built-in
     /// data set when omitted.
     file: Option<PathBuf>,
-    #[command(flatten)]
+    #[command(flatten, next_help_heading = "Input")]
     data: VolumeDataArgs,
     #[command(flatten)]
     common: RenderArgs,
-    #[command(flatten)]
+    #[command(flatten, next_help_heading = "Method")]
     render: VolumeRenderArgs,
     /// Retired: `--output anaglyph --out F.png` writes the red/cyan anaglyph.
     #[arg(long, hide = true)]
@@ -60,7 +60,6 @@ pub struct VolumeArgs {
 
 /// How a volume is loaded and placed: the flags `volume` and `view` share.
 #[derive(clap::Args, Clone, Debug, PartialEq)]
-#[command(next_help_heading = "Input")]
 pub struct VolumeDataArgs {
     /// Built-in data set used when no file is given.
     #[arg(long, value_enum, default_value = "head")]
@@ -103,7 +102,6 @@ pub struct VolumeDataArgs {
 
 /// How a volume is rendered: the flags `volume` and `view` share.
 #[derive(clap::Args, Clone, Debug, PartialEq)]
-#[command(next_help_heading = "Method")]
 pub struct VolumeRenderArgs {
     /// Single-pass path.
     #[arg(long, value_enum, default_value = "compute")]

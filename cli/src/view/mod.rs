@@ -70,7 +70,7 @@ pub struct ViewArgs {
     /// properties Gaussians); the built-in head volume when omitted.
     file: Option<PathBuf>,
     /// What the file holds, where its extension does not say.
-    #[arg(long, value_enum)]
+    #[arg(long, value_enum, help_heading = "Input")]
     kind: Option<KindArg>,
     #[command(flatten)]
     display: DisplayArgs,
@@ -91,49 +91,55 @@ pub struct ViewArgs {
     #[command(flatten, next_help_heading = "Gaussians")]
     gaussians: crate::gaussians_cmd::GaussianFlags,
     /// Window client-area size WxH in pixels.
-    #[arg(long, value_parser = parse_size, default_value = "512x512")]
+    #[arg(long, value_parser = parse_size, default_value = "512x512", help_heading = "Window")]
     size: [u32; 2],
     /// Window position X,Y on the screen (the mask's origin follows it); negative on a
     /// monitor left of or above the primary (`--position -1920,0`).
-    #[arg(long, value_name = "X,Y", value_parser = parse_point, allow_hyphen_values = true)]
+    #[arg(long, value_name = "X,Y", value_parser = parse_point, allow_hyphen_values = true, help_heading = "Window")]
     position: Option<[i32; 2]>,
     /// Full screen on monitor MONITOR (0 = the first; default 0).
-    #[arg(long, num_args = 0..=1, default_missing_value = "0")]
+    #[arg(long, num_args = 0..=1, default_missing_value = "0", help_heading = "Window")]
     fullscreen: Option<usize>,
     /// Starting method (keys: m cycles through the primitive's methods).
-    #[arg(long, value_parser = crate::args::method_parser(), default_value = "single-pass")]
+    #[arg(long, value_parser = crate::args::method_parser(), default_value = "single-pass", help_heading = "Method")]
     method: Method,
     /// What the window shows (key: p).
-    #[arg(long, value_enum, default_value = "spatial")]
+    #[arg(long, value_enum, default_value = "spatial", help_heading = "Window")]
     preview: Preview,
     /// Save what was presented as PNG (read back from the surface texture) after
     /// --quit-after-frames frames, or after 3, and then exit (for scripts), unless
     /// --keep-open.
-    #[arg(long)]
+    #[arg(long, help_heading = "Scripts")]
     screenshot: Option<PathBuf>,
     /// With --screenshot: keep the window open after the screenshot is saved (until Esc or
     /// the window is closed) instead of exiting.
-    #[arg(long, requires = "screenshot", conflicts_with = "quit_after_frames")]
+    #[arg(
+        long,
+        requires = "screenshot",
+        conflicts_with = "quit_after_frames",
+        help_heading = "Scripts"
+    )]
     keep_open: bool,
     /// Exit after K presented frames.
-    #[arg(long)]
+    #[arg(long, help_heading = "Scripts")]
     quit_after_frames: Option<u32>,
     /// Move the window to X,Y after frame K (tests: the mask phase must follow): K:X,Y (X, Y
     /// negative as --position's).
-    #[arg(long, value_name = "K:X,Y", value_parser = parse_move)]
+    #[arg(long, value_name = "K:X,Y", value_parser = parse_move, help_heading = "Scripts")]
     move_after: Option<(u32, [i32; 2])>,
     /// Scripted stress run for K frames: switch the method every 10 frames, the display every
     /// 70, the window size every 35; prints (JSON) resident memory every 50 frames, the heap
     /// in use every 10, the live GPU objects at each end of the period after which the run's
     /// state repeats, and that period.
-    #[arg(long)]
+    #[arg(long, help_heading = "Scripts")]
     exercise: Option<u32>,
     /// What the exercise run switches (default all).
     #[arg(
         long,
         value_enum,
         value_delimiter = ',',
-        default_value = "methods,displays,sizes"
+        default_value = "methods,displays,sizes",
+        help_heading = "Scripts"
     )]
     exercise_switch: Vec<Switch>,
 }
