@@ -77,11 +77,16 @@ pub fn charge_gpu(what: impl FnOnce() -> String, bytes: u64) -> Result<GpuCharge
     loop {
         let total = held.saturating_add(bytes);
         if total > budget {
-            return Err(Error::MemoryBudget {
-                what: format!(
+            // What is already held only where there is some: "(0 bytes held)" is noise.
+            let what = match held {
+                0 => what(),
+                _ => format!(
                     "{} ({bytes} bytes) with the {held} bytes of GPU memory already held",
                     what()
                 ),
+            };
+            return Err(Error::MemoryBudget {
+                what,
                 bytes: total,
                 budget,
             });
@@ -91,6 +96,18 @@ pub fn charge_gpu(what: impl FnOnce() -> String, bytes: u64) -> Result<GpuCharge
             Err(now) => held = now,
         }
     }
+}
+
+/// `bytes` rounded up to a figure `--max-memory` takes, in the largest unit that keeps it
+/// within an eighth above (`168624` → `165K`, `22708224` → `22M`): what to raise the budget to.
+pub fn rounded_up(bytes: u64) -> String {
+    for (unit, shift) in [("T", 40), ("G", 30), ("M", 20), ("K", 10)] {
+        let n = bytes.div_ceil(1 << shift);
+        if n >= 8 || (n << shift) == bytes {
+            return format!("{n}{unit}");
+        }
+    }
+    bytes.to_string()
 }
 
 /// Bytes per texel of `format` (depth formats by their depth aspect).
@@ -153,6 +170,23 @@ pub fn parse_bytes(text: &str) -> std::result::Result<u64, String> {
 #[cfg(test)]
 mod tests {
     use super::parse_bytes;
+
+    #[test]
+    fn budgets_round_up_to_a_figure_max_memory_takes() {
+        use super::rounded_up;
+        assert_eq!(rounded_up(168_624), "165K");
+        assert_eq!(rounded_up(22_708_224), "22M");
+        assert_eq!(rounded_up(1 << 30), "1G");
+        assert_eq!(rounded_up(3 << 30), "3G");
+        assert_eq!(rounded_up(100), "100");
+        for bytes in [1, 1000, 168_624, 22_708_224, 5 << 30, u64::MAX / 2] {
+            let figure = parse_bytes(&rounded_up(bytes)).unwrap();
+            assert!(
+                figure >= bytes && figure - bytes <= bytes / 8 + 1024,
+                "{bytes}"
+            );
+        }
+    }
 
     #[test]
     fn sizes_parse() {

@@ -7,12 +7,15 @@ use std::path::PathBuf;
 #[non_exhaustive]
 pub enum Error {
     /// No wgpu adapter matched the requested backends / name.
-    #[error("no GPU adapter found (backends: {backends}{name}); on a machine without a GPU install Mesa's lavapipe: apt-get install mesa-vulkan-drivers libvulkan1")]
+    #[error("no GPU adapter found (backends: {backends}{name}); {available}")]
     NoAdapter {
         /// The backends that were searched.
         backends: String,
         /// The adapter-name filter, formatted for the message.
         name: String,
+        /// The adapters there are on any backend and how to pick one (`WGPU_ADAPTER_NAME`,
+        /// `WGPU_BACKEND`), or how to install one where there is none.
+        available: String,
     },
     /// The adapter lacks a capability a requested mode needs.
     #[error("{purpose} needs {missing}, which adapter '{adapter}' lacks; {instead}")]
@@ -36,9 +39,28 @@ pub enum Error {
         /// The adapter's limit.
         limit: u64,
     },
+    /// A frame too wide for a mode that renders one column per subpixel: the adapter's
+    /// texture width limit divided by the columns per pixel is the widest frame it renders.
+    #[error("a frame {} pixels wide is too wide for {mode}, which renders at subpixel resolution: {per_pixel} columns per pixel, {columns} in all, over the adapter's limit of {limit}; {mode} renders at most {max_width} pixels wide (else use {instead})", .size[0])]
+    SubpixelWidth {
+        /// The frame's size in pixels, as the caller asked for it.
+        size: [u32; 2],
+        /// Columns per pixel (subpixels, 3 on RGB panels).
+        per_pixel: u32,
+        /// The columns the mode's images would have: width × `per_pixel`.
+        columns: u64,
+        /// The adapter's largest texture side.
+        limit: u32,
+        /// The widest frame the mode renders: `limit / per_pixel`.
+        max_width: u32,
+        /// The mode, as the library names it (e.g. `Visibility::Exact`).
+        mode: &'static str,
+        /// The mode to use instead, as the library names it.
+        instead: &'static str,
+    },
     /// An input, or a renderer's per-view images, would need more memory than the budget
     /// (`crate::budget`; on the GPU too: software adapters allocate it from the same RAM).
-    #[error("{what} needs {bytes} bytes, over the memory budget of {budget} bytes (raise it with budget::set_max_memory)")]
+    #[error("{what} needs {bytes} bytes, over the memory budget of {budget} bytes (raise it with budget::set_max_memory, to at least {})", crate::budget::rounded_up(*.bytes))]
     MemoryBudget {
         /// What would be allocated, in words.
         what: String,
@@ -56,7 +78,7 @@ pub enum Error {
         source: wgpu::RequestDeviceError,
     },
     /// A parameter is outside its valid range (zero views, 0×0 image, NaN separation…).
-    #[error("invalid {name}: {reason}")]
+    #[error("invalid {name}: {}", printable(.reason))]
     InvalidParameter {
         /// The parameter's name as the user knows it.
         name: &'static str,
@@ -72,7 +94,7 @@ pub enum Error {
         reason: String,
     },
     /// A Looking Glass calibration file is unreadable or incomplete.
-    #[error("calibration file {path}: {reason}")]
+    #[error("calibration file {path}: {}", printable(.reason))]
     Calibration {
         /// The file.
         path: PathBuf,
@@ -80,7 +102,7 @@ pub enum Error {
         reason: String,
     },
     /// A mesh file is malformed.
-    #[error("mesh {path}: {reason}")]
+    #[error("mesh {path}: {}", printable(.reason))]
     Mesh {
         /// The file.
         path: PathBuf,
@@ -88,7 +110,7 @@ pub enum Error {
         reason: String,
     },
     /// A point-cloud file is malformed, truncated or of an unsupported kind.
-    #[error("point cloud {path}: {reason}")]
+    #[error("point cloud {path}: {}", printable(.reason))]
     Points {
         /// The file.
         path: PathBuf,
@@ -97,7 +119,7 @@ pub enum Error {
     },
     /// A 3D Gaussian splat file (graphdeco PLY, `.splat`, `.spz`) is malformed, truncated or
     /// of an unsupported variant.
-    #[error("Gaussian splats {path}: {reason}")]
+    #[error("Gaussian splats {path}: {}", printable(.reason))]
     Gaussians {
         /// The file.
         path: PathBuf,
@@ -105,7 +127,7 @@ pub enum Error {
         reason: String,
     },
     /// A volume file is malformed, truncated or of an unsupported kind.
-    #[error("volume {path}: {reason}")]
+    #[error("volume {path}: {}", printable(.reason))]
     Volume {
         /// The file.
         path: PathBuf,
@@ -114,7 +136,7 @@ pub enum Error {
     },
     /// A file of an unknown format, of another kind of data than the command renders, or of
     /// a format this build does not read.
-    #[error("{path}: {reason}")]
+    #[error("{path}: {}", printable(.reason))]
     Format {
         /// The file.
         path: PathBuf,
@@ -122,7 +144,7 @@ pub enum Error {
         reason: String,
     },
     /// An image could not be read or written.
-    #[error("image {path}: {reason}")]
+    #[error("image {path}: {}", printable(.reason))]
     Image {
         /// The file.
         path: PathBuf,
@@ -160,6 +182,36 @@ pub enum Error {
     },
 }
 
+/// `text` with its control characters escaped (`\u{1b}`, `\n`): a reason that quotes a file
+/// never moves the cursor, rings or retitles the terminal it is printed on, whichever reader
+/// built it.
+pub(crate) fn printable(text: &str) -> std::borrow::Cow<'_, str> {
+    if text.chars().any(char::is_control) {
+        text.chars()
+            .map(|c| match c.is_control() {
+                true => c.escape_debug().to_string(),
+                false => c.to_string(),
+            })
+            .collect::<String>()
+            .into()
+    } else {
+        text.into()
+    }
+}
+
+/// Longest piece of a file's text an error quotes, in characters.
+const QUOTED_CHARS: usize = 40;
+
+/// `text` read from a file, quoted for an error message: in single quotes, control characters
+/// escaped, at most 40 characters (then `…`). The one way readers echo what they could not
+/// understand, so that a binary file named `.nrrd` shows as `'\u{1b}[31m…'`, never raw.
+pub(crate) fn quote(text: impl AsRef<str>) -> String {
+    let mut chars = text.as_ref().chars();
+    let head: String = chars.by_ref().take(QUOTED_CHARS).collect();
+    let more = if chars.next().is_some() { "…" } else { "" };
+    format!("'{}{more}'", printable(&head))
+}
+
 /// Result alias for the library.
 pub type Result<T, E = Error> = std::result::Result<T, E>;
 
@@ -169,6 +221,31 @@ impl Error {
             path: path.to_path_buf(),
             error,
         }
+    }
+
+    /// `Err(SubpixelWidth)` when a `size` frame at `per_pixel` columns per pixel is wider
+    /// than `device` allows; `mode` renders so, `instead` does not.
+    pub(crate) fn check_subpixel_width(
+        device: &wgpu::Device,
+        size: [u32; 2],
+        per_pixel: u32,
+        mode: &'static str,
+        instead: &'static str,
+    ) -> Result<()> {
+        let limit = device.limits().max_texture_dimension_2d;
+        let columns = u64::from(size[0]) * u64::from(per_pixel);
+        if per_pixel > 1 && columns > u64::from(limit) {
+            return Err(Error::SubpixelWidth {
+                size,
+                per_pixel,
+                columns,
+                limit,
+                max_width: limit / per_pixel,
+                mode,
+                instead,
+            });
+        }
+        Ok(())
     }
 
     pub(crate) fn invalid(name: &'static str, reason: impl Into<String>) -> Self {

@@ -95,7 +95,7 @@ impl GpuContext {
                 None => true,
             })
             .ok_or_else(|| Error::NoAdapter {
-                backends: format!("{backends:?}"),
+                backends: backend_names(backends),
                 name: name
                     .as_ref()
                     .map(|n| format!(", name contains '{n}'"))
@@ -105,6 +105,7 @@ impl GpuContext {
                     } else {
                         ""
                     },
+                available: available_adapters(),
             })?;
         let info = adapter.get_info();
         log::info!(
@@ -239,6 +240,68 @@ pub fn check_size_2d(device: &wgpu::Device, width: u32, height: u32) -> Result<(
         }
     }
     Ok(())
+}
+
+/// `backends` as `WGPU_BACKEND` spells them (`vulkan, gl`); where none is left, what
+/// `WGPU_BACKEND` said (a name wgpu does not know selects nothing).
+fn backend_names(backends: wgpu::Backends) -> String {
+    let names: Vec<&str> = BACKENDS
+        .iter()
+        .filter(|(b, _)| backends.contains(*b))
+        .map(|(_, name)| *name)
+        .collect();
+    if !names.is_empty() {
+        return names.join(", ");
+    }
+    match std::env::var("WGPU_BACKEND") {
+        Ok(env) => format!(
+            "none: WGPU_BACKEND='{}' names no backend ({})",
+            env.escape_debug(),
+            BACKENDS.map(|(_, n)| n).join(", ")
+        ),
+        Err(_) => "none".into(),
+    }
+}
+
+/// The backends a user picks from, with `WGPU_BACKEND`'s names for them.
+const BACKENDS: [(wgpu::Backends, &str); 4] = [
+    (wgpu::Backends::VULKAN, "vulkan"),
+    (wgpu::Backends::GL, "gl"),
+    (wgpu::Backends::METAL, "metal"),
+    (wgpu::Backends::DX12, "dx12"),
+];
+
+/// For [`Error::NoAdapter`]: every adapter on any backend (name and backend) and how to pick
+/// one, or, where there is none, how to get one. Enumerated on an instance of its own, so that
+/// adapters the search's backends left out are listed too.
+fn available_adapters() -> String {
+    let backends = BACKENDS
+        .iter()
+        .fold(wgpu::Backends::empty(), |all, (b, _)| all | *b);
+    let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
+    desc.backends = backends;
+    let adapters = pollster::block_on(wgpu::Instance::new(desc).enumerate_adapters(backends));
+    if adapters.is_empty() {
+        return "there is no adapter on any backend; on a machine without a GPU install Mesa's \
+                lavapipe: apt-get install mesa-vulkan-drivers libvulkan1"
+            .into();
+    }
+    let listed: Vec<String> = adapters
+        .iter()
+        .map(|a| {
+            let info = a.get_info();
+            let backend = BACKENDS
+                .iter()
+                .find(|(b, _)| *b == info.backend.into())
+                .map_or_else(|| format!("{:?}", info.backend), |(_, n)| n.to_string());
+            format!("'{}' ({backend})", info.name)
+        })
+        .collect();
+    format!(
+        "the adapters here: {}; pick one with WGPU_ADAPTER_NAME=<part of its name> and \
+         WGPU_BACKEND=<its backend> (vulkan, gl, metal, dx12), or unset them for the first",
+        listed.join(", ")
+    )
 }
 
 fn device_rank(t: wgpu::DeviceType) -> u8 {

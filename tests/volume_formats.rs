@@ -341,7 +341,7 @@ fn broken_headers_are_refused_by_name() {
                 b.extend_from_slice(&v);
                 b
             },
-            "ElementType MET_LONG_LONG is not read",
+            "ElementType 'MET_LONG_LONG' is not read",
         ),
     ];
     for (name, bytes, expected) in cases {

@@ -26,11 +26,17 @@ const FLAGS: &[(&str, &str)] = &[
     ("look-from", "--look-from"),
     ("look-at", "--look-at"),
     ("up", "--up"),
+    ("views", "--views"),
+    ("field of view", "--fov"),
 ];
 
 /// (library term in an error's advice, the command line's words for it).
 const TERMS: &[(&str, &str)] = &[
     ("Visibility::Exact", "--visibility exact"),
+    ("Visibility::Fast", "--visibility fast"),
+    ("Visibility::Compute", "--visibility compute"),
+    ("SplatDepth::Exact", "--depth exact"),
+    ("SplatDepth::Paper", "--depth paper"),
     ("TileClip::Discard", "--tile-clip discard"),
     ("VolumePath::RayMarch", "--path compute"),
     ("VolumePath::Slices", "--path slices"),
@@ -63,12 +69,35 @@ pub fn describe(error: &anyhow::Error) -> String {
             Some(autostereo::Error::DisplaySpec { spec, reason }) => {
                 format!("--display {spec}: {reason}")
             }
+            // The frame is the image `--size` asked for (the views of an unbandable frame,
+            // or the window's): named as the user typed it, the library's advice after it.
+            Some(autostereo::Error::SubpixelWidth { size: [w, h], .. }) => {
+                format!("--size {w}x{h}: {cause}")
+            }
+            Some(autostereo::Error::LimitExceeded { what, limit, .. })
+                if what == "image width" || what == "image height" =>
+            {
+                format!("{cause} (--size: at most {limit} pixels a side on this adapter)")
+            }
             _ => cause.to_string(),
         })
         .collect();
-    TERMS.iter().fold(parts.join(": "), |text, (term, words)| {
+    let text = TERMS.iter().fold(parts.join(": "), |text, (term, words)| {
         text.replace(term, words)
-    })
+    });
+    printable(&text)
+}
+
+/// `text` with its control characters but line breaks escaped: whatever a message quotes (a
+/// file's bytes, an OS error, a wgpu message), printing it never moves the cursor, rings or
+/// retitles the terminal.
+fn printable(text: &str) -> String {
+    text.chars()
+        .map(|c| match c.is_control() && c != '\n' {
+            true => c.escape_debug().to_string(),
+            false => c.to_string(),
+        })
+        .collect()
 }
 
 #[cfg(test)]
@@ -91,5 +120,11 @@ mod tests {
         assert_eq!(describe(&plain), "no such file");
         let advice = anyhow::anyhow!("X needs Y; use Visibility::Exact");
         assert_eq!(describe(&advice), "X needs Y; use --visibility exact");
+    }
+
+    #[test]
+    fn control_characters_are_escaped() {
+        let raw = anyhow::anyhow!("line '\u{1b}[31mred\u{7}\r'\nnext");
+        assert_eq!(describe(&raw), "line '\\u{1b}[31mred\\u{7}\\r'\nnext");
     }
 }

@@ -41,6 +41,26 @@ impl Bounds {
     }
 }
 
+/// The caller's own numbers, refused by name before a camera is made of them: a field of view
+/// in degrees as well as radians (what a user types), a separation that is not finite (the
+/// caller's to fix, not the data's: `framing` blames the bounds for the rest).
+fn check_lens(fov_y: f32, aspect: f32, separation: Option<f32>) -> Result<()> {
+    if !(fov_y > 0.0 && fov_y < std::f32::consts::PI && aspect.is_finite() && aspect > 0.0) {
+        return Err(Error::invalid(
+            "field of view",
+            format!(
+                "{}° ({fov_y} rad) at aspect {aspect}: the vertical field of view must be \
+                 between 0 and 180°, the aspect positive",
+                fov_y.to_degrees()
+            ),
+        ));
+    }
+    if let Some(e) = separation.filter(|e| !e.is_finite()) {
+        return Err(Error::invalid("separation", format!("{e}: must be finite")));
+    }
+    Ok(())
+}
+
 impl MultiViewCamera {
     /// A camera on the +z side of `bounds` looking at its centre (up = +y), far enough that the
     /// bounding sphere fits the narrower field of view; focal plane through the centre;
@@ -52,12 +72,7 @@ impl MultiViewCamera {
         fov_y: f32,
         aspect: f32,
     ) -> Result<Self> {
-        if !(fov_y > 0.0 && fov_y < std::f32::consts::PI && aspect.is_finite() && aspect > 0.0) {
-            return Err(Error::invalid(
-                "field of view",
-                format!("fov {fov_y} rad, aspect {aspect}"),
-            ));
-        }
+        check_lens(fov_y, aspect, separation)?;
         let radius = bounds.radius();
         let fov_x = 2.0 * ((fov_y * 0.5).tan() * aspect).atan();
         let half = 0.5 * fov_y.min(fov_x);
@@ -110,12 +125,7 @@ impl MultiViewCamera {
         fov_y: f32,
         aspect: f32,
     ) -> Result<Self> {
-        if !(fov_y > 0.0 && fov_y < std::f32::consts::PI && aspect.is_finite() && aspect > 0.0) {
-            return Err(Error::invalid(
-                "field of view",
-                format!("fov {fov_y} rad, aspect {aspect}"),
-            ));
-        }
+        check_lens(fov_y, aspect, separation)?;
         for (name, v) in [("look-from", from), ("look-at", at), ("up", up)] {
             if !v.is_finite() {
                 return Err(Error::invalid(name, format!("{v}: must be finite")));

@@ -95,9 +95,12 @@ impl Calibration {
                 .get(name)
                 .ok_or_else(|| err(format!("missing field '{name}'")))?;
             let v = v.get("value").unwrap_or(v);
-            v.as_f64()
-                .filter(|x| x.is_finite())
-                .ok_or_else(|| err(format!("field '{name}' is not a finite number: {v}")))
+            v.as_f64().filter(|x| x.is_finite()).ok_or_else(|| {
+                err(format!(
+                    "field '{name}' is not a finite number: {}",
+                    crate::error::quote(v.to_string())
+                ))
+            })
         };
         // Orientation flags neither model covers: refused rather than ignored, so a panel
         // mounted upside down or with BGR subpixels never gets a wrong mask silently.

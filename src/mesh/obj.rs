@@ -175,7 +175,10 @@ pub(super) fn parse_mtl(
                     _ => {
                         return Err(fail(
                             i + 1,
-                            format!("Kd needs three finite numbers: {line}"),
+                            format!(
+                                "Kd needs three finite numbers: {}",
+                                crate::error::quote(line)
+                            ),
                         ))
                     }
                 };

@@ -257,8 +257,12 @@ fn obj_vertices(path: &Path) -> Result<PointCloud> {
         }
         let values: Vec<f32> = words
             .map(|w| {
-                w.parse::<f32>()
-                    .map_err(|_| fail(l, &format!("'{w}' is not a number")))
+                w.parse::<f32>().map_err(|_| {
+                    fail(
+                        l,
+                        &format!("{w} is not a number", w = crate::error::quote(w)),
+                    )
+                })
             })
             .collect::<Result<_>>()?;
         match values.len() {

@@ -71,7 +71,7 @@ impl<S: ?Sized> Banded<S> {
 /// caller's own memory budget (`crate::budget`) is not the adapter's: its refusal stands.
 fn too_large(error: &Error) -> bool {
     match error {
-        Error::LimitExceeded { .. } => true,
+        Error::LimitExceeded { .. } | Error::SubpixelWidth { .. } => true,
         Error::Gpu { message, .. } => {
             let message = message.to_ascii_lowercase();
             message.contains("out of memory") || message.contains("outofmemory")

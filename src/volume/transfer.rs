@@ -94,7 +94,11 @@ impl TransferFunction {
             other => {
                 return Err(Error::invalid(
                     "transfer function",
-                    format!("unknown preset '{other}' (presets: {})", PRESETS.join(", ")),
+                    format!(
+                        "unknown preset {other} (presets: {})",
+                        PRESETS.join(", "),
+                        other = crate::error::quote(other)
+                    ),
                 ))
             }
         };
@@ -105,8 +109,15 @@ impl TransferFunction {
     /// lines and `#` comments ignored.
     pub fn load(path: &Path) -> Result<Self> {
         let text = crate::file::read_text(path)?;
-        Self::parse(&text)
-            .map_err(|e| Error::invalid("transfer function", format!("{}: {e}", path.display())))
+        // The file's name before the parse's reason, once ("invalid transfer function: F: line
+        // 3: …", not the parameter's name twice).
+        Self::parse(&text).map_err(|e| {
+            let reason = match e {
+                Error::InvalidParameter { reason, .. } => reason,
+                other => other.to_string(),
+            };
+            Error::invalid("transfer function", format!("{}: {reason}", path.display()))
+        })
     }
 
     /// Parse the text format of [`TransferFunction::load`].
@@ -124,7 +135,11 @@ impl TransferFunction {
                 .map_err(|_| {
                     Error::invalid(
                         "transfer function",
-                        format!("line {}: '{line}' is not 5 numbers", n + 1),
+                        format!(
+                            "line {}: {line} is not 5 numbers",
+                            n + 1,
+                            line = crate::error::quote(line)
+                        ),
                     )
                 })?;
             if v.len() != 5 {

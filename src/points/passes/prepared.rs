@@ -10,7 +10,7 @@ use super::chunks::{layered_chunks, tiled_bands, Band};
 use super::group_images::{GroupImages, GroupImagesKey};
 use super::pipelines::{Geometry, SplatPipelineKey};
 use super::{PointSplatter, SplatDepth};
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::frame::Frame;
 use crate::points::SplatScene;
 use crate::render::atlas::Atlas;
@@ -167,6 +167,17 @@ impl PointSplatter {
         } else {
             1
         };
+        if self.subpixel(frame) {
+            // Said in the frame's pixels (the caller's), not in the group images' columns
+            // (the single pass's images are the frame's size).
+            Error::check_subpixel_width(
+                device,
+                frame.size,
+                k,
+                "SplatDepth::Exact",
+                "SplatDepth::Paper",
+            )?;
+        }
         let key = GroupImagesKey {
             size: [size[0].saturating_mul(k), size[1]],
             groups: layers,

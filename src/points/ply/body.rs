@@ -54,9 +54,12 @@ impl<'a> AsciiReader<'a> {
 impl ValueReader for AsciiReader<'_> {
     fn next(&mut self, _ty: Scalar) -> std::result::Result<f64, String> {
         let token = self.tokens.next().ok_or("truncated: the data ends early")?;
-        token
-            .parse::<f64>()
-            .map_err(|_| format!("'{token}' is not a number"))
+        token.parse::<f64>().map_err(|_| {
+            format!(
+                "{token} is not a number",
+                token = crate::error::quote(token)
+            )
+        })
     }
 
     fn remaining_values(&self, _smallest: Scalar) -> usize {

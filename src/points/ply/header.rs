@@ -140,14 +140,23 @@ pub(crate) fn parse_header(bytes: &[u8]) -> std::result::Result<Header, String> 
                     "ascii" => Format::Ascii,
                     "binary_little_endian" => Format::LittleEndian,
                     "binary_big_endian" => Format::BigEndian,
-                    other => return Err(format!("unknown format '{other}'")),
+                    other => {
+                        return Err(format!(
+                            "unknown format {other}",
+                            other = crate::error::quote(other)
+                        ))
+                    }
                 })
             }
             ["element", name, count] => elements.push(Element {
                 name: name.to_string(),
-                count: count
-                    .parse()
-                    .map_err(|_| format!("element '{name}' has a bad count '{count}'"))?,
+                count: count.parse().map_err(|_| {
+                    format!(
+                        "element {name} has a bad count {count}",
+                        name = crate::error::quote(name),
+                        count = crate::error::quote(count)
+                    )
+                })?,
                 properties: Vec::new(),
             }),
             ["property", "list", count, value, name] => {
@@ -166,7 +175,12 @@ pub(crate) fn parse_header(bytes: &[u8]) -> std::result::Result<Header, String> 
                     list: None,
                 });
             }
-            _ => return Err(format!("unexpected header line '{line}'")),
+            _ => {
+                return Err(format!(
+                    "unexpected header line {line}",
+                    line = crate::error::quote(line)
+                ))
+            }
         }
     }
     Ok(Header {
@@ -177,7 +191,12 @@ pub(crate) fn parse_header(bytes: &[u8]) -> std::result::Result<Header, String> 
 }
 
 fn scalar(name: &str) -> std::result::Result<Scalar, String> {
-    Scalar::parse(name).ok_or_else(|| format!("unknown property type '{name}'"))
+    Scalar::parse(name).ok_or_else(|| {
+        format!(
+            "unknown property type {name}",
+            name = crate::error::quote(name)
+        )
+    })
 }
 
 /// Offset of the line that is exactly `line` (allowing CR LF and surrounding blanks).

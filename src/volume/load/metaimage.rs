@@ -63,7 +63,12 @@ pub fn parse_metaimage(bytes: &[u8], path: &Path) -> Result<Volume> {
             crate::file::MAX_TEXT_BYTES,
             "the MetaImage limit",
         )
-        .map_err(|e| err(format!("ElementDataFile '{name}': {e}")))?;
+        .map_err(|e| {
+            err(format!(
+                "ElementDataFile {name}: {e}",
+                name = crate::error::quote(name)
+            ))
+        })?;
         &external
     };
     let mut payload = Vec::new();
@@ -77,10 +82,9 @@ pub fn parse_metaimage(bytes: &[u8], path: &Path) -> Result<Volume> {
     }
     if (payload.len() as u64) < expected {
         return Err(err(format!(
-            "truncated: {} bytes of voxels, {:?} {:?} need {expected}",
+            "truncated: {} bytes of voxels, {} need {expected}",
             payload.len(),
-            header.dims,
-            header.kind
+            super::samples(header.dims, header.kind)
         )));
     }
     let samples = decode(&payload, header.kind, header.big_endian);
@@ -118,26 +122,35 @@ fn parse_header(bytes: &[u8]) -> std::result::Result<(Header, usize), String> {
             let v: Vec<f64> = value
                 .split_whitespace()
                 .map(|s| {
-                    s.parse::<f64>()
-                        .map_err(|_| format!("{key}: '{value}' is not numbers"))
+                    s.parse::<f64>().map_err(|_| {
+                        format!(
+                            "{key}: {value} is not numbers",
+                            value = crate::error::quote(value)
+                        )
+                    })
                 })
                 .collect::<std::result::Result<_, _>>()?;
             if v.len() < n || v.iter().any(|x| !x.is_finite()) {
-                return Err(format!("{key}: '{value}' needs {n} finite numbers"));
+                return Err(format!(
+                    "{key}: {value} needs {n} finite numbers",
+                    value = crate::error::quote(value)
+                ));
             }
             Ok(v)
         };
         let boolean = || value.eq_ignore_ascii_case("true") || value == "1";
         match key {
             "ObjectType" if !value.eq_ignore_ascii_case("Image") => {
-                return Err(format!("ObjectType {value}: only images are volumes"));
+                return Err(format!(
+                    "ObjectType {}: only images are volumes",
+                    crate::error::quote(value)
+                ));
             }
             "NDims" => {
-                ndims = Some(
-                    value
-                        .parse::<usize>()
-                        .map_err(|_| format!("NDims '{value}'"))?,
-                )
+                ndims =
+                    Some(value.parse::<usize>().map_err(|_| {
+                        format!("NDims {value}", value = crate::error::quote(value))
+                    })?)
             }
             "DimSize" => dims = Some(numbers(ndims.unwrap_or(3).min(3))?),
             "ElementSpacing" | "ElementSize" if spacing.is_none() || key == "ElementSpacing" => {
@@ -147,10 +160,16 @@ fn parse_header(bytes: &[u8]) -> std::result::Result<(Header, usize), String> {
             "ElementByteOrderMSB" | "BinaryDataByteOrderMSB" => big_endian = boolean(),
             "CompressedData" => compressed = boolean(),
             "ElementNumberOfChannels" if value != "1" => {
-                return Err(format!("{value} channels per voxel: scalar volumes only"));
+                return Err(format!(
+                    "{} channels per voxel: scalar volumes only",
+                    crate::error::quote(value)
+                ));
             }
             "HeaderSize" if value != "0" => {
-                return Err(format!("HeaderSize {value}: a header skip is not read"));
+                return Err(format!(
+                    "HeaderSize {}: a header skip is not read",
+                    crate::error::quote(value)
+                ));
             }
             // 2D images carry 4 numbers: used only as 3D's 9.
             "TransformMatrix" | "Rotation" | "Orientation" => {
@@ -219,8 +238,9 @@ fn element_type(name: &str) -> std::result::Result<SampleType, String> {
         "MET_DOUBLE" => SampleType::F64,
         other => {
             return Err(format!(
-                "ElementType {other} is not read (MET_UCHAR, MET_CHAR, MET_USHORT, MET_SHORT, \
-                 MET_UINT, MET_INT, MET_FLOAT, MET_DOUBLE are)"
+                "ElementType {} is not read (MET_UCHAR, MET_CHAR, MET_USHORT, MET_SHORT, \
+                 MET_UINT, MET_INT, MET_FLOAT, MET_DOUBLE are)",
+                crate::error::quote(other)
             ))
         }
     })

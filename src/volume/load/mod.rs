@@ -66,8 +66,23 @@ impl SampleType {
         }
     }
 
+    /// The short name ([`SampleType::parse`] reads it): `u8` … `f64`.
+    pub fn name(self) -> &'static str {
+        match self {
+            SampleType::U8 => "u8",
+            SampleType::I8 => "i8",
+            SampleType::U16 => "u16",
+            SampleType::I16 => "i16",
+            SampleType::U32 => "u32",
+            SampleType::I32 => "i32",
+            SampleType::F32 => "f32",
+            SampleType::F64 => "f64",
+        }
+    }
+
     /// Parse a name: u8 uint8 uchar "unsigned char", i8 int8 char, u16 uint16 ushort, i16 int16
-    /// short, u32 uint32 uint, i32 int32 int, f32 float, f64 double (NRRD spellings included).
+    /// short, u32 uint32 uint, i32 int32 int, f32 float float32, f64 double float64 (NRRD
+    /// spellings included; `float32` as `uint8` … `int32` spell the others).
     pub fn parse(name: &str) -> Option<Self> {
         Some(match name.trim().to_ascii_lowercase().as_str() {
             "u8" | "uint8" | "uchar" | "unsigned char" | "uint8_t" => SampleType::U8,
@@ -79,11 +94,22 @@ impl SampleType {
             | "int16_t" => SampleType::I16,
             "u32" | "uint32" | "uint" | "unsigned int" | "uint32_t" => SampleType::U32,
             "i32" | "int32" | "int" | "signed int" | "int32_t" => SampleType::I32,
-            "f32" | "float" => SampleType::F32,
-            "f64" | "double" => SampleType::F64,
+            "f32" | "float" | "float32" => SampleType::F32,
+            "f64" | "double" | "float64" => SampleType::F64,
             _ => return None,
         })
     }
+}
+
+/// `dims` × `kind` as a message says them, e.g. `2x2x2 f32 samples`.
+pub(crate) fn samples(dims: [u32; 3], kind: SampleType) -> String {
+    format!(
+        "{}x{}x{} {} samples",
+        dims[0],
+        dims[1],
+        dims[2],
+        kind.name()
+    )
 }
 
 /// Decode `bytes` (exactly `count` samples) to f32.

@@ -42,8 +42,8 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
     let magic = lines.next().unwrap_or("");
     if !magic.starts_with("NRRD000") {
         return Err(err(format!(
-            "not a NRRD file (first line '{}')",
-            magic.chars().take(20).collect::<String>()
+            "not a NRRD file (its first line is {}, not 'NRRD0001' … 'NRRD0005')",
+            crate::error::quote(magic)
         )));
     }
     let (mut kind, mut dims, mut dimension) = (None, None, None);
@@ -63,22 +63,32 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
         let value = value.trim_start_matches('=').trim();
         match key.trim().to_ascii_lowercase().as_str() {
             "type" => {
-                kind = Some(
-                    SampleType::parse(value)
-                        .ok_or_else(|| err(format!("unsupported type '{value}'")))?,
-                )
+                kind = Some(SampleType::parse(value).ok_or_else(|| {
+                    err(format!(
+                        "unsupported type {value}",
+                        value = crate::error::quote(value)
+                    ))
+                })?)
             }
             "dimension" => {
-                dimension = Some(
-                    value
-                        .parse::<u32>()
-                        .map_err(|_| err(format!("bad dimension '{value}'")))?,
-                )
+                dimension = Some(value.parse::<u32>().map_err(|_| {
+                    err(format!(
+                        "bad dimension {value}",
+                        value = crate::error::quote(value)
+                    ))
+                })?)
             }
             "sizes" => {
                 let v: Vec<u32> = value
                     .split_whitespace()
-                    .map(|s| s.parse().map_err(|_| err(format!("bad sizes '{value}'"))))
+                    .map(|s| {
+                        s.parse().map_err(|_| {
+                            err(format!(
+                                "bad sizes {value}",
+                                value = crate::error::quote(value)
+                            ))
+                        })
+                    })
                     .collect::<Result<_>>()?;
                 dims = Some(v);
             }
@@ -88,8 +98,12 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
                 let v: Vec<f32> = value
                     .split_whitespace()
                     .map(|s| {
-                        s.parse()
-                            .map_err(|_| err(format!("bad spacings '{value}'")))
+                        s.parse().map_err(|_| {
+                            err(format!(
+                                "bad spacings {value}",
+                                value = crate::error::quote(value)
+                            ))
+                        })
                     })
                     .collect::<Result<_>>()?;
                 spacing = Some(v);
@@ -105,9 +119,12 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
                             .trim_start_matches('(')
                             .split(',')
                             .map(|c| {
-                                c.trim()
-                                    .parse::<f32>()
-                                    .map_err(|_| err(format!("bad space directions '{value}'")))
+                                c.trim().parse::<f32>().map_err(|_| {
+                                    err(format!(
+                                        "bad space directions {value}",
+                                        value = crate::error::quote(value)
+                                    ))
+                                })
                             })
                             .collect::<Result<_>>()?;
                         Ok(comps)
@@ -123,9 +140,12 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
             "space" => space = Some(value.to_string()),
             "data file" | "datafile" => data_file = Some(value.to_string()),
             "byte skip" | "byteskip" => {
-                byte_skip = value
-                    .parse()
-                    .map_err(|_| err(format!("unsupported byte skip '{value}'")))?
+                byte_skip = value.parse().map_err(|_| {
+                    err(format!(
+                        "unsupported byte skip {value}",
+                        value = crate::error::quote(value)
+                    ))
+                })?
             }
             _ => {}
         }
@@ -155,7 +175,12 @@ fn parse_header(path: &Path, text: &str) -> Result<Header> {
         Some("big") => true,
         Some("little") | None if kind.size() == 1 || endian.is_some() => false,
         None => return Err(err("missing field 'endian' for multi-byte samples".into())),
-        Some(other) => return Err(err(format!("unknown endian '{other}'"))),
+        Some(other) => {
+            return Err(err(format!(
+                "unknown endian {other}",
+                other = crate::error::quote(other)
+            )))
+        }
     };
     let spacing = match spacing {
         None => [1.0; 3],
@@ -268,8 +293,8 @@ pub fn parse_nrrd(bytes: &[u8], path: &Path) -> Result<Volume> {
         return Err(format_error(
             path,
             format!(
-                "truncated data: {available} bytes, {:?} {:?} samples need {expected}",
-                header.dims, header.kind
+                "truncated data: {available} bytes, {} need {expected}",
+                super::samples(header.dims, header.kind)
             ),
         ));
     }

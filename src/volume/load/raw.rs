@@ -97,10 +97,9 @@ fn check_length(path: &Path, spec: &RawSpec, actual: u64, needed: u64) -> Result
     Err(format_error(
         path,
         format!(
-            "{} bytes, but {:?} {:?} samples after a {}-byte header need {needed}{}",
+            "{} bytes, but {} after a {}-byte header need {needed}{}",
             actual,
-            spec.dims,
-            spec.kind,
+            super::samples(spec.dims, spec.kind),
             spec.header_bytes,
             if actual < needed { " (truncated?)" } else { "" }
         ),

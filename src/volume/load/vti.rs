@@ -260,12 +260,22 @@ impl<'a> State<'a> {
         self.layout.big_endian = match attribute(e, "byte_order")?.as_deref() {
             None | Some("LittleEndian") => false,
             Some("BigEndian") => true,
-            Some(other) => return Err(format!("byte_order '{other}': LittleEndian or BigEndian")),
+            Some(other) => {
+                return Err(format!(
+                    "byte_order {other}: LittleEndian or BigEndian",
+                    other = crate::error::quote(other)
+                ))
+            }
         };
         self.layout.header64 = match attribute(e, "header_type")?.as_deref() {
             None | Some("UInt32") => false,
             Some("UInt64") => true,
-            Some(other) => return Err(format!("header_type '{other}': UInt32 or UInt64")),
+            Some(other) => {
+                return Err(format!(
+                    "header_type {other}: UInt32 or UInt64",
+                    other = crate::error::quote(other)
+                ))
+            }
         };
         self.layout.zlib = match attribute(e, "compressor")?.as_deref() {
             None | Some("") => false,
@@ -286,10 +296,13 @@ impl<'a> State<'a> {
         let name = attribute(e, "Name")?.unwrap_or_default();
         let components = match attribute(e, "NumberOfComponents")? {
             None => 1,
-            Some(v) => v
-                .trim()
-                .parse::<u64>()
-                .map_err(|_| format!("DataArray '{name}': NumberOfComponents '{v}'"))?,
+            Some(v) => v.trim().parse::<u64>().map_err(|_| {
+                format!(
+                    "DataArray {name}: NumberOfComponents {v}",
+                    name = crate::error::quote(&name),
+                    v = crate::error::quote(v)
+                )
+            })?,
         };
         let chosen = self.chosen.is_none()
             && match &self.scalars {
@@ -306,7 +319,7 @@ impl<'a> State<'a> {
             return Err(multi_component(&name, components));
         }
         let kind = array_type(&attribute(e, "type")?.unwrap_or_default())
-            .map_err(|m| format!("DataArray '{name}': {m}"))?;
+            .map_err(|m| format!("DataArray {name}: {m}", name = crate::error::quote(&name)))?;
         let format = match attribute(e, "format")?.as_deref() {
             None | Some("ascii") => Format::Ascii,
             Some("binary") => Format::Binary,
@@ -318,12 +331,18 @@ impl<'a> State<'a> {
             }
         };
         let offset = match (format, attribute(e, "offset")?) {
-            (Format::Appended, Some(v)) => v
-                .trim()
-                .parse::<usize>()
-                .map_err(|_| format!("DataArray '{name}': offset '{v}'"))?,
+            (Format::Appended, Some(v)) => v.trim().parse::<usize>().map_err(|_| {
+                format!(
+                    "DataArray {name}: offset {v}",
+                    name = crate::error::quote(&name),
+                    v = crate::error::quote(v)
+                )
+            })?,
             (Format::Appended, None) => {
-                return Err(format!("DataArray '{name}': appended without an offset"))
+                return Err(format!(
+                    "DataArray {name}: appended without an offset",
+                    name = crate::error::quote(&name)
+                ))
             }
             _ => 0,
         };
@@ -352,7 +371,10 @@ impl<'a> State<'a> {
             return Err(if self.point_arrays == 0 && self.cell_arrays > 0 {
                 "CellData only: cell values are not read (a volume's values are PointData)".into()
             } else if let Some(scalars) = &self.scalars {
-                format!("PointData Scalars '{scalars}' names no DataArray")
+                format!(
+                    "PointData Scalars {scalars} names no DataArray",
+                    scalars = crate::error::quote(scalars)
+                )
             } else if let Some((name, components)) = &self.first_multi {
                 multi_component(name, *components)
             } else {
@@ -392,7 +414,10 @@ impl<'a> State<'a> {
 }
 
 fn multi_component(name: &str, components: u64) -> String {
-    format!("PointData array '{name}' has {components} components: scalar volumes only")
+    format!(
+        "PointData array {name} has {components} components: scalar volumes only",
+        name = crate::error::quote(name)
+    )
 }
 
 fn join(pieces: Vec<Cow<'_, [u8]>>) -> Cow<'_, [u8]> {
@@ -424,11 +449,21 @@ fn numbers<const N: usize>(what: &str, value: &str) -> Res<[f64; N]> {
         .split_whitespace()
         .map(str::parse::<f64>)
         .collect::<std::result::Result<_, _>>()
-        .map_err(|_| format!("{what} '{value}': not numbers"))?;
+        .map_err(|_| {
+            format!(
+                "{what} {value}: not numbers",
+                value = crate::error::quote(value)
+            )
+        })?;
     v.try_into()
         .ok()
         .filter(|v: &[f64; N]| v.iter().all(|x| x.is_finite()))
-        .ok_or_else(|| format!("{what} '{value}': needs {N} finite numbers"))
+        .ok_or_else(|| {
+            format!(
+                "{what} {value}: needs {N} finite numbers",
+                value = crate::error::quote(value)
+            )
+        })
 }
 
 /// `x0 x1 y0 y1 z0 z1`, each end at or past its start.
@@ -437,10 +472,19 @@ fn extent(what: &str, value: &str) -> Res<[i64; 6]> {
         .split_whitespace()
         .map(str::parse::<i64>)
         .collect::<std::result::Result<_, _>>()
-        .map_err(|_| format!("{what} '{value}': not whole numbers"))?;
-    let e: [i64; 6] = v
-        .try_into()
-        .map_err(|v: Vec<i64>| format!("{what} '{value}': {} numbers, 6 needed", v.len()))?;
+        .map_err(|_| {
+            format!(
+                "{what} {value}: not whole numbers",
+                value = crate::error::quote(value)
+            )
+        })?;
+    let e: [i64; 6] = v.try_into().map_err(|v: Vec<i64>| {
+        format!(
+            "{what} {value}: {} numbers, 6 needed",
+            v.len(),
+            value = crate::error::quote(value)
+        )
+    })?;
     // Bounded, so that end − start + 1 cannot overflow.
     let bound = 1i64 << 40;
     if e.iter().any(|x| x.abs() > bound) || (0..3).any(|a| e[2 * a + 1] < e[2 * a]) {
@@ -520,8 +564,8 @@ pub(super) fn ascii_values(text: &[u8], n: usize) -> Res<Vec<f32>> {
             .ok()
             .and_then(|s| s.parse::<f64>().ok())
             .ok_or_else(|| {
-                let shown = String::from_utf8_lossy(&token[..token.len().min(24)]).into_owned();
-                format!("'{shown}' is not a number")
+                let shown = crate::error::quote(String::from_utf8_lossy(token));
+                format!("{shown} is not a number")
             })?;
         values.push(value as f32);
     }

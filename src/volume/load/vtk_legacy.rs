@@ -33,11 +33,10 @@ pub fn parse_vtk(bytes: &[u8], path: &Path) -> Result<Volume> {
     let samples = if header.binary {
         if (data.len() as u64) < expected {
             return Err(err(format!(
-                "truncated: {} bytes of SCALARS {}, {:?} {:?} need {expected}",
+                "truncated: {} bytes of SCALARS {}, {} need {expected}",
                 data.len(),
                 header.name,
-                header.dims,
-                header.kind
+                super::samples(header.dims, header.kind)
             )));
         }
         decode(&data[..expected as usize], header.kind, true)
@@ -108,7 +107,12 @@ impl<'a> Cursor<'a> {
                 .parse::<f64>()
                 .ok()
                 .filter(|x| x.is_finite())
-                .ok_or_else(|| format!("{keyword}: '{word}' is not a number ({N} needed)"))?;
+                .ok_or_else(|| {
+                    format!(
+                        "{keyword}: {word} is not a number ({N} needed)",
+                        word = crate::error::quote(word)
+                    )
+                })?;
         }
         Ok(v)
     }
@@ -118,20 +122,28 @@ fn parse_header(bytes: &[u8]) -> Res<Header> {
     let mut c = Cursor { bytes, at: 0 };
     let first = c.line();
     if !first.starts_with(b"# vtk DataFile") {
-        let shown = String::from_utf8_lossy(&first[..first.len().min(30)]).into_owned();
+        let shown = crate::error::quote(String::from_utf8_lossy(first));
         return Err(format!(
-            "not a legacy VTK file (first line '{shown}', not '# vtk DataFile Version …')"
+            "not a legacy VTK file (its first line is {shown}, not '# vtk DataFile Version …')"
         ));
     }
     c.line(); // the title
     let binary = match c.word()?.to_ascii_uppercase().as_str() {
         "ASCII" => false,
         "BINARY" => true,
-        other => return Err(format!("'{other}' on the third line: ASCII or BINARY")),
+        other => {
+            return Err(format!(
+                "{other} on the third line: ASCII or BINARY",
+                other = crate::error::quote(other)
+            ))
+        }
     };
     let keyword = c.word()?;
     if !keyword.eq_ignore_ascii_case("DATASET") {
-        return Err(format!("'{keyword}' where DATASET belongs"));
+        return Err(format!(
+            "{keyword} where DATASET belongs",
+            keyword = crate::error::quote(keyword)
+        ));
     }
     let dataset = c.word()?.to_ascii_uppercase();
     let what = match dataset.as_str() {
@@ -168,7 +180,12 @@ fn parse_header(bytes: &[u8]) -> Res<Header> {
                 return Err("CELL_DATA: cell values are not read (POINT_DATA SCALARS are)".into())
             }
             "" => return Err("no POINT_DATA (no voxel values)".into()),
-            other => return Err(format!("'{other}' in STRUCTURED_POINTS is not read")),
+            other => {
+                return Err(format!(
+                    "{other} in STRUCTURED_POINTS is not read",
+                    other = crate::error::quote(other)
+                ))
+            }
         }
     };
     let dims = dims.ok_or("missing DIMENSIONS")?;

@@ -3,7 +3,7 @@
 
 use super::pipelines::{Layouts, TRIANGLE_ID_FORMAT};
 use super::Visibility;
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::frame::Frame;
 use crate::gpu::check_size_2d;
 use crate::mesh::MeshBuffers;
@@ -82,7 +82,15 @@ impl Scratch {
                 )?;
             }
             Visibility::Exact => {
-                // K·W subpixel columns: a wide frame can pass the size check and fail here.
+                // K·W subpixel columns: a wide frame can pass the size check and fail here,
+                // said in the frame's pixels (the caller's), not in the columns.
+                Error::check_subpixel_width(
+                    device,
+                    frame.size,
+                    k,
+                    "Visibility::Exact",
+                    "Visibility::Fast, or Visibility::Compute where the adapter has 64-bit atomics",
+                )?;
                 let wide = [w.saturating_mul(k), h];
                 check_size_2d(device, wide[0], wide[1])?;
                 cached_texture_2d(
