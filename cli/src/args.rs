@@ -41,17 +41,29 @@ pub fn parse_view_scale(s: &str) -> Result<f32, String> {
     }
 }
 
-/// `A,B` → [a, b].
-pub fn parse_pair(s: &str) -> Result<[u32; 2], String> {
+/// `A,B` → [a, b] of `T`; errors say `names` (e.g. "A,B") and `numbers`, what they must be.
+fn parse_two<T: std::str::FromStr>(s: &str, names: &str, numbers: &str) -> Result<[T; 2], String> {
     let (a, b) = s
         .split_once(',')
-        .ok_or_else(|| format!("'{s}' is not A,B"))?;
+        .ok_or_else(|| format!("'{s}' is not {names}"))?;
     let parse = |v: &str| {
         v.trim()
-            .parse::<u32>()
-            .map_err(|_| format!("'{s}' is not two whole numbers A,B"))
+            .parse::<T>()
+            .map_err(|_| format!("'{s}' is not {numbers}"))
     };
     Ok([parse(a)?, parse(b)?])
+}
+
+/// `A,B` → [a, b], whole numbers ≥ 0.
+pub fn parse_pair(s: &str) -> Result<[u32; 2], String> {
+    parse_two(s, "A,B", "two whole numbers A,B")
+}
+
+/// A point X,Y in pixels, either negative: a virtual desktop (X11, Wayland, Windows) puts a
+/// monitor left of or above the primary at negative coordinates, and a window's origin on a
+/// panel is negative where the window starts left of or above it (`--origin`, `--position`).
+pub fn parse_point(s: &str) -> Result<[i32; 2], String> {
+    parse_two(s, "X,Y", "two whole numbers X,Y (negative allowed)")
 }
 
 /// Display selection flags.
@@ -71,7 +83,7 @@ pub struct DisplayArgs {
     /// above the panel (`--origin -100,20`). `view` adds the window's position on the screen:
     /// there it is minus the panel's (`--origin -1920,0` for a panel right of a 1920-wide
     /// monitor).
-    #[arg(long, value_name = "X,Y", value_parser = crate::view::parse_point, default_value = "0,0", allow_hyphen_values = true)]
+    #[arg(long, value_name = "X,Y", value_parser = parse_point, default_value = "0,0", allow_hyphen_values = true)]
     pub origin: [i32; 2],
     /// Reverse the view order.
     #[arg(long)]

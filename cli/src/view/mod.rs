@@ -95,7 +95,7 @@ pub struct ViewArgs {
     size: [u32; 2],
     /// Window position X,Y on the screen (the mask's origin follows it); negative on a
     /// monitor left of or above the primary (`--position -1920,0`).
-    #[arg(long, value_name = "X,Y", value_parser = parse_point, allow_hyphen_values = true, help_heading = "Window")]
+    #[arg(long, value_name = "X,Y", value_parser = crate::args::parse_point, allow_hyphen_values = true, help_heading = "Window")]
     position: Option<[i32; 2]>,
     /// Full screen on monitor MONITOR (0 = the first; default 0).
     #[arg(long, num_args = 0..=1, default_missing_value = "0", help_heading = "Window")]
@@ -144,21 +144,6 @@ pub struct ViewArgs {
     exercise_switch: Vec<Switch>,
 }
 
-/// A point X,Y in pixels, either negative: a virtual desktop (X11, Wayland, Windows) puts a
-/// monitor left of or above the primary at negative coordinates, and a window's origin on a
-/// panel is negative where the window starts left of or above it (`--origin`, `--position`).
-pub fn parse_point(s: &str) -> Result<[i32; 2], String> {
-    let (a, b) = s
-        .split_once(',')
-        .ok_or_else(|| format!("'{s}' is not X,Y"))?;
-    let parse = |v: &str| {
-        v.trim()
-            .parse::<i32>()
-            .map_err(|_| format!("'{s}' is not two whole numbers X,Y (negative allowed)"))
-    };
-    Ok([parse(a)?, parse(b)?])
-}
-
 fn parse_move(s: &str) -> Result<(u32, [i32; 2]), String> {
     let (frame, at) = s
         .split_once(':')
@@ -167,7 +152,7 @@ fn parse_move(s: &str) -> Result<(u32, [i32; 2]), String> {
         .trim()
         .parse()
         .map_err(|_| format!("'{s}': K is not a whole number"))?;
-    Ok((frame, parse_point(at)?))
+    Ok((frame, crate::args::parse_point(at)?))
 }
 
 impl ViewArgs {
