@@ -44,3 +44,80 @@ fn display_spec_errors_name_the_flag_and_what_is_wrong() {
         assert!(!stderr.contains("panicked"), "{stderr}");
     }
 }
+
+/// The viewer's quilt preview showed 45 views on a 7×7 grid while `--output quilt` wrote
+/// another (6×8 for tiles of 300×240): both now take the grid from one function. Tile 44 of
+/// the preview (its place differs between the two grids) is view 44 rendered alone.
+#[test]
+fn the_quilt_preview_uses_the_grid_the_quilt_output_writes() {
+    let Some(x) = xvfb_or_clear_error() else {
+        return;
+    };
+    let dir = common::out_dir().join("vocabulary_view");
+    std::fs::create_dir_all(&dir).unwrap();
+    let quilt = dir.join("q.png");
+    let display = ["--display", "lenticular:45"];
+    let mut args = vec!["mesh", "--size", "300x240", "--output", "quilt", "--json"];
+    args.extend(display);
+    args.extend(["--out", quilt.to_str().unwrap()]);
+    let (ok, stderr) = common::cli(&args);
+    assert!(ok, "{stderr}");
+    let written = std::fs::read_dir(&dir)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .find(|n| n.starts_with("q_qs"))
+        .expect("the quilt written");
+    let (cols, rows, _) = autostereo::render::quilt::parse_quilt_name(&written).unwrap();
+    assert_eq!([cols, rows], [6, 8], "{written}");
+    let shot = dir.join("preview.png");
+    let mut args = vec![
+        "view",
+        "--kind",
+        "mesh",
+        "--preview",
+        "quilt",
+        "--size",
+        "300x240",
+    ];
+    args.extend(display);
+    args.extend([
+        "--quit-after-frames",
+        "2",
+        "--screenshot",
+        shot.to_str().unwrap(),
+    ]);
+    let (ok, _, err) = x.cli(&args);
+    assert!(ok, "{err}");
+    let preview = autostereo::image_io::RgbImage::load_png(&shot).unwrap();
+    // The window's tiles: 300/6 × 240/8 = 50×30; view 44 in column 44 mod 6, row 44 / 6 from
+    // the bottom.
+    let [tw, th] = [50u32, 30u32];
+    let layout = autostereo::render::quilt::QuiltLayout::with_grid(6, 8, [tw, th], 45).unwrap();
+    let [tx, ty] = layout.tile_origin(44);
+    let alone = dir.join("view44.png");
+    let (ok, err) = common::cli(&[
+        "mesh",
+        "--display",
+        "view:45,44",
+        "--size",
+        "50x30",
+        "--out",
+        alone.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    let tile = autostereo::image_io::RgbImage::load_png(&alone).unwrap();
+    let drawn = tile.data.chunks(3).filter(|p| p != &&tile.data[..3]).count();
+    assert!(drawn > 150, "view 44 shows the scene: {drawn} of 1500 pixels");
+    let mut off = 0;
+    for y in 0..th {
+        for x in 0..tw {
+            let q = (((ty + y) * 300 + tx + x) * 3) as usize;
+            let t = ((y * tw + x) * 3) as usize;
+            for c in 0..3 {
+                off += usize::from(preview.data[q + c].abs_diff(tile.data[t + c]) > 2);
+            }
+        }
+    }
+    assert!(off <= 9, "view 44: {off} of 4500 subpixels off its tile");
+}
