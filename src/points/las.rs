@@ -28,8 +28,14 @@ pub(super) fn load(path: &Path) -> Result<PointCloud> {
 /// Parse LAS or LAZ `bytes` (errors are plain reasons; [`load`] adds the path).
 pub fn parse(bytes: Vec<u8>) -> std::result::Result<PointCloud, String> {
     let size = bytes.len() as u64;
+    let mut bytes = bytes;
     // Every size the las and laz crates allocate from is checked against the file first.
-    check_sizes(&bytes)?;
+    if let Some(at) = check_sizes(&bytes)? {
+        // A point-wise LAZ file has no chunks, so no chunk size: LASzip 2.0 left it 0, which
+        // laz reads as variable-size chunks and then panics ("Variable-size chunks, but no
+        // chunk table"). LASzip ignores it, as laz does for any fixed size.
+        bytes[at..at + 4].copy_from_slice(&LASZIP_CHUNK_SIZE_DEFAULT.to_le_bytes());
+    }
     let mut reader = las::Reader::new(std::io::Cursor::new(bytes))
         .map_err(|e| format!("malformed LAS header: {e}"))?;
     let header = reader.header();
@@ -58,7 +64,7 @@ pub fn parse(bytes: Vec<u8>) -> std::result::Result<PointCloud, String> {
     while read < n {
         let batch = reader
             .read_points(batch_points.min(n - read))
-            .map_err(|e| format!("point {read}: {e}"))?;
+            .map_err(|e| point_error(read, n, e))?;
         if batch.is_empty() {
             return Err(format!("truncated: {read} of the header's {n} points"));
         }
@@ -82,6 +88,25 @@ pub fn parse(bytes: Vec<u8>) -> std::result::Result<PointCloud, String> {
         colors: colors.map(|c| scale_colors(&c)),
         radii: None,
     })
+}
+
+/// A decoding error at point `read` of `n`; the compressed data running out (the laz decoder
+/// reads past its end) said as such.
+fn point_error(read: u64, n: u64, e: las::Error) -> String {
+    let end = match &e {
+        las::Error::Io(io) | las::Error::LasZipError(laz::LasZipError::IoError(io)) => {
+            io.kind() == std::io::ErrorKind::UnexpectedEof
+        }
+        _ => false,
+    };
+    if end {
+        format!(
+            "point {read}: the point data ends before the header's {n} points (truncated or \
+             corrupt: {e})"
+        )
+    } else {
+        format!("point {read}: {e}")
+    }
 }
 
 /// LAS colours are 16-bit, but many writers store 8-bit values in them: a cloud whose channels
@@ -111,6 +136,8 @@ const LASZIP_RECORD_ID: u16 = 22204;
 /// same with a 64-bit length).
 const VLR_HEADER: u64 = 54;
 const EVLR_HEADER: u64 = 60;
+/// LASzip's default chunk size (points), written in place of a point-wise file's 0.
+const LASZIP_CHUNK_SIZE_DEFAULT: u32 = 50_000;
 /// What the laz decoder holds per extra byte of a record: an adaptive 256-symbol model
 /// (about 2.3 KiB) in each of 4 contexts.
 const LAZ_BYTES_PER_EXTRA_BYTE: u64 = 10 << 10;
@@ -134,11 +161,13 @@ fn u64_at(bytes: &[u8], at: u64) -> Option<u64> {
 }
 
 /// Check the sizes a LAS or LAZ file declares against its length (see above). What the las
-/// crate refuses cleanly by itself (a short header, a bad signature) is left to it.
-fn check_sizes(bytes: &[u8]) -> std::result::Result<(), String> {
+/// crate refuses cleanly by itself (a short header, a bad signature) is left to it. Gives the
+/// byte of a point-wise LAZ file's chunk size when it reads as variable (0 or `u32::MAX`), for
+/// [`parse`] to make it fixed.
+fn check_sizes(bytes: &[u8]) -> std::result::Result<Option<usize>, String> {
     let size = bytes.len() as u64;
     if bytes.len() < 227 || &bytes[..4] != b"LASF" {
-        return Ok(());
+        return Ok(None);
     }
     let field = |at: u64| u32_at(bytes, at).unwrap_or(0);
     let version = (bytes[24], bytes[25]);
@@ -159,7 +188,7 @@ fn check_sizes(bytes: &[u8]) -> std::result::Result<(), String> {
         let (Some(start), Some(count), Some(count_64)) =
             (u64_at(bytes, 235), u32_at(bytes, 243), u64_at(bytes, 247))
         else {
-            return Ok(());
+            return Ok(None);
         };
         if points == 0 {
             points = count_64;
@@ -198,7 +227,7 @@ fn check_sizes(bytes: &[u8]) -> std::result::Result<(), String> {
             && user == LASZIP_USER_ID
             && u16_at(bytes, at + 18) == Some(LASZIP_RECORD_ID)
         {
-            laszip = Some(&bytes[data as usize..(data + len) as usize]);
+            laszip = Some((data, &bytes[data as usize..(data + len) as usize]));
         }
         at = data + len;
     }
@@ -213,8 +242,15 @@ fn check_sizes(bytes: &[u8]) -> std::result::Result<(), String> {
              but the file has {size} bytes"
         ));
     }
+    let mut pointwise_chunk_size = None;
     if compressed {
-        check_laz(bytes, laszip, offset, points, record)?;
+        check_laz(bytes, laszip.map(|(_, vlr)| vlr), offset, points, record)?;
+        // A point-wise compressor (1) and a chunk size laz reads as variable.
+        if let Some((data, vlr)) = laszip {
+            if u16_at(vlr, 0) == Some(1) && matches!(u32_at(vlr, 12), Some(0 | u32::MAX)) {
+                pointwise_chunk_size = Some(data as usize + 12);
+            }
+        }
     }
     // The EVLRs (las 0.11 reads the first), each header and length in the file.
     if let Some((start, count)) = evlrs {
@@ -240,7 +276,7 @@ fn check_sizes(bytes: &[u8]) -> std::result::Result<(), String> {
             at = data + len;
         }
     }
-    Ok(())
+    Ok(pointwise_chunk_size)
 }
 
 /// A LAZ file's laszip VLR, chunk table header and layered chunk headers, and the memory its
@@ -403,6 +439,8 @@ fn check_laz(
         // Fixed-size chunks: as many as the points need. Variable ones: those before the table
         // (laz follows the table's point counts).
         let (per_chunk, end) = match chunk_size {
+            // Point-wise (compressor 1): one chunk of all the points, whatever the size says.
+            _ if compressor == 1 => (points, size),
             0 | u32::MAX => (1, table_at.unwrap_or(0)),
             n => (u64::from(n), size),
         };
@@ -623,6 +661,67 @@ mod tests {
         refused(
             bytes,
             "lists 1 chunks of at most 200 points each, but the header counts 300",
+        );
+    }
+
+    /// `good` (a LAZ file of one chunk, LAS 1.2) as LASzip 2.0 wrote a point-wise file:
+    /// compressor 1 and `chunk_size` in the laszip VLR, the points one arithmetic-coded stream
+    /// from the point offset (no chunk table offset, no table).
+    fn pointwise(good: &[u8], chunk_size: u32) -> Vec<u8> {
+        let data = u64::from(u32_at(good, 96).unwrap());
+        let table = u64_at(good, data).unwrap();
+        let mut bytes = [
+            &good[..data as usize],
+            &good[data as usize + 8..table as usize],
+        ]
+        .concat();
+        let vlr = 227 + VLR_HEADER + 10 + VLR_HEADER;
+        put(&mut bytes, vlr, &1u16.to_le_bytes());
+        put(&mut bytes, vlr + 12, &chunk_size.to_le_bytes());
+        bytes
+    }
+
+    #[test]
+    fn pointwise_laz_with_a_variable_chunk_size_is_read() {
+        // LASzip 2.0 left a point-wise file's chunk size 0 (it has no chunks); laz reads 0 and
+        // u32::MAX as variable-size chunks, has no chunk table to follow and panicked ("Variable-
+        // size chunks, but no chunk table", the fuzzer's file). The size is made fixed first.
+        let good = cloud((1, 2), 3, true);
+        let expected = parse(good.clone()).unwrap();
+        for chunk_size in [0, u32::MAX, 50_000, 7] {
+            let bytes = pointwise(&good, chunk_size);
+            let vlr = 227 + VLR_HEADER + 10 + VLR_HEADER;
+            let patch = matches!(chunk_size, 0 | u32::MAX).then_some(vlr as usize + 12);
+            assert_eq!(
+                check_sizes(&bytes).unwrap(),
+                patch,
+                "chunk size {chunk_size}"
+            );
+            let cloud = parse(bytes).unwrap();
+            assert_eq!(
+                cloud.positions, expected.positions,
+                "chunk size {chunk_size}"
+            );
+            assert_eq!(cloud.colors, expected.colors, "chunk size {chunk_size}");
+        }
+        // The fuzzer's file (505 bytes, 40 points of format 2, compressor 1, chunk size 0): the
+        // decoder's error, not a panic.
+        let regression = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("fuzz/regressions/las/laz_pointwise_variable_chunks.laz");
+        let bytes = std::fs::read(regression).unwrap();
+        assert!(check_sizes(&bytes).unwrap().is_some());
+        let e = parse(bytes).err().unwrap();
+        assert!(
+            e.contains("point 0: the point data ends before the header's 40 points"),
+            "{e}"
+        );
+        // A point-wise stream cut short, the same.
+        let mut bytes = pointwise(&good, 0);
+        bytes.truncate(bytes.len() - 2000);
+        let e = parse(bytes).err().unwrap();
+        assert!(
+            e.contains("the point data ends before the header's 300 points"),
+            "{e}"
         );
     }
 

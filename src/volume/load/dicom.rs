@@ -598,8 +598,10 @@ fn check_lengths(bytes: &[u8], whole: bool) -> std::result::Result<(), String> {
     let Some(ts) = transfer_syntax else {
         return Ok(()); // refused by dicom-object
     };
+    // Trimmed as dicom-object trims it (any whitespace and NULs: a UID padded with a newline
+    // is implicit VR little endian to it, and was "unknown" to a scan that trimmed spaces).
     let ts = String::from_utf8_lossy(ts);
-    let ts = ts.trim_end_matches(['\0', ' ']);
+    let ts = ts.trim_end_matches(|c: char| c.is_whitespace() || c == '\0');
     let explicit = match ts {
         "1.2.840.10008.1.2" => false,
         "1.2.840.10008.1.2.2" => {
@@ -874,6 +876,60 @@ mod tests {
             &[name(), explicit((0x0028, 0x0011), b"US", 2, &[6, 0])].concat(),
         );
         check_lengths(&bytes, true).unwrap();
+    }
+
+    #[test]
+    fn a_transfer_syntax_padded_with_whitespace_is_scanned() {
+        // dicom-object trims a transfer syntax UID's trailing whitespace and NULs: the fuzzer's
+        // "1.2.840.10008.1.2\n\0\0" is implicit VR little endian to it, but the scan trimmed
+        // only spaces and NULs, took it for a syntax dicom-object refuses and stopped, and
+        // dicom-parser zero-filled an implicit UL of 822 MB (out of memory at -rss_limit_mb
+        // 4096 while fuzzing) or an unknown element of 0xABABABAB bytes (2.9 GB, 19 s).
+        for padded in [
+            "1.2.840.10008.1.2\n",
+            "1.2.840.10008.1.2\r\n\0\0",
+            "1.2.840.10008.1.2\t ",
+        ] {
+            let bytes = file(
+                padded,
+                &[header((0x0010, 0x0010), 0xFFFF_FFF0), b"Doe ".to_vec()].concat(),
+            );
+            let e = check_lengths(&bytes, true).unwrap_err();
+            assert!(
+                e.contains("element (0010,0010)") && e.contains("4294967280"),
+                "{padded:?}: {e}"
+            );
+        }
+        // Explicit VR little endian padded the same way.
+        let bytes = file(
+            "1.2.840.10008.1.2.1\n",
+            &[
+                name(),
+                explicit((0x0040, 0xA160), b"UT", 0xFFFF_FFF0, b"abcd"),
+            ]
+            .concat(),
+        );
+        let e = check_lengths(&bytes, true).unwrap_err();
+        assert!(e.contains("element (0040,A160)"), "{e}");
+        // The fuzzer's files: refused by the scan, naming the file.
+        for (name, expected) in [
+            (
+                "ts_newline_padded_ul_800mb.dcm",
+                "(0000,0000) at byte 332 declares 822086656 bytes",
+            ),
+            (
+                "ts_newline_padded_un_2_9gb.dcm",
+                "declares 2880154539 bytes",
+            ),
+        ] {
+            let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("fuzz/regressions/dicom")
+                .join(name);
+            let e = parse_dicom(&std::fs::read(&path).unwrap(), &path)
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains(name) && e.contains(expected), "{e}");
+        }
     }
 
     #[test]
