@@ -21,6 +21,8 @@ pub struct InterleaveArgs {
     #[arg(long = "quilt", value_name = "COLSxROWS", value_parser = parse_size)]
     grid: Option<[u32; 2]>,
     #[command(flatten)]
+    memory: crate::args::MemoryArgs,
+    #[command(flatten)]
     display: DisplayArgs,
     /// Output size WxH (default: a Looking Glass calibration's panel, else one tile's size).
     #[arg(long, value_parser = parse_size)]
@@ -36,6 +38,7 @@ pub struct InterleaveArgs {
 
 pub fn run(args: InterleaveArgs) -> Result<()> {
     check_output(&args.out)?;
+    args.memory.apply();
     let display = args.display.display()?;
     let image = RgbImage::load(&args.quilt)?;
     let name = args

@@ -37,13 +37,13 @@ pub struct PointsArgs {
 #[derive(clap::Args, Clone, Debug, PartialEq)]
 pub struct PointFlags {
     /// ε of the ε-z compositing, as a fraction of the scene's depth extent (bounding diameter).
-    #[arg(long, default_value_t = autostereo::points::DEFAULT_EPSILON_FRACTION)]
+    #[arg(long, default_value_t = autostereo::points::DEFAULT_EPSILON_FRACTION, allow_negative_numbers = true)]
     epsilon: f32,
     /// Splat groups: `auto` (no overlap inside a group) or a fixed count K.
     #[arg(long, default_value = "auto", value_parser = parse_groups)]
     groups: GroupCount,
     /// Multiply every splat radius (given or estimated) by S.
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
     radius_scale: f32,
     /// Single-pass depth per group image: exact (per subpixel) or the paper's (per pixel).
     #[arg(long, value_enum, default_value = "exact")]

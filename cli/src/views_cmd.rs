@@ -13,6 +13,8 @@ pub struct ViewsArgs {
     /// The spatial (interleaved) PNG.
     spatial: PathBuf,
     #[command(flatten)]
+    memory: crate::args::MemoryArgs,
+    #[command(flatten)]
     display: DisplayArgs,
     /// Extract what an eye in view zone I sees.
     #[arg(long, value_name = "I", conflicts_with = "eyes")]
@@ -32,6 +34,7 @@ pub struct ViewsArgs {
 
 pub fn run(args: ViewsArgs) -> Result<()> {
     check_output(&args.out)?;
+    args.memory.apply();
     let display = args.display.display()?;
     let mask = display.mask();
     let n = mask.views();

@@ -299,6 +299,82 @@ fn budget_errors_name_max_memory_and_a_figure_it_takes() {
             .unwrap_or_else(|e| panic!("{command:?}: '{figure}' is no --max-memory: {e}"));
         assert!(bytes > 1024, "{command:?}: {figure}");
     }
+    // The commands that read an image take the budget too (they had no --max-memory), and the
+    // viewer (it loads any file).
+    let image = png("vocabulary_errors_budget_in.png", 32, 32);
+    let image = image.to_str().unwrap();
+    for args in [
+        vec![
+            "interleave",
+            image,
+            "--quilt",
+            "8x1",
+            "--max-memory",
+            "1K",
+            "--out",
+            target,
+        ],
+        vec![
+            "views",
+            image,
+            "--view",
+            "0",
+            "--max-memory",
+            "1K",
+            "--out",
+            target,
+        ],
+    ] {
+        let (ok, stderr) = cli(&args);
+        let text = error_text(&stderr);
+        assert!(
+            !ok && text.contains("memory budget of 1024 bytes"),
+            "{args:?}: {text}"
+        );
+        assert!(text.contains("--max-memory"), "{args:?}: {text}");
+    }
+    let (ok, stderr) = cli(&["view", "--max-memory", "1K", "--quit-after-frames", "1"]);
+    let text = error_text(&stderr);
+    assert!(
+        !ok && !text.contains("unexpected argument"),
+        "view --max-memory: {text}"
+    );
+}
+
+#[test]
+fn negative_point_flags_reach_their_own_check() {
+    // `--radius-scale -1` was clap's "unexpected argument '-1'".
+    for (flag, says) in [
+        ("--radius-scale", "radius scale"),
+        ("--epsilon", "--epsilon"),
+    ] {
+        let (ok, stderr) = cli(&["points", flag, "-1", "--json"]);
+        let text = error_text(&stderr);
+        assert!(
+            !ok && text.contains(says) && !text.contains("unexpected"),
+            "{text}"
+        );
+    }
+}
+
+#[test]
+fn a_lens_number_the_display_cannot_use_names_display() {
+    let (ok, stderr) = cli(&[
+        "mask",
+        "--display",
+        "slanted:8,0,0.2,0",
+        "--size",
+        "8x8",
+        "--out",
+        out("vocabulary_errors_pitch.png").to_str().unwrap(),
+    ]);
+    let text = error_text(&stderr);
+    assert!(!ok, "pitch 0 accepted");
+    assert!(
+        text.contains("--display slanted:8,0,0.2,0: invalid pitch: 0: the lens pitch must be"),
+        "{text}"
+    );
+    assert!(!text.contains("0.0000000002"), "{text}");
 }
 
 #[test]

@@ -107,8 +107,15 @@ fn the_quilt_preview_uses_the_grid_the_quilt_output_writes() {
     ]);
     assert!(ok, "{err}");
     let tile = autostereo::image_io::RgbImage::load_png(&alone).unwrap();
-    let drawn = tile.data.chunks(3).filter(|p| p != &&tile.data[..3]).count();
-    assert!(drawn > 150, "view 44 shows the scene: {drawn} of 1500 pixels");
+    let drawn = tile
+        .data
+        .chunks(3)
+        .filter(|p| p != &&tile.data[..3])
+        .count();
+    assert!(
+        drawn > 150,
+        "view 44 shows the scene: {drawn} of 1500 pixels"
+    );
     let mut off = 0;
     for y in 0..th {
         for x in 0..tw {

@@ -94,7 +94,17 @@ impl Display {
     /// Parse a SPEC string: `hubner8` | `lenticular:N` | `slanted:N,PITCH,SLANT,PHASE` | `lkg:PATH.json` | `view:N,V`.
     /// Numbers in `slanted` may be fractions (`2/3`).
     pub fn parse(spec: &str) -> Result<Self> {
-        Self::new(spec::parse_kind(spec)?)
+        let kind = spec::parse_kind(spec)?;
+        let from_file = matches!(kind, DisplayKind::LookingGlass { .. });
+        // A number in the spec itself that the display cannot use is the spec's error (a
+        // calibration file's keeps its own name).
+        Self::new(kind).map_err(|e| match (e, from_file) {
+            (Error::InvalidParameter { name, reason }, false) => Error::DisplaySpec {
+                spec: spec.to_string(),
+                reason: format!("invalid {name}: {reason}"),
+            },
+            (e, _) => e,
+        })
     }
 
     /// Number of views N.
@@ -279,7 +289,7 @@ fn check_slanted(pitch: f64, slant: f64, phase: f64) -> Result<()> {
     if !(pitch.is_finite() && pitch >= MIN_PITCH) {
         return Err(Error::invalid(
             "pitch",
-            format!("{pitch}: must be a finite number of subpixels, at least {MIN_PITCH}"),
+            format!("{pitch}: the lens pitch must be a positive, finite number of subpixels"),
         ));
     }
     for (name, v) in [("slant", slant), ("phase", phase)] {

@@ -90,6 +90,8 @@ pub struct ViewArgs {
     // Gaussian splat flags, as `autostereo gaussians` has them.
     #[command(flatten, next_help_heading = "Gaussians")]
     gaussians: crate::gaussians_cmd::GaussianFlags,
+    #[command(flatten)]
+    memory: crate::args::MemoryArgs,
     /// Window client-area size WxH in pixels.
     #[arg(long, value_parser = parse_size, default_value = "512x512", help_heading = "Window")]
     size: [u32; 2],
@@ -177,6 +179,7 @@ pub fn run(args: ViewArgs) -> Result<()> {
     if args.quit_after_frames == Some(0) {
         anyhow::bail!("--quit-after-frames 0: at least one frame");
     }
+    args.memory.apply();
     // Fail on a bad display or flags of another primitive before opening a window.
     args.display.display()?;
     args.scene_flags().check()?;
