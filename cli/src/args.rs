@@ -112,7 +112,19 @@ impl DisplayArgs {
 
     /// Build the display these flags describe.
     pub fn display(&self) -> Result<Display> {
-        let mut display = Display::parse(&self.display)?;
+        // A number in the spec itself that the display cannot use is --display's error (a
+        // calibration file's keeps the file's name).
+        let from_file = self
+            .display
+            .trim_start()
+            .to_ascii_lowercase()
+            .starts_with("lkg");
+        let mut display = Display::parse(&self.display).map_err(|e| match e {
+            autostereo::Error::InvalidParameter { name, reason } if !from_file => {
+                anyhow::anyhow!("--display {}: invalid {name}: {reason}", self.display)
+            }
+            e => e.into(),
+        })?;
         if let Some(n) = self.views {
             display = display.with_views(n)?;
         }

@@ -94,17 +94,7 @@ impl Display {
     /// Parse a SPEC string: `hubner8` | `lenticular:N` | `slanted:N,PITCH,SLANT,PHASE` | `lkg:PATH.json` | `view:N,V`.
     /// Numbers in `slanted` may be fractions (`2/3`).
     pub fn parse(spec: &str) -> Result<Self> {
-        let kind = spec::parse_kind(spec)?;
-        let from_file = matches!(kind, DisplayKind::LookingGlass { .. });
-        // A number in the spec itself that the display cannot use is the spec's error (a
-        // calibration file's keeps its own name).
-        Self::new(kind).map_err(|e| match (e, from_file) {
-            (Error::InvalidParameter { name, reason }, false) => Error::DisplaySpec {
-                spec: spec.to_string(),
-                reason: format!("invalid {name}: {reason}"),
-            },
-            (e, _) => e,
-        })
+        Self::new(spec::parse_kind(spec)?)
     }
 
     /// Number of views N.
