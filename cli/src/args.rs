@@ -54,9 +54,9 @@ fn parse_two<T: std::str::FromStr>(s: &str, names: &str, numbers: &str) -> Resul
     Ok([parse(a)?, parse(b)?])
 }
 
-/// `A,B` → [a, b], whole numbers ≥ 0.
-pub fn parse_pair(s: &str) -> Result<[u32; 2], String> {
-    parse_two(s, "A,B", "two whole numbers A,B")
+/// `--eyes L,R`: the left and right views.
+pub fn parse_eyes(s: &str) -> Result<[u32; 2], String> {
+    parse_two(s, "L,R", "two view numbers L,R")
 }
 
 /// A point X,Y in pixels, either negative: a virtual desktop (X11, Wayland, Windows) puts a
@@ -110,6 +110,23 @@ impl DisplayArgs {
         flags
     }
 
+    /// Refuse the flags that place the interleaved image on a panel (`--origin`,
+    /// `--flip-views`, `--bgr`) with an output that is not interleaved (`--output FORMAT`).
+    pub fn check_spatial_only(&self, format: &str) -> Result<()> {
+        let given = [
+            ("--origin", self.origin != [0, 0]),
+            ("--flip-views", self.flip_views),
+            ("--bgr", self.bgr),
+        ];
+        if let Some((flag, _)) = given.iter().find(|(_, set)| *set) {
+            bail!(
+                "{flag} places the interleaved image on the panel; --output {format} is made of \
+                 whole views and does not use it (drop it, or --output spatial)"
+            );
+        }
+        Ok(())
+    }
+
     /// Build the display these flags describe.
     pub fn display(&self) -> Result<Display> {
         // A number in the spec itself that the display cannot use is --display's error (a
@@ -149,6 +166,51 @@ pub fn gpu() -> Result<autostereo::gpu::GpuContext> {
     let ctx =
         autostereo::gpu::GpuContext::new(&Default::default()).context("setting up the GPU")?;
     Ok(ctx)
+}
+
+/// The values a flag group has when none of its flags is given (to tell a flag the user gave
+/// from its default).
+pub fn defaults_of<T: clap::Args + clap::FromArgMatches>() -> T {
+    let command = T::augment_args(clap::Command::new("defaults").no_binary_name(true));
+    let matches = command
+        .try_get_matches_from(std::iter::empty::<&str>())
+        .expect("a flag group parses without flags");
+    T::from_arg_matches(&matches).expect("a flag group's defaults are values")
+}
+
+/// Refuse two outputs of one run at the same path (the second would overwrite the first).
+pub fn distinct_outputs(paths: &[Option<&std::path::Path>]) -> Result<()> {
+    let given: Vec<&std::path::Path> = paths.iter().flatten().copied().collect();
+    for (i, a) in given.iter().enumerate() {
+        if given[i + 1..].iter().any(|b| same_file(a, b)) {
+            bail!(
+                "{} is named for two outputs of this run: give each its own file",
+                a.display()
+            );
+        }
+    }
+    Ok(())
+}
+
+/// Refuse an output that is one of the run's input files (it would be overwritten).
+pub fn not_an_input(out: &std::path::Path, inputs: &[&std::path::Path]) -> Result<()> {
+    if let Some(input) = inputs.iter().find(|i| same_file(out, i)) {
+        bail!(
+            "--out {}: that is the input file {}; writing would destroy it (choose another name)",
+            out.display(),
+            input.display()
+        );
+    }
+    Ok(())
+}
+
+/// The same file: the same path, or both existing and canonically the same.
+fn same_file(a: &std::path::Path, b: &std::path::Path) -> bool {
+    a == b
+        || matches!(
+            (std::fs::canonicalize(a), std::fs::canonicalize(b)),
+            (Ok(x), Ok(y)) if x == y
+        )
 }
 
 /// Fail unless `path` is a `.png` in an existing directory (so errors come before minutes of
@@ -385,7 +447,7 @@ pub struct RenderArgs {
     /// The view images' size instead of --view-scale (each side at most --size's; the views
     /// keep the camera's aspect, so tiles of another aspect stretch as Looking Glass's quilts
     /// do: e.g. --method tiled --view-size 857x857 renders a 16" panel's 7x7 quilt of 857x857);
-    /// with --output quilt (any method) the size of the quilt's tiles.
+    /// with --output quilt also the size of the quilt's tiles.
     #[arg(long, value_name = "WxH", value_parser = parse_size, conflicts_with = "view_scale", help_heading = "Method")]
     pub view_size: Option<[u32; 2]>,
     #[command(flatten)]
@@ -411,9 +473,7 @@ impl RenderArgs {
             Some([w, h]) => Some(format!("--view-size {w}x{h}")),
             None => (self.view_scale != 1.0).then(|| format!("--view-scale {}", self.view_scale)),
         };
-        // A quilt's tiles are view images of any method: the flag sets their size.
-        let quilt = self.output.format == crate::output::OutputArg::Quilt;
-        if let Some(flag) = flag.filter(|_| !scaled.contains(&self.method) && !quilt) {
+        if let Some(flag) = flag.filter(|_| !scaled.contains(&self.method)) {
             bail!(
                 "{flag}: the {} method renders no view images to scale (only n-pass, tiled, \
                  layered and mrt do)",
@@ -421,6 +481,14 @@ impl RenderArgs {
             );
         }
         self.warp.check(self.method)?;
+        if self.output.format != crate::output::OutputArg::Spatial {
+            self.display
+                .check_spatial_only(&self.output.format.name())?;
+        }
+        distinct_outputs(&[
+            self.output.out.as_deref(),
+            self.warp.synthesis.hole_mask.as_deref(),
+        ])?;
         self.turntable.check(self.output.out.as_deref())?;
         self.memory.apply();
         Ok(())

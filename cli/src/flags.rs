@@ -26,6 +26,7 @@ const FLAGS: &[(&str, &str)] = &[
     ("look-from", "--look-from"),
     ("look-at", "--look-at"),
     ("up", "--up"),
+    ("focal distance", "--focal/--focal-scale"),
     ("views", "--views"),
     ("field of view", "--fov"),
 ];

@@ -102,7 +102,7 @@ pub struct OutputArgs {
     /// With the stereo formats of --output (anaglyph…, side-by-side…, top-bottom…, rows,
     /// columns, checkerboard): the left and right views L,R (default: two views a quarter of
     /// the views apart, about the middle).
-    #[arg(long, value_name = "L,R", value_parser = crate::args::parse_pair)]
+    #[arg(long, value_name = "L,R", value_parser = crate::args::parse_eyes)]
     pub eyes: Option<[u32; 2]>,
     /// Print one JSON object with the run's parameters, timing and the files written
     /// (`written`) on stdout.
@@ -154,6 +154,9 @@ impl OutputArgs {
             );
         }
         if let Some([l, r]) = self.eyes {
+            if l == r {
+                bail!("--eyes {l},{r}: one view for both eyes has no depth; give two views L,R");
+            }
             if self.format.stereo([1, 1]).is_none() {
                 bail!(
                     "--eyes {l},{r} chooses the views of a stereo --output (anaglyph, \
@@ -285,8 +288,22 @@ pub fn quilt_layout(
     let lkg = display.default_quilt(views);
     let tile = lkg.map_or(size, |q| q.tile);
     Ok(match (grid, lkg) {
-        (Some([cols, rows]), _) => QuiltLayout::with_grid(cols, rows, tile, views)
-            .map_err(|e| anyhow::anyhow!("--quilt {cols}x{rows}: {e}"))?,
+        (Some([cols, rows]), _) => {
+            let layout = QuiltLayout::with_grid(cols, rows, tile, views)
+                .map_err(|e| anyhow::anyhow!("--quilt {cols}x{rows}: {e}"))?;
+            // A whole empty row plays as blank views in Looking Glass software.
+            let empty = u64::from(cols) * u64::from(rows) - u64::from(views);
+            if empty >= u64::from(cols) {
+                let fit = QuiltLayout::for_views(views, tile);
+                bail!(
+                    "--quilt {cols}x{rows}: {empty} of its tiles would be empty for {views} \
+                     views (a whole row or more); give a grid with fewer, e.g. --quilt {}x{}",
+                    fit.cols,
+                    fit.rows
+                );
+            }
+            layout
+        }
         (None, Some(lkg)) => lkg,
         (None, None) => QuiltLayout::for_views(views, tile),
     })

@@ -77,6 +77,21 @@ pub fn run(args: RgbdArgs) -> Result<()> {
     args.output
         .check(args.timing.frames.is_some() || args.warp.hole_mask.is_some())?;
     args.warp.check()?;
+    let inputs: Vec<&std::path::Path> = [Some(args.color.as_path()), args.depth.as_deref()]
+        .into_iter()
+        .flatten()
+        .collect();
+    for out in [args.output.out.as_deref(), args.warp.hole_mask.as_deref()]
+        .into_iter()
+        .flatten()
+    {
+        crate::args::not_an_input(out, &inputs)?;
+    }
+    crate::args::distinct_outputs(&[args.output.out.as_deref(), args.warp.hole_mask.as_deref()])?;
+    if args.output.format != crate::output::OutputArg::Spatial {
+        args.display
+            .check_spatial_only(&args.output.format.name())?;
+    }
     args.memory.apply();
     let depth_options = DepthMapOptions {
         invert: args.depth_invert,

@@ -6,7 +6,7 @@ use anyhow::{bail, Result};
 use autostereo::image_io::RgbImage;
 use autostereo::views::{anaglyph, extract_view};
 
-use crate::args::{check_output, parse_pair, DisplayArgs};
+use crate::args::{check_output, DisplayArgs};
 
 #[derive(clap::Args)]
 pub struct ViewsArgs {
@@ -21,7 +21,7 @@ pub struct ViewsArgs {
     view: Option<u32>,
     /// Red/cyan anaglyph of views L (left eye, red) and R (right eye), the pair --eyes names in
     /// every command (formerly --anaglyph L,R, still accepted).
-    #[arg(long, value_name = "L,R", alias = "anaglyph", value_parser = parse_pair)]
+    #[arg(long, value_name = "L,R", alias = "anaglyph", value_parser = crate::args::parse_eyes)]
     eyes: Option<[u32; 2]>,
     /// Output PNG.
     #[arg(long, value_name = "F.png", help_heading = "Output")]
@@ -34,6 +34,7 @@ pub struct ViewsArgs {
 
 pub fn run(args: ViewsArgs) -> Result<()> {
     check_output(&args.out)?;
+    crate::args::not_an_input(&args.out, &[args.spatial.as_path()])?;
     args.memory.apply();
     let display = args.display.display()?;
     let mask = display.mask();
@@ -54,6 +55,9 @@ pub fn run(args: ViewsArgs) -> Result<()> {
             extract_view(&spatial, &mask, v)
         }
         (None, Some([l, r])) => {
+            if l == r {
+                bail!("--eyes {l},{r}: one view for both eyes has no depth; give two views L,R");
+            }
             check(l)?;
             check(r)?;
             anaglyph(&spatial, &mask, l, r)

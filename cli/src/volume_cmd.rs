@@ -64,8 +64,8 @@ pub struct VolumeDataArgs {
     /// Built-in data set used when no file is given.
     #[arg(long, value_enum, default_value = "head")]
     builtin: Builtin,
-    /// Voxels per axis of the built-in data set.
-    #[arg(long, default_value_t = 96)]
+    /// Voxels per axis of the built-in data set (4 to 1024).
+    #[arg(long, default_value_t = 96, value_parser = clap::value_parser!(u32).range(4..=1024))]
     builtin_size: u32,
     /// Transfer function: a preset (ct-skin, ct-bone, mri, ml) or a file of `s r g b a` lines.
     #[arg(long)]
@@ -199,8 +199,15 @@ impl VolumeDataArgs {
     pub fn load(&self, file: Option<&Path>) -> Result<(Volume, &'static str)> {
         let (mut volume, default_tf) = match file {
             None => {
-                if self.raw_dims.is_some() || self.raw_type.is_some() {
-                    bail!("--raw-dims and --raw-type describe a raw FILE, and none is given");
+                if self.raw_dims.is_some()
+                    || self.raw_type.is_some()
+                    || self.raw_big_endian
+                    || self.raw_header != 0
+                {
+                    bail!(
+                        "--raw-dims, --raw-type, --raw-big-endian and --raw-header describe a raw \
+                         FILE, and none is given"
+                    );
                 }
                 match self.builtin {
                     Builtin::Head => (phantom::ct_head(self.builtin_size)?, "ct-skin"),
@@ -208,6 +215,21 @@ impl VolumeDataArgs {
                 }
             }
             Some(path) => {
+                let defaults = crate::args::defaults_of::<Self>();
+                if self.builtin != defaults.builtin || self.builtin_size != defaults.builtin_size {
+                    bail!(
+                        "--builtin and --builtin-size choose the data set used without a FILE, \
+                         and {} is given",
+                        path.display()
+                    );
+                }
+                let raw = self.raw_dims.is_some() || self.raw_type.is_some();
+                if !raw && (self.raw_big_endian || self.raw_header != 0) {
+                    bail!(
+                        "--raw-big-endian and --raw-header describe a raw file, given with \
+                         --raw-dims and --raw-type"
+                    );
+                }
                 let volume = match (self.raw_dims, &self.raw_type) {
                     (Some(dims), Some(kind)) => {
                         let kind = SampleType::parse(kind).with_context(|| {
@@ -234,6 +256,15 @@ impl VolumeDataArgs {
             volume = Volume::new(volume.dims, spacing, volume.data)?;
         }
         if self.downsample > 1 {
+            let smallest = volume.dims.into_iter().min().unwrap_or(0);
+            if self.downsample * 2 > smallest {
+                bail!(
+                    "--downsample {}: the volume's smallest side, {smallest} voxels, would keep \
+                     fewer than 2 (nothing to render); at most --downsample {}",
+                    self.downsample,
+                    (smallest / 2).max(1)
+                );
+            }
             volume = volume.downsample(self.downsample)?;
         }
         Ok((volume, default_tf))

@@ -41,8 +41,8 @@ pub struct WarpSynthesisArgs {
     /// (N view images first, then the mask compositing).
     #[arg(long, value_enum)]
     pub warp_path: Option<WarpPathArg>,
-    /// Also write the hole mask (255 on subpixels that were filled rather than seen) as PNG;
-    /// the report gives its share either way.
+    /// Also write the hole mask (255 on subpixels that were filled rather than seen) as PNG
+    /// and report its share (--method warp reports the share without it too).
     #[arg(long, value_name = "F.png")]
     pub hole_mask: Option<PathBuf>,
 }

@@ -353,7 +353,7 @@ fn cli_reports_bad_input_without_panicking() {
             vec!["mask", "--size", "100000x100000", "--out", out],
             "more than 268435456",
         ),
-        (vec!["volume", "--builtin-size", "2000"], "voxels"),
+        (vec!["volume", "--builtin-size", "2000"], "4..=1024"),
         (
             vec![
                 "volume",

@@ -192,8 +192,12 @@ fn per_view_files_are_zero_padded_and_every_json_names_what_it_wrote() {
 }
 
 /// A 32×24 colour image and a depth ramp for `rgbd`.
-fn rgbd_pair() -> (PathBuf, PathBuf) {
-    let (c, d) = (out("rgbd_color.png"), out("rgbd_depth.png"));
+fn rgbd_pair(tag: &str) -> (PathBuf, PathBuf) {
+    // One pair per test: the tests run at once and must not read each other's half-written file.
+    let (c, d) = (
+        out(&format!("rgbd_color_{tag}.png")),
+        out(&format!("rgbd_depth_{tag}.png")),
+    );
     image::RgbImage::from_fn(32, 24, |x, y| {
         image::Rgb([(x * 8) as u8, (y * 10) as u8, 90])
     })
@@ -207,7 +211,7 @@ fn rgbd_pair() -> (PathBuf, PathBuf) {
 
 #[test]
 fn rgbd_and_interleave_take_the_same_output_flags_and_json() {
-    let (c, d) = rgbd_pair();
+    let (c, d) = rgbd_pair("t1");
     let (c, d) = (c.to_str().unwrap(), d.to_str().unwrap());
     // --output views as in every command (rgbd had --views-out DIR with other names).
     let views = out("rgbd_views.png");
@@ -295,7 +299,7 @@ fn retired_flags_name_their_replacement() {
         &with("volume", &["--anaglyph", f, "--out", f]),
         &["--output anaglyph --out"],
     );
-    let (c, d) = rgbd_pair();
+    let (c, d) = rgbd_pair("t2");
     let (c, d) = (c.to_str().unwrap(), d.to_str().unwrap());
     refused(&["rgbd", c, d, "--quilt-out", f], &["--output quilt --out"]);
     refused(
@@ -322,7 +326,7 @@ fn one_frame_unless_timing_is_asked_for() {
         (report["frames"].as_u64(), report["warm_up_frames"].as_u64()),
         (Some(3), Some(2))
     );
-    let (c, d) = rgbd_pair();
+    let (c, d) = rgbd_pair("t3");
     let report = json(&["rgbd", c.to_str().unwrap(), d.to_str().unwrap(), "--json"]);
     assert_eq!(report["warm_up_frames"], 0);
 }
@@ -412,4 +416,130 @@ fn mask_and_views_name_what_they_wrote() {
     ]);
     assert_eq!(report["written"], serde_json::json!([anaglyph]));
     assert_eq!(report["eyes"], serde_json::json!([3, 4]));
+}
+
+#[test]
+fn outputs_never_overwrite_an_input_or_each_other() {
+    let (c, d) = rgbd_pair("t4");
+    let (c, d) = (c.to_str().unwrap(), d.to_str().unwrap());
+    // The depth map was silently replaced by the spatial image.
+    refused(&["rgbd", c, d, "--out", d], &["input file", "destroy"]);
+    refused(&["views", c, "--view", "1", "--out", c], &["input file"]);
+    refused(
+        &["interleave", c, "--quilt", "4x2", "--out", c],
+        &["input file"],
+    );
+    // Two outputs of one run at one path: the second overwrote the first.
+    let x = out("twice.png");
+    let x = x.to_str().unwrap();
+    refused(
+        &["rgbd", c, d, "--out", x, "--hole-mask", x],
+        &["two outputs"],
+    );
+    refused(
+        &with("mesh", &["--method", "warp", "--out", x, "--hole-mask", x]),
+        &["two outputs"],
+    );
+}
+
+#[test]
+fn degenerate_and_unused_settings_are_refused_by_name() {
+    let f = out("degenerate.png");
+    let f = f.to_str().unwrap();
+    let c = rgbd_pair("t5").0.to_str().unwrap().to_string();
+    let cases: [(Vec<&str>, &[&str]); 9] = [
+        (
+            with(
+                "volume",
+                &["--output", "anaglyph", "--eyes", "3,3", "--out", f],
+            ),
+            &["--eyes 3,3", "no depth"],
+        ),
+        (
+            vec!["views", &c, "--eyes", "2,2", "--out", f],
+            &["--eyes 2,2"],
+        ),
+        (
+            with(
+                "mesh",
+                &["--output", "quilt", "--quilt", "100x100", "--out", f],
+            ),
+            &["--quilt 100x100", "empty", "--quilt 2x4"],
+        ),
+        (
+            with(
+                "mesh",
+                &["--output", "anaglyph", "--origin", "5,3", "--out", f],
+            ),
+            &["--origin", "--output anaglyph"],
+        ),
+        (
+            with("mesh", &["--output", "quilt", "--bgr", "--out", f]),
+            &["--bgr"],
+        ),
+        (
+            with("volume", &["--raw-header", "5", "--out", f]),
+            &["--raw-header", "raw"],
+        ),
+        (
+            with("volume", &["--downsample", "100", "--out", f]),
+            &["--downsample 100", "at most"],
+        ),
+        (
+            vec!["volume", "--builtin-size", "0", "--out", f],
+            &["--builtin-size"],
+        ),
+        (
+            vec!["view", "--exercise-switch", "methods"],
+            &["--exercise"],
+        ),
+    ];
+    for (args, words) in cases {
+        refused(&args, words);
+    }
+    // A file and the built-in data set's flags: which one was meant?
+    let nrrd = out("degenerate.nrrd");
+    let header = "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 4 4 4\nencoding: raw\n\n";
+    let mut bytes = header.as_bytes().to_vec();
+    bytes.extend([9u8; 64]);
+    std::fs::write(&nrrd, bytes).unwrap();
+    refused(
+        &with(
+            "volume",
+            &[nrrd.to_str().unwrap(), "--builtin", "ml", "--out", f],
+        ),
+        &["--builtin", "degenerate.nrrd"],
+    );
+}
+
+#[test]
+fn a_looking_glass_quilt_of_fewer_views_has_no_empty_rows() {
+    // 4 views on a 16" Looking Glass went into its 7x7 quilt: 45 empty tiles.
+    let cal = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../data/lkg_sample_16in_landscape_gen3_visual.json"
+    );
+    let display = format!("lkg:{cal}");
+    let quilt = out("lkg4.png");
+    let report = json(&[
+        "mesh",
+        "--display",
+        &display,
+        "--views",
+        "4",
+        "--size",
+        "64x36",
+        "--output",
+        "quilt",
+        "--json",
+        "--out",
+        quilt.to_str().unwrap(),
+    ]);
+    let written = report["written"][0].as_str().unwrap();
+    let name = std::path::Path::new(written)
+        .file_name()
+        .unwrap()
+        .to_string_lossy();
+    let (cols, rows, _) = autostereo::render::quilt::parse_quilt_name(&name).unwrap();
+    assert!(cols * rows - 4 < cols, "{name}");
 }

@@ -156,9 +156,14 @@ impl Display {
         let [pw, ph] = calibration.panel_size().map(|v| v as f64);
         let family = calibration.family();
         let quilt = family.map_or([4096, 4096], |f| f.quilt_size);
+        // The family's grid where it holds the views without a whole empty row (a quilt of 4
+        // views in 7×7 tiles would play 45 empty ones).
         let grid = family
             .map(|f| f.grid)
-            .filter(|g| g[0] as u64 * g[1] as u64 >= views as u64)
+            .filter(|g| {
+                let tiles = g[0] as u64 * g[1] as u64;
+                tiles >= views as u64 && tiles - (views as u64) < g[0] as u64
+            })
             .unwrap_or_else(|| {
                 let q = QuiltLayout::for_views(views, [pw as u32, ph as u32]);
                 [q.cols, q.rows]

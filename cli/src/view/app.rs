@@ -44,7 +44,10 @@ const MORE_DISPLAYS: [&str; 4] = [
 ];
 
 pub fn run(args: ViewArgs) -> Result<()> {
-    let event_loop = EventLoop::new().context("opening the window system (is DISPLAY set?)")?;
+    let event_loop = EventLoop::new().context(
+        "opening the window system (is DISPLAY or WAYLAND_DISPLAY set? without a screen, run \
+         it in a virtual one: xvfb-run -a autostereo view …)",
+    )?;
     let mut app = App {
         args,
         state: None,

@@ -141,6 +141,7 @@ pub struct ViewArgs {
         value_enum,
         value_delimiter = ',',
         default_value = "methods,displays,sizes",
+        requires = "exercise",
         help_heading = "Scripts"
     )]
     exercise_switch: Vec<Switch>,

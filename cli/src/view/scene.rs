@@ -113,16 +113,22 @@ impl SceneFlags<'_> {
     pub fn check(&self) -> Result<()> {
         let kind = self.kind()?;
         let given = [
-            (KindArg::Mesh, *self.mesh != defaults::<MeshFlags>()),
-            (KindArg::Points, *self.points != defaults::<PointFlags>()),
+            (
+                KindArg::Mesh,
+                *self.mesh != crate::args::defaults_of::<MeshFlags>(),
+            ),
+            (
+                KindArg::Points,
+                *self.points != crate::args::defaults_of::<PointFlags>(),
+            ),
             (
                 KindArg::Volume,
-                *self.volume_data != defaults::<VolumeDataArgs>()
-                    || *self.volume_render != defaults::<VolumeRenderArgs>(),
+                *self.volume_data != crate::args::defaults_of::<VolumeDataArgs>()
+                    || *self.volume_render != crate::args::defaults_of::<VolumeRenderArgs>(),
             ),
             (
                 KindArg::Gaussians,
-                *self.gaussians != defaults::<GaussianFlags>(),
+                *self.gaussians != crate::args::defaults_of::<GaussianFlags>(),
             ),
         ];
         for (other, set) in given {
@@ -142,15 +148,6 @@ impl SceneFlags<'_> {
         }
         Ok(())
     }
-}
-
-/// The values a flag group has when none of its flags is given.
-fn defaults<T: clap::Args + clap::FromArgMatches>() -> T {
-    let command = T::augment_args(clap::Command::new("defaults").no_binary_name(true));
-    let matches = command
-        .try_get_matches_from(std::iter::empty::<&str>())
-        .expect("a flag group parses without flags");
-    T::from_arg_matches(&matches).expect("a flag group's defaults are values")
 }
 
 /// Load the scene the flags say; no file: the built-in volume (or the kind's generated scene).

@@ -193,7 +193,7 @@ pub fn load_any(path: &Path) -> Result<Volume> {
         Format::Vtk => load_vtk_image(path),
         _ => Err(format_error(
             path,
-            "raw voxels need their dimensions and sample type (RawSpec, load_raw)",
+            "raw voxels need their dimensions and sample type (RawSpec)",
         )),
     }
 }
