@@ -305,7 +305,11 @@ fn broken_headers_are_refused_by_name() {
             },
             ".hdr/.img pair",
         ),
-        ("short.nii.gz", gzip(&good[..200]), "not a NIfTI-1 header"),
+        (
+            "short.nii.gz",
+            gzip(&good[..200]),
+            "200 bytes after inflating: too short for a NIfTI-1 header",
+        ),
         (
             "sheared.nii",
             {

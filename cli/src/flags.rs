@@ -28,6 +28,8 @@ const FLAGS: &[(&str, &str)] = &[
     ("up", "--up"),
     ("focal distance", "--focal/--focal-scale"),
     ("views", "--views"),
+    ("groups", "--groups"),
+    ("splat groups", "--groups"),
     ("field of view", "--fov"),
 ];
 
@@ -43,6 +45,7 @@ const TERMS: &[(&str, &str)] = &[
     ("VolumePath::Slices", "--path slices"),
     ("Volume::downsample(2)", "--downsample 2"),
     ("budget::set_max_memory", "--max-memory"),
+    ("RawSpec::header_bytes = ", "--raw-header "),
     ("RawSpec", "--raw-dims X,Y,Z and --raw-type"),
     ("QuiltLayout::for_image's grid", "--quilt COLSxROWS"),
     ("DepthMapOptions::resample", "--depth-resample"),
@@ -80,6 +83,11 @@ pub fn describe(error: &anyhow::Error) -> String {
             {
                 format!("{cause} (--size: at most {limit} pixels a side on this adapter)")
             }
+            // A count a flag sets, over what the adapter takes: the flag and the most it takes.
+            Some(autostereo::Error::LimitExceeded { what, limit, .. }) => match flag_of(what) {
+                Some(flag) => format!("{flag}: {cause} (at most {flag} {limit} on this adapter)"),
+                None => cause.to_string(),
+            },
             _ => cause.to_string(),
         })
         .collect();

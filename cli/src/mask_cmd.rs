@@ -30,6 +30,16 @@ pub fn run(args: MaskArgs) -> Result<()> {
     check_output(&args.out)?;
     let display = args.display.display()?;
     let [w, h] = args.size;
+    // In the flag's words (the library's says "invalid image size", no flag), for either path.
+    let pixels = u64::from(w) * u64::from(h);
+    let most = autostereo::image_io::MAX_IMAGE_PIXELS;
+    if pixels > most {
+        anyhow::bail!(
+            "--size {w}x{h}: {pixels} pixels, more than {most}, the most a mask image holds \
+             (W×H ≤ {most}, e.g. --size {side}x{side})",
+            side = (most as f64).sqrt() as u64
+        );
+    }
     let image = if args.gpu {
         let ctx = gpu()?;
         MaskImageRenderer::new(&ctx.device)?.render(&ctx.device, &ctx.queue, &display, args.size)?

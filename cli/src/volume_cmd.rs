@@ -92,8 +92,8 @@ pub struct VolumeDataArgs {
     /// Raw files: bytes to skip before the samples.
     #[arg(long, default_value_t = 0)]
     raw_header: u64,
-    /// Voxel spacing X,Y,Z (overrides the file's).
-    #[arg(long, value_parser = parse_f32_triple)]
+    /// Voxel spacing X,Y,Z (overrides the file's; each 1e-6 to 1e6).
+    #[arg(long, value_parser = parse_spacing)]
     spacing: Option<[f32; 3]>,
     /// Average blocks of F³ voxels first (for volumes over the adapter's 3D texture limit).
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=256))]
@@ -109,7 +109,7 @@ pub struct VolumeRenderArgs {
     /// Slices path: per-channel (exact) or the paper's averaged α.
     #[arg(long, value_enum, default_value = "exact")]
     alpha: AlphaArg,
-    /// Samples across the volume's diagonal (at least 3).
+    /// Samples across the volume's diagonal (3 to 16384).
     #[arg(long, conflicts_with = "step", value_parser = parse_slices)]
     slices: Option<u32>,
     /// Sampling distance in voxels of the smallest spacing (default 0.5).
@@ -171,7 +171,32 @@ fn parse_slices(s: &str) -> Result<u32, String> {
              give at least 3 samples across its diagonal (e.g. --slices 256), or --step"
         ));
     }
+    let most = autostereo::volume::MAX_SAMPLES_PER_RAY as u32;
+    if n > most {
+        return Err(format!(
+            "--slices {n}: at most {most} samples across the volume's diagonal (--slices {most})"
+        ));
+    }
     Ok(n)
+}
+
+/// `--spacing`'s range: each axis 1e-6 to 1e6 world units per voxel. Outside it the volume's
+/// box (up to 1024 voxels a side times the spacing) leaves f32 cameras nothing usable: a
+/// 1e30 spacing overflowed the framing ("the scene's bounds Vec3(-8e30, …)"), and 0 or a
+/// negative spacing is no box at all.
+const SPACING_RANGE: (f32, f32) = (1e-6, 1e6);
+
+fn parse_spacing(s: &str) -> Result<[f32; 3], String> {
+    let v = parse_f32_triple(s)?;
+    let (min, max) = SPACING_RANGE;
+    if v.iter().all(|x| (min..=max).contains(x)) {
+        Ok(v)
+    } else {
+        Err(format!(
+            "each voxel spacing must be from {min:e} to {max:e} world units per voxel \
+             (e.g. --spacing 1,1,2)"
+        ))
+    }
 }
 
 fn parse_f32_triple(s: &str) -> Result<[f32; 3], String> {
@@ -281,7 +306,7 @@ impl VolumeDataArgs {
         if path.exists() || looks_like_file {
             Ok(TransferFunction::load(path).with_context(|| format!("--tf {name}"))?)
         } else {
-            Ok(TransferFunction::preset(name)?)
+            Ok(TransferFunction::preset(name).with_context(|| format!("--tf {name}"))?)
         }
     }
 

@@ -133,6 +133,23 @@ impl MultiViewCamera {
         }
         let view = at - from;
         let focal_distance = view.length();
+        // Points so far apart that the distance overflows f32 (its square past f32::MAX) leave
+        // no view direction: blame the farther point, not `up`.
+        if !focal_distance.is_finite() {
+            let (name, point, other_name, other) =
+                match at.abs().max_element() >= from.abs().max_element() {
+                    true => ("look-at", at, "look-from", from),
+                    false => ("look-from", from, "look-at", at),
+                };
+            return Err(Error::invalid(
+                name,
+                format!(
+                    "{point} is too far from the {other_name} point {other}: their distance \
+                     must be under {:e} world units (bring the points nearer)",
+                    f32::MAX.sqrt()
+                ),
+            ));
+        }
         // Relative to the points' own size, so that far-off coordinates still compare.
         let scale = from.abs().max(at.abs()).max_element().max(bounds.radius());
         if focal_distance <= 1e-6 * scale {

@@ -291,7 +291,11 @@ fn check_slanted(pitch: f64, slant: f64, phase: f64) -> Result<()> {
         if !(v.is_finite() && (v / pitch).abs() <= MAX_PERIODS) {
             return Err(Error::invalid(
                 name,
-                format!("{v}: must be finite and at most {MAX_PERIODS} lens pitches ({pitch} subpixels)"),
+                format!(
+                    "{v}: the {name} must be finite and within ±2^32 lens pitches, which at a \
+                     pitch of {pitch} subpixels is ±{:e} subpixels",
+                    MAX_PERIODS * pitch
+                ),
             ));
         }
     }

@@ -75,6 +75,19 @@ impl PointCloud {
     /// refused naming the command that reads it. A PLY mesh's vertices are read as points,
     /// and the log says that its faces are not drawn.
     pub fn load(path: &Path) -> Result<Self> {
+        let cloud = Self::load_any(path)?;
+        // Named here, with the file: `validate` (no path) would say only "no points".
+        if cloud.is_empty() {
+            return Err(Error::Points {
+                path: path.to_path_buf(),
+                reason: "no points (the file has no vertices): nothing to render".into(),
+            });
+        }
+        Ok(cloud)
+    }
+
+    /// [`PointCloud::load`] before the empty check.
+    fn load_any(path: &Path) -> Result<Self> {
         use crate::formats::{expect, ply_faces, DataKind, Format};
         match expect(path, DataKind::Points)? {
             Format::Ply => {

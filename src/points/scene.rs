@@ -67,10 +67,16 @@ impl SplatScene {
             // With the spare layer a square group image may need (array_layers_for).
             let layers = crate::render::view_layers::array_layers_for([1, 1], k);
             if layers > limit {
+                // The most groups whose layers (a spare included) fit the adapter's limit:
+                // the limit reported is that count, the one the caller can give.
+                let most = (1..=limit)
+                    .rev()
+                    .find(|&g| crate::render::view_layers::array_layers_for([1, 1], g) <= limit)
+                    .unwrap_or(0);
                 return Err(Error::LimitExceeded {
-                    what: format!("splat groups ({k}: texture array layers, a spare included)"),
-                    value: layers.into(),
-                    limit: limit.into(),
+                    what: "splat groups".into(),
+                    value: k.into(),
+                    limit: most.into(),
                 });
             }
         }

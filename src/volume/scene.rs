@@ -291,16 +291,19 @@ fn check_scene(transfer: &TransferFunction, model: Mat4) -> Result<()> {
 }
 
 /// A sampling distance `step` (world units) for a box of `extent`: positive, at most
-/// [`MAX_SAMPLES_PER_RAY`] samples across the box diagonal.
-pub(super) fn check_step(extent: Vec3, step: f32) -> Result<()> {
+/// [`MAX_SAMPLES_PER_RAY`] samples across the box diagonal. The error speaks in voxels of the
+/// smallest spacing `voxel` (world units), the unit [`super::VolumeSettings::step`] is given in.
+pub(super) fn check_step(extent: Vec3, voxel: f32, step: f32) -> Result<()> {
     let diagonal = extent.length();
     if !(step.is_finite() && step > 0.0 && diagonal / step <= MAX_SAMPLES_PER_RAY) {
         return Err(Error::invalid(
             "sampling step",
             format!(
-                "{step} world units: must be positive and at least {} (the box diagonal / \
-                 {MAX_SAMPLES_PER_RAY})",
-                diagonal / MAX_SAMPLES_PER_RAY
+                "{} voxels: must be at least {} voxels (of the smallest spacing, {voxel} world \
+                 units) for this volume, at most {MAX_SAMPLES_PER_RAY} samples across its \
+                 diagonal",
+                step / voxel,
+                diagonal / MAX_SAMPLES_PER_RAY / voxel
             ),
         ));
     }

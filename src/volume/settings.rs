@@ -130,6 +130,6 @@ impl VolumeSettings {
     /// Check these settings against `scene` (every frame: the step must fit its box).
     pub fn validate_for(&self, scene: &VolumeScene) -> Result<()> {
         self.validate()?;
-        check_step(scene.extent, self.step_length(scene))
+        check_step(scene.extent, scene.voxel, self.step_length(scene))
     }
 }

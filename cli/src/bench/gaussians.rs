@@ -208,12 +208,12 @@ pub fn run(args: &BenchArgs) -> Result<()> {
         sort,
     };
     if let Some(dir) = &args.report {
-        std::fs::create_dir_all(dir)?;
-        std::fs::write(
-            dir.join("bench_gaussians.json"),
+        super::report_dir(dir)?;
+        super::write_report_file(
+            &dir.join("bench_gaussians.json"),
             serde_json::to_string_pretty(&report)?,
         )?;
-        std::fs::write(dir.join("BENCHMARKS.md"), markdown(&report))?;
+        super::write_report_file(&dir.join("BENCHMARKS.md"), markdown(&report))?;
         eprintln!("wrote {}", dir.join("BENCHMARKS.md").display());
     }
     if args.json {

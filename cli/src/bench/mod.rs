@@ -182,9 +182,39 @@ pub(crate) fn cpu_name() -> String {
         .unwrap_or_else(|| "unknown CPU".into())
 }
 
+/// Make `--report DIR`'s folders (DIR and DIR/images), the error naming the flag and the path:
+/// a DIR that is a file (`--report rep/BENCHMARKS.md`) said only "Not a directory (os error
+/// 20)".
+fn report_dir(dir: &std::path::Path) -> Result<()> {
+    if dir.exists() && !dir.is_dir() {
+        anyhow::bail!(
+            "--report {}: is a file, and --report takes a folder (DIR/BENCHMARKS.md is written \
+             in it); give its folder, e.g. --report {}",
+            dir.display(),
+            dir.parent()
+                .filter(|p| !p.as_os_str().is_empty())
+                .map_or(".".into(), |p| p.display().to_string())
+        );
+    }
+    let images = dir.join("images");
+    std::fs::create_dir_all(&images).with_context(|| {
+        format!(
+            "--report {}: cannot create the folder {}",
+            dir.display(),
+            images.display()
+        )
+    })
+}
+
+/// Write one file of the `--report` folder, the error naming the path.
+pub(crate) fn write_report_file(path: &std::path::Path, contents: impl AsRef<[u8]>) -> Result<()> {
+    std::fs::write(path, contents)
+        .with_context(|| format!("--report: cannot write {}", path.display()))
+}
+
 pub fn run(args: BenchArgs) -> Result<()> {
     if let Some(dir) = &args.report {
-        std::fs::create_dir_all(dir.join("images"))?;
+        report_dir(dir)?;
         if let Some(json) = &args.from_json {
             let text = std::fs::read_to_string(json)
                 .with_context(|| format!("reading {}", json.display()))?;
@@ -329,7 +359,7 @@ pub fn run(args: BenchArgs) -> Result<()> {
     };
     if let Some(dir) = &args.report {
         let json = dir.join(format!("bench_{}.json", plan.name()));
-        std::fs::write(&json, serde_json::to_string_pretty(&results)?)?;
+        write_report_file(&json, serde_json::to_string_pretty(&results)?)?;
         report::write(dir, &results)?;
         eprintln!("wrote {}", dir.join("BENCHMARKS.md").display());
     }

@@ -258,7 +258,7 @@ pub fn write(dir: &Path, r: &Results) -> Result<()> {
         "## Numerical stability\n\nThe stability suite (`tests/stability.rs`, run by CI) and its table: \
          [STABILITY.md]({up}STABILITY.md).\n"
     )?;
-    std::fs::write(dir.join("BENCHMARKS.md"), md)?;
+    super::write_report_file(&dir.join("BENCHMARKS.md"), md)?;
     Ok(())
 }
 

@@ -39,6 +39,13 @@ pub fn parse_nifti(bytes: &[u8], path: &Path) -> Result<Volume> {
         .take(HEADER_BYTES)
         .read_to_end(&mut head)
         .map_err(|e| err(format!("header: {e}")))?;
+    if (head.len() as u64) < HEADER_BYTES {
+        return Err(err(format!(
+            "{} bytes{}: too short for a NIfTI-1 header ({HEADER_BYTES} bytes); is it a .nii file?",
+            head.len(),
+            if gzip { " after inflating" } else { "" },
+        )));
+    }
     let header = NiftiHeader::from_reader(head.as_slice())
         .map_err(|e| err(format!("not a NIfTI-1 header: {e}")))?;
     if &header.magic[..3] == b"ni1" {

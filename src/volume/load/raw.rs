@@ -101,7 +101,14 @@ fn check_length(path: &Path, spec: &RawSpec, actual: u64, needed: u64) -> Result
             actual,
             super::samples(spec.dims, spec.kind),
             spec.header_bytes,
-            if actual < needed { " (truncated?)" } else { "" }
+            match actual < needed {
+                true => " (truncated?)".to_string(),
+                // The fix for a file with more bytes than described, where they are a header.
+                false => format!(
+                    "; RawSpec::header_bytes = {} if the samples are at the end",
+                    actual - needed + spec.header_bytes
+                ),
+            }
         ),
     ))
 }
