@@ -2,6 +2,7 @@
 
 mod args;
 mod bench;
+mod camera_args;
 #[cfg(test)]
 mod doc_examples;
 mod examples;
@@ -19,6 +20,7 @@ mod turntable;
 mod view;
 mod views_cmd;
 mod volume_cmd;
+mod volume_render_args;
 mod warp_cmd;
 
 use clap::{Parser, Subcommand};
