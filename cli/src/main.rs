@@ -12,6 +12,7 @@ mod interleave_cmd;
 mod mask_cmd;
 mod mesh_cmd;
 mod output;
+mod parse_errors;
 mod points_cmd;
 mod progress;
 mod rgbd_cmd;
@@ -86,7 +87,24 @@ fn main() -> std::process::ExitCode {
     )
     .format_timestamp(None)
     .init();
-    let cli = Cli::parse();
+    // args_os: a file name that is not UTF-8 must reach the parser, not panic here.
+    let args: Vec<std::ffi::OsString> = std::env::args_os().collect();
+    let cli = match Cli::try_parse_from(&args) {
+        Ok(cli) => cli,
+        Err(e) => match parse_errors::explain(
+            &e,
+            &args
+                .iter()
+                .map(|a| a.to_string_lossy().into_owned())
+                .collect::<Vec<_>>(),
+        ) {
+            Some(text) => {
+                eprintln!("error: {text}");
+                return std::process::ExitCode::from(2);
+            }
+            None => e.exit(),
+        },
+    };
     let result = match cli.command {
         Command::Bench(a) => bench::run(a),
         Command::Mask(a) => mask_cmd::run(a),

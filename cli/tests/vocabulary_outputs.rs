@@ -543,3 +543,17 @@ fn a_looking_glass_quilt_of_fewer_views_has_no_empty_rows() {
     let (cols, rows, _) = autostereo::render::quilt::parse_quilt_name(&name).unwrap();
     assert!(cols * rows - 4 < cols, "{name}");
 }
+
+#[test]
+fn another_commands_flag_and_a_negative_count_are_named() {
+    // clap said "unexpected argument '--visibility'" (and for -3 suggested `-- -3`, which makes
+    // it a file name).
+    let stderr = refused(&["points", "--visibility", "exact"], &["autostereo mesh"]);
+    assert!(
+        stderr.contains("--visibility is not a flag of `autostereo points`"),
+        "{stderr}"
+    );
+    refused(&["volume", "--sort", "cpu"], &["`autostereo gaussians`"]);
+    let stderr = refused(&["points", "--views", "-3"], &["--views -3", "no negative"]);
+    assert!(!stderr.contains("-- -3"), "{stderr}");
+}
