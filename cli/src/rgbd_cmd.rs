@@ -139,9 +139,8 @@ pub fn run(args: RgbdArgs) -> Result<()> {
         let target = SpatialTarget::new(device, size)?;
         warp.render(device, queue, &scene, &frame, &target)?;
         let mask = target.read(device, queue)?;
-        let filled = mask.data.iter().filter(|&&v| v > 127).count();
         mask.save_png(path)?;
-        let share = filled as f64 / mask.data.len() as f64;
+        let share = crate::warp_cmd::hole_share(&mask);
         hole_share = Some(share);
         if !args.output.json {
             eprintln!(

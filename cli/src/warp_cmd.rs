@@ -127,6 +127,12 @@ impl From<&WarpArgs> for WarpOptions {
     }
 }
 
+/// The share of subpixels a hole mask marks as filled rather than seen (255 on filled ones).
+pub fn hole_share(mask: &autostereo::image_io::RgbImage) -> f64 {
+    let filled = mask.data.iter().filter(|&&v| v >= 128).count();
+    filled as f64 / mask.data.len().max(1) as f64
+}
+
 /// The report fields of a warp: R, the path, what depth the references carry, and the share
 /// of subpixels filled rather than seen (from a hole-mask render of the renderer `build` makes
 /// from `options`, written where asked).
@@ -151,11 +157,11 @@ pub fn hole_report<S: ?Sized>(
         crate::output::say_written(json, std::slice::from_ref(path));
         saved.written.push(path.clone());
     }
-    let filled = mask.data.iter().filter(|&&v| v >= 128).count();
+
     Ok(serde_json::json!({
         "references": options.warp.references,
         "warp_path": WarpPathArg::of(options.warp.path),
         "warp": warp.describe(),
-        "hole_share": filled as f64 / mask.data.len().max(1) as f64,
+        "hole_share": hole_share(&mask),
     }))
 }
