@@ -266,13 +266,33 @@ pub struct FramesArgs {
 }
 
 impl FramesArgs {
+    /// Frames rendered before timing: two when timing is asked for (lavapipe compiles shaders
+    /// on first use), none for one image.
+    pub fn warm_up(&self) -> u32 {
+        if self.frames.is_some() {
+            2
+        } else {
+            0
+        }
+    }
+
+    /// Frames timed (and rendered after the warm-up).
+    pub fn timed(&self) -> u32 {
+        self.frames.unwrap_or(1)
+    }
+
+    /// What the reported time is, for the console: "one frame" or "median of N frames".
+    pub fn described(&self) -> String {
+        match self.frames {
+            None => "one frame".into(),
+            Some(1) => "1 frame after 2 warm-up frames".into(),
+            Some(n) => format!("median of {n} frames"),
+        }
+    }
+
     /// The `--json` fields: frames timed and warm-up frames before them.
     pub fn fields(&self) -> serde_json::Value {
-        let warm_up = match self.frames {
-            Some(_) => crate::run::WARM_UP_FRAMES,
-            None => 0,
-        };
-        serde_json::json!({ "frames": self.frames.unwrap_or(1), "warm_up_frames": warm_up })
+        serde_json::json!({ "frames": self.timed(), "warm_up_frames": self.warm_up() })
     }
 }
 
@@ -288,9 +308,7 @@ pub struct RenderArgs {
     /// Image size WxH in pixels (default: a Looking Glass calibration's panel, else 512x512).
     #[arg(long, value_parser = parse_size, help_heading = "Display")]
     pub size: Option<[u32; 2]>,
-    /// Rendering method: single-pass | n-pass | single-view | tiled | layered | mrt | warp
-    /// (tiled, layered and mrt duplicate the geometry per view in one draw; warp renders
-    /// --references views and synthesises the others; docs/USAGE.md compares them).
+    /// Rendering method (each command offers its primitive's: cli/src/method_arg.rs).
     #[arg(long, value_parser = method_parser(), default_value = "single-pass", help_heading = "Method")]
     pub method: Method,
     /// Per-view resolution: the n-pass, tiled, layered and mrt methods render their view
@@ -327,11 +345,18 @@ impl RenderArgs {
             Some([w, h]) => Some(format!("--view-size {w}x{h}")),
             None => (self.view_scale != 1.0).then(|| format!("--view-scale {}", self.view_scale)),
         };
-        if let Some(flag) = flag.filter(|_| !scaled.contains(&self.method)) {
+        if let Some(flag) = flag.as_ref().filter(|_| !scaled.contains(&self.method)) {
             bail!(
                 "{flag}: the {} method renders no view images to scale (only n-pass, tiled, \
                  layered and mrt do)",
                 self.method
+            );
+        }
+        if self.compare && self.method == Method::NPass && flag.is_none() {
+            bail!(
+                "--compare: the n-pass method is the oracle --compare renders, so it would be \
+                 compared with itself (with --view-scale or --view-size it measures the smaller \
+                 views)"
             );
         }
         self.warp.check(self.method)?;

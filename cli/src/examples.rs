@@ -33,8 +33,8 @@ pub const GAUSSIANS: &str = "Examples:
       a graphdeco 3DGS capture (also .splat, .spz)
   autostereo gaussians scene.splat --look-from 0,0,-4 --look-at 0,0,0 --up 0,-1,0 --out s.png
       captures with y down need --up 0,-1,0
-  autostereo gaussians --method n-pass --compare --json
-      the generated scene, every view rendered alone, against the N-pass";
+  autostereo gaussians --method tiled --compare --json
+      the generated scene as a quilt (Looking Glass's way), against the N-pass";
 
 pub const RGBD: &str = "Examples:
   autostereo rgbd photo.jpg depth.png --display lkg --out photo_spatial.png

@@ -118,13 +118,7 @@ pub fn run(args: GaussiansArgs) -> Result<()> {
     let scene = GaussianScene::new(device, &gaussians)?;
     let (count, sh_degree) = (gaussians.len(), gaussians.sh_degree);
     drop(gaussians);
-    let run = timed(
-        &ctx,
-        renderer.as_mut(),
-        &scene,
-        &frame,
-        args.common.timing.frames,
-    )?;
+    let run = timed(&ctx, renderer.as_mut(), &scene, &frame, &args.common.timing)?;
     let saved = crate::output::save_all(
         &ctx,
         renderer.as_mut(),

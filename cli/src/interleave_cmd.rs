@@ -18,14 +18,14 @@ pub struct InterleaveArgs {
     /// name (`…_qs{cols}x{rows}a{aspect}.png`) unless --quilt gives it.
     quilt: PathBuf,
     /// The quilt's grid, COLSxROWS (overrides the name).
-    #[arg(long = "quilt", value_name = "COLSxROWS", value_parser = parse_size)]
+    #[arg(long = "quilt", value_name = "COLSxROWS", value_parser = parse_size, help_heading = "Input")]
     grid: Option<[u32; 2]>,
     #[command(flatten)]
     memory: crate::args::MemoryArgs,
     #[command(flatten)]
     display: DisplayArgs,
     /// Output size WxH (default: a Looking Glass calibration's panel, else one tile's size).
-    #[arg(long, value_parser = parse_size)]
+    #[arg(long, value_parser = parse_size, help_heading = "Display")]
     size: Option<[u32; 2]>,
     /// Output PNG of the spatial image.
     #[arg(long, value_name = "F.png", help_heading = "Output")]

@@ -11,6 +11,7 @@ mod gaussians_cmd;
 mod interleave_cmd;
 mod mask_cmd;
 mod mesh_cmd;
+mod method_arg;
 mod output;
 mod parse_errors;
 mod points_cmd;
@@ -43,19 +44,31 @@ struct Cli {
 enum Command {
     /// Render a triangle mesh (OBJ, PLY, STL, glTF; a generated torus scene when no file is
     /// given).
-    #[command(after_help = examples::MESH)]
+    #[command(
+        after_help = examples::MESH,
+        mut_arg("method", |a| method_arg::method_arg(a, "meshes", &autostereo::mesh::METHODS))
+    )]
     Mesh(mesh_cmd::MeshArgs),
     /// Render a point cloud as splats (PLY, LAS/LAZ, OBJ vertices; a generated scene when no
     /// file is given).
-    #[command(after_help = examples::POINTS)]
+    #[command(
+        after_help = examples::POINTS,
+        mut_arg("method", |a| method_arg::method_arg(a, "points", &autostereo::points::METHODS))
+    )]
     Points(points_cmd::PointsArgs),
     /// Render a volume (NRRD, NIfTI, MetaImage, VTK, DICOM series, raw; a built-in CT-like
     /// head when no file is given).
-    #[command(after_help = examples::VOLUME)]
+    #[command(
+        after_help = examples::VOLUME,
+        mut_arg("method", |a| method_arg::method_arg(a, "volumes", &autostereo::volume::METHODS))
+    )]
     Volume(volume_cmd::VolumeArgs),
     /// Render 3D Gaussian splats (graphdeco PLY, .splat, .spz; a generated scene when no file
     /// is given).
-    #[command(after_help = examples::GAUSSIANS)]
+    #[command(
+        after_help = examples::GAUSSIANS,
+        mut_arg("method", |a| method_arg::method_arg(a, "Gaussian splats", &autostereo::gaussians::METHODS))
+    )]
     Gaussians(gaussians_cmd::GaussiansArgs),
     /// An RGB-D image (colour + depth, or side by side) to any display, a quilt or per-view
     /// PNGs.

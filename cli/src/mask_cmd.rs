@@ -12,9 +12,9 @@ use crate::args::{check_output, gpu, parse_size, DisplayArgs};
 pub struct MaskArgs {
     #[command(flatten)]
     display: DisplayArgs,
-    /// Window size WxH in pixels.
-    #[arg(long, value_parser = parse_size)]
-    size: [u32; 2],
+    /// Image size WxH in pixels (default: a Looking Glass calibration's panel, else 512x512).
+    #[arg(long, value_parser = parse_size, help_heading = "Display")]
+    size: Option<[u32; 2]>,
     /// Evaluate the WGSL mask on the GPU instead of the Rust one (they must agree).
     #[arg(long)]
     gpu: bool,
@@ -29,7 +29,8 @@ pub struct MaskArgs {
 pub fn run(args: MaskArgs) -> Result<()> {
     check_output(&args.out)?;
     let display = args.display.display()?;
-    let [w, h] = args.size;
+    let size = crate::args::image_size(args.size, &display);
+    let [w, h] = size;
     // In the flag's words (the library's says "invalid image size", no flag), for either path.
     let pixels = u64::from(w) * u64::from(h);
     let most = autostereo::image_io::MAX_IMAGE_PIXELS;
@@ -42,7 +43,7 @@ pub fn run(args: MaskArgs) -> Result<()> {
     }
     let image = if args.gpu {
         let ctx = gpu()?;
-        MaskImageRenderer::new(&ctx.device)?.render(&ctx.device, &ctx.queue, &display, args.size)?
+        MaskImageRenderer::new(&ctx.device)?.render(&ctx.device, &ctx.queue, &display, size)?
     } else {
         RgbImage::check_size(w, h)?;
         let mask = display.mask();
@@ -60,7 +61,7 @@ pub fn run(args: MaskArgs) -> Result<()> {
     let fields = serde_json::json!({
         "display": args.display.display,
         "views": display.views(),
-        "size": args.size,
+        "size": size,
         "gpu": args.gpu,
     });
     crate::output::report_written(args.json, fields, &[args.out]);

@@ -46,7 +46,7 @@ pub enum BoundsArg {
 pub struct MeshArgs {
     /// Mesh file: OBJ, PLY with faces, STL, glTF (.gltf, .glb); a generated torus scene when
     /// omitted.
-    obj: Option<PathBuf>,
+    file: Option<PathBuf>,
     #[command(flatten)]
     common: RenderArgs,
     #[command(flatten, next_help_heading = "Method")]
@@ -134,7 +134,7 @@ impl MeshFlags {
 pub fn run(args: MeshArgs) -> Result<()> {
     args.common.check()?;
     args.mesh.check(args.common.method)?;
-    let mesh = args.mesh.load(args.obj.as_deref())?;
+    let mesh = args.mesh.load(args.file.as_deref())?;
     let bounds = mesh.bounds().context("the mesh has no vertices")?;
     let frame = args.common.frame(bounds)?;
     let ctx = gpu()?;
@@ -150,7 +150,7 @@ pub fn run(args: MeshArgs) -> Result<()> {
         renderer.as_mut(),
         &buffers,
         &frame,
-        args.common.timing.frames,
+        &args.common.timing,
     )?;
     let mut saved = crate::output::save_all(
         &ctx,

@@ -309,6 +309,24 @@ pub fn quilt_layout(
     })
 }
 
+/// Refuses an `--out` whose name already says another quilt (`x_qs5x9a0.75.png` for a 3×3
+/// quilt): the name would promise Looking Glass software a grid the file does not have.
+fn check_quilt_name(out: &Path, named: &Path) -> Result<()> {
+    let stem = out
+        .file_stem()
+        .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
+    let base = autostereo::render::quilt::strip_quilt_suffix(&stem);
+    if base != stem && named != out {
+        bail!(
+            "--out {}: the name says another quilt than this one, {}; name it {base}.png (the \
+             suffix is added), or pass --quilt COLSxROWS for another grid",
+            out.display(),
+            named.display()
+        );
+    }
+    Ok(())
+}
+
 /// `{stem}_{v}.png` next to `out`, `v` zero-padded to the digits of view `views − 1` (at
 /// least two), so that a listing sorts the files in view order.
 pub fn view_file(out: &Path, v: u32, views: u32) -> PathBuf {
@@ -396,6 +414,8 @@ pub fn write<S: ?Sized>(
             if scaled {
                 layout.tile = size;
             }
+            let named = layout.file_name(out);
+            check_quilt_name(out, &named)?;
             let [w, h] = layout.size();
             RgbImage::check_size(w, h).context("--output quilt")?;
             let mut quilt = RgbImage::new(w, h);
@@ -409,18 +429,15 @@ pub fn write<S: ?Sized>(
                     quilt.data[dst..dst + row].copy_from_slice(&tile.data[src..src + row]);
                 }
             }
-            let named = layout.file_name(out);
             quilt.save_png(&named)?;
             Ok(vec![named])
         }
         _ => {
             match spatial {
                 Some(image) => image.save_png(out)?,
-                None => {
-                    let target = SpatialTarget::new(&ctx.device, frame.size)?;
-                    renderer.render(&ctx.device, &ctx.queue, scene, frame, &target)?;
-                    target.read(&ctx.device, &ctx.queue)?.save_png(out)?;
-                }
+                None => renderer
+                    .render_image(&ctx.device, &ctx.queue, scene, frame)?
+                    .save_png(out)?,
             }
             Ok(vec![out.to_path_buf()])
         }

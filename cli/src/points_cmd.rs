@@ -139,13 +139,7 @@ pub fn run(args: PointsArgs) -> Result<()> {
     let splat_options = options.points.for_scene(&scene);
     let method = args.common.method;
     let mut renderer = options.points_renderer(device, &scene)?;
-    let run = timed(
-        &ctx,
-        renderer.as_mut(),
-        &scene,
-        &frame,
-        args.common.timing.frames,
-    )?;
+    let run = timed(&ctx, renderer.as_mut(), &scene, &frame, &args.common.timing)?;
     let mut saved = crate::output::save_all(
         &ctx,
         renderer.as_mut(),

@@ -8,7 +8,6 @@ use anyhow::{bail, Result};
 use autostereo::frame::Frame;
 use autostereo::render::Renderer;
 use autostereo::rgbd::{DepthMapOptions, RgbdImage, RgbdScene};
-use autostereo::target::SpatialTarget;
 use autostereo::warp::{RgbdWarp, WarpOptions};
 
 use crate::args::{parse_size, DisplayArgs};
@@ -113,7 +112,7 @@ pub fn run(args: RgbdArgs) -> Result<()> {
     let (device, queue) = (&ctx.device, &ctx.queue);
     let scene = RgbdScene::new(device, queue, &image)?;
     let mut warp = RgbdWarp::new(device, options)?;
-    let run = timed(&ctx, &mut warp, &scene, &frame, args.timing.frames)?;
+    let run = timed(&ctx, &mut warp, &scene, &frame, &args.timing)?;
     let mut saved = Saved {
         written: Vec::new(),
         turntable: None,
@@ -136,9 +135,7 @@ pub fn run(args: RgbdArgs) -> Result<()> {
             hole_mask: true,
             ..options
         });
-        let target = SpatialTarget::new(device, size)?;
-        warp.render(device, queue, &scene, &frame, &target)?;
-        let mask = target.read(device, queue)?;
+        let mask = warp.render_image(device, queue, &scene, &frame)?;
         mask.save_png(path)?;
         let share = crate::warp_cmd::hole_share(&mask);
         hole_share = Some(share);
@@ -172,14 +169,14 @@ pub fn run(args: RgbdArgs) -> Result<()> {
     let mut fields = fields;
     crate::run::merge(&mut fields, args.timing.fields());
     let summary = format!(
-        "rgbd: {}x{} for {} ({} views), {} warp, {:.2} ms/frame (median of {}, {:?}) on {}",
+        "rgbd: {}x{} for {} ({} views), {} warp, {:.2} ms/frame ({}, {:?}) on {}",
         size[0],
         size[1],
         args.display.display,
         frame.camera.views,
         WarpPathArg::of(options.path),
         run.ms,
-        args.timing.frames.unwrap_or(1),
+        args.timing.described(),
         run.timing,
         ctx.adapter_label()
     );

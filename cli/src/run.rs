@@ -10,10 +10,6 @@ use autostereo::render::Renderer;
 use autostereo::target::SpatialTarget;
 use autostereo::timing::{median, FrameTimer, TimingSource};
 
-/// Frames rendered before timing, when timing is asked for (`--frames`): lavapipe compiles
-/// shaders on first use.
-pub const WARM_UP_FRAMES: u32 = 2;
-
 /// The last frame's image and the median time over the timed frames.
 pub struct Timed {
     pub image: RgbImage,
@@ -26,18 +22,16 @@ pub struct Timed {
     pub how: Option<String>,
 }
 
-/// Render `frames` timed frames after the warm-up (`--frames N`), else one frame without a
-/// warm-up (nobody asked for timing: the one frame's time is still reported); keep the last
-/// image.
+/// Render the frames `frames` asks for (`--frames N`: N timed after a warm-up; else one frame
+/// without a warm-up, whose time is still reported); keep the last image.
 pub fn timed<S: ?Sized>(
     ctx: &GpuContext,
     renderer: &mut dyn Renderer<S>,
     scene: &S,
     frame: &Frame,
-    frames: Option<u32>,
+    frames: &crate::args::FramesArgs,
 ) -> Result<Timed> {
-    let warm_up = if frames.is_some() { WARM_UP_FRAMES } else { 0 };
-    let frames = frames.unwrap_or(1);
+    let (warm_up, frames) = (frames.warm_up(), frames.timed());
     let (device, queue) = (&ctx.device, &ctx.queue);
     let target = SpatialTarget::new(device, frame.size)?;
     let timer = FrameTimer::new(device, queue);
@@ -73,9 +67,8 @@ pub fn compare_with<S: ?Sized>(
         view_scale: [1.0; 2],
         ..frame.clone()
     };
-    let target = SpatialTarget::new(&ctx.device, frame.size)?;
-    renderer.render(&ctx.device, &ctx.queue, scene, &full, &target)?;
-    Ok(compare(image, &target.read(&ctx.device, &ctx.queue)?)?)
+    let oracle = renderer.render_image(&ctx.device, &ctx.queue, scene, &full)?;
+    Ok(compare(image, &oracle)?)
 }
 
 /// Print the run: one JSON object on stdout (`json`), else a summary on stderr.
@@ -174,13 +167,13 @@ pub fn run_summary(
         .filter(|how| how.contains("bands"))
         .map_or(String::new(), |how| format!(" ({how})"));
     format!(
-        "{} views, {}x{}{bands}, GPU memory {:.1} MiB, {:.2} ms/frame (median of {}, {:?}) on {}",
+        "{} views, {}x{}{bands}, GPU memory {:.1} MiB, {:.2} ms/frame ({}, {:?}) on {}",
         frame.camera.views,
         frame.size[0],
         frame.size[1],
         run.gpu_bytes as f64 / (1u64 << 20) as f64,
         run.ms,
-        common.timing.frames.unwrap_or(1),
+        common.timing.described(),
         run.timing,
         ctx.adapter_label()
     )

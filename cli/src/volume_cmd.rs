@@ -277,13 +277,7 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     let settings = options.volume.settings;
     settings.validate_for(&scene)?;
     let mut renderer = options.volume_renderer(&ctx.device)?;
-    let run = timed(
-        &ctx,
-        renderer.as_mut(),
-        &scene,
-        &frame,
-        args.common.timing.frames,
-    )?;
+    let run = timed(&ctx, renderer.as_mut(), &scene, &frame, &args.common.timing)?;
     let mut saved = crate::output::save_all(
         &ctx,
         renderer.as_mut(),

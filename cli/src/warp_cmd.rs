@@ -7,7 +7,6 @@ use anyhow::{bail, Result};
 use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::render::{Method, Renderer};
-use autostereo::target::SpatialTarget;
 use autostereo::warp::{WarpOptions, WarpPath};
 use autostereo::RendererOptions;
 
@@ -149,9 +148,7 @@ pub fn hole_report<S: ?Sized>(
     let mut options = *options;
     options.warp.hole_mask = true;
     let mut warp = build(&options)?;
-    let target = SpatialTarget::new(&ctx.device, frame.size)?;
-    warp.render(&ctx.device, &ctx.queue, scene, frame, &target)?;
-    let mask = target.read(&ctx.device, &ctx.queue)?;
+    let mask = warp.render_image(&ctx.device, &ctx.queue, scene, frame)?;
     if let Some(path) = &args.synthesis.hole_mask {
         mask.save_png(path)?;
         crate::output::say_written(json, std::slice::from_ref(path));

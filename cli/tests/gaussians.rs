@@ -9,6 +9,7 @@
 
 mod common;
 
+use common::cli_out as cli;
 use std::path::{Path, PathBuf};
 
 use autostereo::image_io::{compare, RgbImage};
@@ -22,20 +23,6 @@ fn out(name: &str) -> PathBuf {
 /// The test scene as `gaussians_{tag}.ply` (each test its own file: they run in parallel).
 fn scene(tag: &str) -> PathBuf {
     common::gaussians_ply::write(&common::out_dir(), &format!("gaussians_{tag}.ply"))
-}
-
-/// Run the CLI; (success, stdout, stderr).
-fn cli(args: &[&str]) -> (bool, String, String) {
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_autostereo"))
-        .args(args)
-        .env("RUST_LOG", "off")
-        .output()
-        .unwrap();
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
 }
 
 /// `gaussians FILE --size 64x48 --json ARGS…`: its JSON report.

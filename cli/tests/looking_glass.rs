@@ -5,25 +5,11 @@
 
 mod common;
 
+use common::cli_out as run;
 use std::path::PathBuf;
-use std::process::Command;
 
 fn sample(name: &str) -> String {
     format!("{}/../data/{name}", env!("CARGO_MANIFEST_DIR"))
-}
-
-/// Run the CLI; (success, stdout, stderr).
-fn run(args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_autostereo"))
-        .args(args)
-        .env("RUST_LOG", "off")
-        .output()
-        .unwrap();
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
 }
 
 fn out(name: &str) -> PathBuf {

@@ -21,6 +21,16 @@ use glam::{Mat3, Quat, Vec3};
 
 use crate::camera::Bounds;
 use crate::error::{Error, Result};
+use crate::render::Method;
+
+/// The methods that render 3D Gaussian splats; [`GaussianSplatter::new`] refuses the others
+/// with the reason.
+pub const METHODS: [Method; 4] = [
+    Method::SinglePass,
+    Method::NPass,
+    Method::SingleView,
+    Method::Tiled,
+];
 
 /// Highest spherical-harmonics degree read (graphdeco's trainer stops at 3; `.spz` degree 4 is
 /// refused by name).

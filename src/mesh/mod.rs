@@ -21,6 +21,10 @@ use glam::Vec3;
 
 use crate::camera::Bounds;
 use crate::error::{Error, Result};
+use crate::render::Method;
+
+/// The methods that render meshes: every one ([`crate::RendererOptions::mesh_renderer`]).
+pub const METHODS: [Method; 7] = Method::ALL;
 
 /// Colour given to vertices when the file has neither vertex nor material colours.
 pub const DEFAULT_COLOR: [f32; 4] = [0.8, 0.8, 0.8, 1.0];

@@ -26,6 +26,18 @@ pub use scene::{GpuSplat, SplatScene};
 
 use crate::camera::Bounds;
 use crate::error::{Error, Result};
+use crate::render::Method;
+
+/// The methods that render point splats: all but [`Method::Mrt`], which [`PointSplatter::new`]
+/// refuses with the reason (splat images cannot blend).
+pub const METHODS: [Method; 6] = [
+    Method::SinglePass,
+    Method::NPass,
+    Method::SingleView,
+    Method::Tiled,
+    Method::Layered,
+    Method::Warp,
+];
 
 /// Colour of points whose file has none.
 pub const DEFAULT_COLOR: [f32; 3] = [0.8, 0.8, 0.8];

@@ -189,8 +189,9 @@ impl QuiltLayout {
         format!("_qs{}x{}a{aspect}", self.cols, self.rows)
     }
 
-    /// `path` named as Looking Glass software expects: the suffix before the extension, unless
-    /// the name already ends in this layout's suffix.
+    /// `path` named as Looking Glass software expects: this layout's suffix before the
+    /// extension, in place of a suffix the name already ends in (`x_qs3x3a1.png` for a 5×9
+    /// quilt is `x_qs5x9a0.75.png`, not `x_qs3x3a1_qs5x9a0.75.png`).
     pub fn file_name(&self, path: &Path) -> PathBuf {
         let stem = path
             .file_stem()
@@ -202,7 +203,23 @@ impl QuiltLayout {
         let ext = path
             .extension()
             .map_or_else(|| "png".to_string(), |e| e.to_string_lossy().into_owned());
-        path.with_file_name(format!("{stem}{suffix}.{ext}"))
+        let base = strip_quilt_suffix(&stem);
+        path.with_file_name(format!("{base}{suffix}.{ext}"))
+    }
+}
+
+/// `stem` without the Looking Glass suffix it ends in (`_qs{cols}x{rows}a{aspect}`), if any.
+pub fn strip_quilt_suffix(stem: &str) -> &str {
+    let Some(at) = stem.rfind("_qs") else {
+        return stem;
+    };
+    let whole = stem[at + 3..]
+        .chars()
+        .all(|c| c.is_ascii_digit() || matches!(c, 'x' | 'a' | '.'));
+    if whole && parse_quilt_name(&stem[at..]).is_some() {
+        &stem[..at]
+    } else {
+        stem
     }
 }
 
@@ -267,6 +284,14 @@ mod tests {
         assert_eq!(parse_quilt_name(name), Some((5, 9, 0.75)));
         let square = QuiltLayout::with_grid(3, 3, [64, 64], 8).unwrap();
         assert_eq!(square.suffix(), "_qs3x3a1");
+        // A name's own suffix is replaced, not doubled; other `_qs` text is kept.
+        assert_eq!(
+            q.file_name(Path::new("out/dragon_qs3x3a1.png")),
+            Path::new("out/dragon_qs5x9a0.75.png")
+        );
+        assert_eq!(strip_quilt_suffix("a_qs3x3a1.7778"), "a");
+        assert_eq!(strip_quilt_suffix("a_qs3x3a1_final"), "a_qs3x3a1_final");
+        assert_eq!(strip_quilt_suffix("a_qsx"), "a_qsx");
         assert_eq!(parse_quilt_name("x_qs3x3a1.png"), Some((3, 3, 1.0)));
         assert_eq!(parse_quilt_name("plain.png"), None);
         assert_eq!(parse_quilt_name("x_qs0x3a1.png"), None);

@@ -65,6 +65,20 @@ pub trait Renderer<S: ?Sized> {
         queue.submit([encoder.finish()]);
         crate::readback::wait_idle(device)
     }
+
+    /// One frame into a target of its own, read back: for tools and tests that want the
+    /// image (a live viewer renders into its own target and never reads back).
+    fn render_image(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        scene: &S,
+        frame: &Frame,
+    ) -> Result<crate::image_io::RgbImage> {
+        let target = SpatialTarget::new(device, frame.size)?;
+        self.render(device, queue, scene, frame, &target)?;
+        target.read(device, queue)
+    }
 }
 
 /// The start of every `prepare`: forget what was prepared (so that a failure half-way leaves

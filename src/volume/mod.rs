@@ -25,6 +25,18 @@ use glam::{Mat3, Vec3};
 
 use crate::camera::Bounds;
 use crate::error::{Error, Result};
+use crate::render::Method;
+
+/// The methods that render volumes: all but [`Method::Mrt`], which [`VolumeRaycaster::new`]
+/// refuses with the reason (a volume has no depth buffer to share).
+pub const METHODS: [Method; 6] = [
+    Method::SinglePass,
+    Method::NPass,
+    Method::SingleView,
+    Method::Tiled,
+    Method::Layered,
+    Method::Warp,
+];
 
 /// Most voxels a volume may have (4 bytes each on the CPU, 8 on the GPU): 1 Gi.
 pub const MAX_VOXELS: u64 = 1 << 30;

@@ -133,11 +133,9 @@ pub fn render<S: ?Sized>(
     frame: &autostereo::frame::Frame,
 ) -> RgbImage {
     let ctx = gpu();
-    let target = autostereo::target::SpatialTarget::new(&ctx.device, frame.size).unwrap();
     renderer
-        .render(&ctx.device, &ctx.queue, scene, frame, &target)
-        .unwrap();
-    target.read(&ctx.device, &ctx.queue).unwrap()
+        .render_image(&ctx.device, &ctx.queue, scene, frame)
+        .unwrap()
 }
 
 /// `volume` on the GPU, classified by the preset `tf` and turned 0.5 rad about y and 0.3 rad

@@ -217,7 +217,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
         eprintln!("wrote {}", dir.join("BENCHMARKS.md").display());
     }
     if args.json {
-        println!("{}", serde_json::to_string(&report)?);
+        super::print_json(&report)?;
     }
     Ok(())
 }

@@ -209,7 +209,29 @@ fn report_dir(dir: &std::path::Path) -> Result<()> {
 /// Write one file of the `--report` folder, the error naming the path.
 pub(crate) fn write_report_file(path: &std::path::Path, contents: impl AsRef<[u8]>) -> Result<()> {
     std::fs::write(path, contents)
-        .with_context(|| format!("--report: cannot write {}", path.display()))
+        .with_context(|| format!("--report: cannot write {}", path.display()))?;
+    note_written(path);
+    Ok(())
+}
+
+/// The files this run wrote (the report, its JSON, its plots), in order, for `--json`'s
+/// `written`: the report's modules each write their own plots.
+static WRITTEN: std::sync::Mutex<Vec<PathBuf>> = std::sync::Mutex::new(Vec::new());
+
+/// Record `path` as written.
+pub(crate) fn note_written(path: &std::path::Path) {
+    if let Ok(mut written) = WRITTEN.lock() {
+        written.push(path.to_path_buf());
+    }
+}
+
+/// `results` as one JSON object on stdout, with `written` listing every file the run wrote.
+pub(crate) fn print_json(results: &impl Serialize) -> Result<()> {
+    let mut value = serde_json::to_value(results)?;
+    let written = WRITTEN.lock().map(|w| w.clone()).unwrap_or_default();
+    value["written"] = serde_json::json!(written);
+    println!("{value}");
+    Ok(())
 }
 
 pub fn run(args: BenchArgs) -> Result<()> {
@@ -222,6 +244,9 @@ pub fn run(args: BenchArgs) -> Result<()> {
                 .with_context(|| format!("{} is not a `bench --json` output", json.display()))?;
             report::write(dir, &results)?;
             eprintln!("wrote {}", dir.join("BENCHMARKS.md").display());
+            if args.json {
+                print_json(&serde_json::json!({ "from_json": json }))?;
+            }
             return Ok(());
         }
     }
@@ -364,7 +389,7 @@ pub fn run(args: BenchArgs) -> Result<()> {
         eprintln!("wrote {}", dir.join("BENCHMARKS.md").display());
     }
     if args.json {
-        println!("{}", serde_json::to_string(&results)?);
+        print_json(&results)?;
     }
     eprintln!("done in {:.0} s", results.seconds);
     Ok(())
@@ -391,16 +416,13 @@ pub(crate) fn image(
     renderer: &mut autostereo::AnyRenderer,
     frame: &autostereo::frame::Frame,
 ) -> Result<autostereo::image_io::RgbImage> {
-    let target = SpatialTarget::new(&ctx.device, frame.size)?;
-    autostereo::render::Renderer::render(
+    Ok(autostereo::render::Renderer::render_image(
         renderer,
         &ctx.device,
         &ctx.queue,
         &scene.data,
         frame,
-        &target,
-    )?;
-    Ok(target.read(&ctx.device, &ctx.queue)?)
+    )?)
 }
 
 pub(crate) fn time_frame(

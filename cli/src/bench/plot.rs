@@ -92,6 +92,7 @@ pub fn draw(path: &std::path::Path, axes: &Axes, series: &[Series]) -> anyhow::R
         (false, false) => finish!(builder.build_cartesian_2d(x0..x1, y0..y1)?),
     }
     root.present()?;
+    super::note_written(path);
     Ok(true)
 }
 

@@ -8,8 +8,6 @@ use autostereo::mesh::{CoverBounds, Visibility};
 use autostereo::points::SplatDepth;
 use autostereo::points::{GroupCount, SplatScene};
 use autostereo::render::Method;
-use autostereo::render::Renderer;
-use autostereo::target::SpatialTarget;
 use autostereo::timing::FrameTimer;
 use autostereo::volume::AlphaMode;
 use autostereo::volume::VolumeSettings;
@@ -18,7 +16,7 @@ use autostereo::{VolumeOptions, VolumePath};
 use serde::{Deserialize, Serialize};
 
 use super::scenes::{self, BenchScene};
-use super::{time_frame, Plan};
+use super::{image, time_frame, Plan};
 
 /// One setting of one study: its speed and its distance from the reference.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -44,12 +42,6 @@ pub struct Economy {
 }
 
 type Ctx = autostereo::gpu::GpuContext;
-
-fn image(ctx: &Ctx, scene: &BenchScene, r: &mut AnyRenderer, frame: &Frame) -> Result<RgbImage> {
-    let target = SpatialTarget::new(&ctx.device, frame.size)?;
-    r.render(&ctx.device, &ctx.queue, &scene.data, frame, &target)?;
-    Ok(target.read(&ctx.device, &ctx.queue)?)
-}
 
 /// One study's fixed parts: where, how long, against what.
 struct Probe<'a> {

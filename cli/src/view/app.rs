@@ -6,12 +6,8 @@ use std::time::Instant;
 
 use anyhow::{Context, Result};
 use autostereo::display::Display;
-use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
-use autostereo::render::quilt::QuiltLayout;
-use autostereo::render::{
-    Method, OutputBlit, Renderer, StereoCompositor, StereoFormat, OUTPUT_FORMATS,
-};
+use autostereo::render::{Method, OutputBlit, Renderer, StereoCompositor, OUTPUT_FORMATS};
 use autostereo::target::SpatialTarget;
 use autostereo::AnyRenderer;
 use winit::application::ApplicationHandler;
@@ -25,11 +21,15 @@ use super::scene::{self, ViewScene};
 use super::{Preview, ViewArgs};
 
 mod controls;
+mod frames;
 mod images;
 mod memory;
+mod report;
+mod window_checks;
 
 use images::copyable_target;
 use memory::MemoryLog;
+use window_checks::{check_monitor, check_window_size, largest_surface};
 
 /// Frames after which `--screenshot` is taken (and the viewer exits, without `--keep-open`)
 /// without `--quit-after-frames`.
@@ -56,7 +56,12 @@ pub fn run(args: ViewArgs) -> Result<()> {
     event_loop.run_app(&mut app)?;
     match app.error {
         Some(e) => Err(e),
-        None => Ok(()),
+        None => {
+            if let Some(state) = &app.state {
+                report::print(state, &app.args);
+            }
+            Ok(())
+        }
     }
 }
 
@@ -101,6 +106,10 @@ struct State {
     last_ms: f64,
     /// What an exercise run records of its memory.
     memory: MemoryLog,
+    /// The exercise run's report, made when it ends (printed by `report::print`).
+    exercise_report: Option<serde_json::Value>,
+    /// Files written (the screenshot), for `--json`.
+    written: Vec<std::path::PathBuf>,
 }
 
 impl ApplicationHandler for App {
@@ -181,90 +190,6 @@ impl ApplicationHandler for App {
 
 /// Say so when the window's monitor is not the display's panel (a Looking Glass calibration
 /// knows its panel's size): the mask then does not meet the lenses it was made for.
-fn check_monitor(window: &Window, display: &Display) {
-    let (Some(panel), Some(monitor)) = (display.panel_size(), window.current_monitor()) else {
-        return;
-    };
-    let size = monitor.size();
-    let name = monitor.name().unwrap_or_else(|| "?".into());
-    if [size.width, size.height] == panel {
-        eprintln!(
-            "monitor {name} ({}x{}) has the calibration's panel size",
-            size.width, size.height
-        );
-    } else {
-        eprintln!(
-            "note: this window is on monitor {name} ({}x{}), but the calibration's panel is \
-             {}x{}: the image matches the lenses only on the Looking Glass itself (--fullscreen \
-             N with N its monitor)",
-            size.width, size.height, panel[0], panel[1]
-        );
-    }
-}
-
-/// The largest surface side among the adapters the viewer could choose (`WGPU_BACKEND`,
-/// `WGPU_ADAPTER_NAME`), and that adapter's name; wgpu's default limit (8192) where none is
-/// found (the context's own error then says so).
-fn largest_surface(instance: &wgpu::Instance) -> (u32, String) {
-    let backends = autostereo::gpu::GpuOptions::default().backends();
-    let name = std::env::var("WGPU_ADAPTER_NAME")
-        .ok()
-        .filter(|n| !n.is_empty())
-        .map(|n| n.to_lowercase());
-    block_on(instance.enumerate_adapters(backends))
-        .into_iter()
-        .filter_map(|adapter| {
-            let info = adapter.get_info();
-            let chosen = name
-                .as_ref()
-                .is_none_or(|n| info.name.to_lowercase().contains(n));
-            chosen.then(|| {
-                (
-                    adapter.limits().max_texture_dimension_2d,
-                    format!("{} ({:?})", info.name, info.backend),
-                )
-            })
-        })
-        .max_by_key(|(limit, _)| *limit)
-        .unwrap_or_else(|| {
-            (
-                wgpu::Limits::default().max_texture_dimension_2d,
-                "any adapter".into(),
-            )
-        })
-}
-
-/// Refuse a window larger than `limit` per side (the surface's largest on `adapter`).
-/// `fullscreen`: the size is the monitor's, not `--size`.
-fn check_window_size(size: [u32; 2], fullscreen: bool, limit: u32, adapter: &str) -> Result<()> {
-    if size[0] > limit || size[1] > limit {
-        let what = if fullscreen {
-            "--fullscreen: the monitor's size"
-        } else {
-            "--size"
-        };
-        anyhow::bail!(
-            "{what} {}x{}: larger than this adapter's largest surface ({limit} per side on \
-             {adapter})",
-            size[0],
-            size[1]
-        );
-    }
-    Ok(())
-}
-
-/// Run a future that does not wait on anything outside (wgpu's adapter list) to its end.
-fn block_on<F: std::future::Future>(future: F) -> F::Output {
-    let mut future = std::pin::pin!(future);
-    let mut cx = std::task::Context::from_waker(std::task::Waker::noop());
-    loop {
-        if let std::task::Poll::Ready(out) = future.as_mut().poll(&mut cx) {
-            return out;
-        }
-        std::thread::yield_now();
-    }
-}
-
 impl State {
     fn new(event_loop: &ActiveEventLoop, args: &ViewArgs) -> Result<Self> {
         let mut attributes = Window::default_attributes()
@@ -398,6 +323,8 @@ impl State {
             frames: 0,
             last_ms: 0.0,
             memory: MemoryLog::default(),
+            exercise_report: None,
+            written: Vec::new(),
         };
         state.update_position();
         Ok(state)
@@ -418,73 +345,6 @@ impl State {
         self.config.height = size.height;
         self.surface.configure(&self.ctx.device, &self.config);
         self.update_position();
-    }
-
-    /// The frame of the current camera settings on `display`, `size` pixels. The display's
-    /// origin is where the window sits, plus --origin (a panel not at the screen's top-left).
-    fn frame_on(&self, args: &ViewArgs, mut display: Display, size: [u32; 2]) -> Result<Frame> {
-        // Wrapping, as the mask's own sums: it uses the origin only modulo 2³².
-        display.origin = [
-            self.position[0].wrapping_add(args.display.origin[0]),
-            self.position[1].wrapping_add(args.display.origin[1]),
-        ];
-        let base = args.camera.camera(self.scene.bounds, &display, size)?;
-        // The orbit starts from the command line's camera and turns about what it looks at.
-        let mut camera = self
-            .orbit
-            .apply(&base, args.camera.pivot(self.scene.bounds));
-        camera.separation *= self.separation_scale;
-        camera.focal_distance *= self.focal_scale;
-        Ok(Frame::new(camera, display, size)?)
-    }
-
-    /// What to render this frame: (frame, which target: 0 the window's, 1 and 2 the eyes' or
-    /// the quilt's tile, and where in the window's to copy the tile, for the quilt preview).
-    #[allow(clippy::type_complexity)]
-    fn frames(&self, args: &ViewArgs) -> Result<Vec<(Frame, usize, Option<[u32; 2]>)>> {
-        let size = [self.config.width, self.config.height];
-        let panel = self.displays[self.display].1.clone();
-        let n = panel.views();
-        let centre = self.preview_view.unwrap_or((n - 1) / 2).min(n - 1);
-        let one = |v: u32| Display::parse(&format!("view:{n},{v}"));
-        Ok(match (self.preview, self.preview.stereo()) {
-            (Preview::Spatial, _) => vec![(self.frame_on(args, panel, size)?, 0, None)],
-            (Preview::View, _) => vec![(self.frame_on(args, one(centre)?, size)?, 0, None)],
-            (Preview::Quilt, _) => {
-                // Looking Glass order: view 0 bottom-left, left to right, bottom to top. The
-                // grid `--output quilt` writes for this display (a Looking Glass's own), its
-                // tiles shrunk to fit the window.
-                let grid = crate::output::quilt_layout(&panel, n, size, None)?;
-                let tile = [(size[0] / grid.cols).max(1), (size[1] / grid.rows).max(1)];
-                let layout = QuiltLayout { tile, ..grid };
-                (0..n)
-                    .map(|v| {
-                        Ok((
-                            self.frame_on(args, one(v)?, tile)?,
-                            1,
-                            Some(layout.tile_origin(v)),
-                        ))
-                    })
-                    .collect::<Result<_>>()?
-            }
-            (_, Some(format)) => {
-                // Side by side: each eye half the window's width (the "half" form).
-                let eye = match format {
-                    StereoFormat::SideBySide => [(size[0] / 2).max(1), size[1]],
-                    _ => size,
-                };
-                // The command line's default pair (a quarter of the cone apart), or from the
-                // chosen view on.
-                let [l, r] = crate::output::default_eyes(n);
-                let left = self.preview_view.map_or(l, |v| v.min(n - 1));
-                let right = (left + r - l).min(n - 1);
-                vec![
-                    (self.frame_on(args, one(left)?, eye)?, 1, None),
-                    (self.frame_on(args, one(right)?, eye)?, 2, None),
-                ]
-            }
-            (_, None) => unreachable!("every other preview is stereo"),
-        })
     }
 
     /// Render and present one frame; `Ok(true)` when the run is over.
@@ -579,6 +439,7 @@ impl State {
         if let Some(path) = args.screenshot.as_ref().filter(|_| self.frames == shot_at) {
             self.screenshot(&surface_texture.texture, target)?
                 .save_png(path)?;
+            self.written.push(path.clone());
         }
         self.ctx.queue.present(surface_texture);
         self.last_ms = start.elapsed().as_secs_f64() * 1e3;
@@ -610,7 +471,7 @@ impl State {
             report["period_frames"] = self.exercise_period(args).into();
             // The test's heap bound depends on the backend (see tests/viewer.rs).
             report["backend"] = self.ctx.info().backend.to_str().into();
-            println!("{report}");
+            self.exercise_report = Some(report);
         }
         Ok(done)
     }

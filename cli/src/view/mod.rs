@@ -125,6 +125,11 @@ pub struct ViewArgs {
     /// Exit after K presented frames.
     #[arg(long, help_heading = "Scripts")]
     quit_after_frames: Option<u32>,
+    /// Print one JSON object when the viewer ends: the scene, method, display, window size,
+    /// frames presented and the files written (`written`: the screenshot); an --exercise
+    /// run's memory report in it.
+    #[arg(long, help_heading = "Scripts")]
+    json: bool,
     /// Move the window to X,Y after frame K (tests: the mask phase must follow): K:X,Y (X, Y
     /// negative as --position's).
     #[arg(long, value_name = "K:X,Y", value_parser = parse_move, help_heading = "Scripts")]

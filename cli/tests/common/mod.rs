@@ -14,6 +14,12 @@ pub mod xvfb;
 
 /// Run the CLI with logging off; return (success, stderr).
 pub fn cli(args: &[&str]) -> (bool, String) {
+    let (ok, _, stderr) = cli_out(args);
+    (ok, stderr)
+}
+
+/// Run the CLI with logging off; return (success, stdout, stderr).
+pub fn cli_out(args: &[&str]) -> (bool, String, String) {
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_autostereo"))
         .args(args)
         .env("RUST_LOG", "off")
@@ -21,8 +27,27 @@ pub fn cli(args: &[&str]) -> (bool, String) {
         .unwrap();
     (
         out.status.success(),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
         String::from_utf8_lossy(&out.stderr).into_owned(),
     )
+}
+
+/// A run that must succeed and print one JSON object (pass `--json` in `args`): that object.
+pub fn cli_json(args: &[&str]) -> serde_json::Value {
+    let (ok, stdout, stderr) = cli_out(args);
+    assert!(ok, "{args:?}: {stderr}");
+    serde_json::from_str(stdout.trim()).unwrap_or_else(|e| panic!("{args:?}: {e}: {stdout}"))
+}
+
+/// A run that must fail cleanly, naming every one of `words`: its stderr.
+pub fn cli_refused(args: &[&str], words: &[&str]) -> String {
+    let (ok, _, stderr) = cli_out(args);
+    assert!(!ok, "{args:?} succeeded");
+    assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
+    for w in words {
+        assert!(stderr.contains(w), "{args:?} does not say {w:?}: {stderr}");
+    }
+    stderr
 }
 
 /// `args` as a run that writes nothing and only reports (`--json`) where a render command has

@@ -2,7 +2,7 @@
 //! refused by name (not a panic in wgpu or winit), and a display spec's error says what is wrong
 //! with its number or its calibration file, naming `--display`.
 
-mod common;
+use crate::common;
 
 use common::xvfb::xvfb_or_clear_error;
 
@@ -127,4 +127,29 @@ fn the_quilt_preview_uses_the_grid_the_quilt_output_writes() {
         }
     }
     assert!(off <= 9, "view 44: {off} of 4500 subpixels off its tile");
+}
+
+/// `view --json` says what the window showed and the screenshot it wrote, as every other
+/// command's `--json` does (before: the viewer had no `--json`).
+#[test]
+fn the_viewer_json_names_its_screenshot() {
+    let Some(x) = xvfb_or_clear_error() else {
+        return;
+    };
+    let shot = common::out_dir().join("vocabulary_view_json.png");
+    let _ = std::fs::remove_file(&shot);
+    let (ok, stdout, stderr) = x.cli(&[
+        "view",
+        "--size",
+        "64x48",
+        "--screenshot",
+        shot.to_str().unwrap(),
+        "--json",
+    ]);
+    assert!(ok, "{stderr}");
+    let json: serde_json::Value = serde_json::from_str(stdout.trim()).unwrap();
+    assert_eq!(json["written"], serde_json::json!([shot]), "{json}");
+    assert_eq!(json["window_size"], serde_json::json!([64, 48]), "{json}");
+    assert_eq!(json["frames"], 3, "{json}");
+    assert!(shot.is_file());
 }

@@ -4,7 +4,7 @@
 //! --screenshot` exits once the file is written; `--fov` is checked in degrees where it is
 //! parsed.
 
-mod common;
+use crate::common;
 
 use std::path::PathBuf;
 use std::process::{Command, Stdio};
@@ -12,12 +12,12 @@ use std::time::{Duration, Instant};
 
 use common::cli;
 
-fn out(name: &str) -> PathBuf {
+pub(crate) fn out(name: &str) -> PathBuf {
     common::out_dir().join(name)
 }
 
 /// A small, fast volume render of the built-in head into `png` with `extra` flags.
-fn volume(png: &std::path::Path, extra: &[&str]) -> (bool, String) {
+pub(crate) fn volume(png: &std::path::Path, extra: &[&str]) -> (bool, String) {
     let mut args = vec![
         "volume",
         "--builtin-size",

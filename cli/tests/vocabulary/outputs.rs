@@ -5,46 +5,15 @@
 //! ignore is refused by name, one frame is rendered unless timing is asked for, and `--help`
 //! is grouped with examples. Each test fails on the binary before these changes.
 
-mod common;
+use crate::common;
 
+use common::{cli_json as json, cli_out as run, cli_refused as refused};
 use std::path::PathBuf;
 
 fn out(name: &str) -> PathBuf {
     let dir = common::out_dir().join("vocabulary_outputs");
     std::fs::create_dir_all(&dir).unwrap();
     dir.join(name)
-}
-
-/// Run the CLI; (success, stdout, stderr).
-fn run(args: &[&str]) -> (bool, String, String) {
-    let o = std::process::Command::new(env!("CARGO_BIN_EXE_autostereo"))
-        .args(args)
-        .env("RUST_LOG", "off")
-        .output()
-        .unwrap();
-    (
-        o.status.success(),
-        String::from_utf8_lossy(&o.stdout).into_owned(),
-        String::from_utf8_lossy(&o.stderr).into_owned(),
-    )
-}
-
-/// A run that must succeed with `--json`: its object.
-fn json(args: &[&str]) -> serde_json::Value {
-    let (ok, stdout, stderr) = run(args);
-    assert!(ok, "{args:?}: {stderr}");
-    serde_json::from_str(stdout.trim()).unwrap_or_else(|e| panic!("{args:?}: {e}: {stdout}"))
-}
-
-/// A run that must fail cleanly: its stderr, checked to name every one of `words`.
-fn refused(args: &[&str], words: &[&str]) -> String {
-    let (ok, _, stderr) = run(args);
-    assert!(!ok, "{args:?} succeeded");
-    assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
-    for w in words {
-        assert!(stderr.contains(w), "{args:?} does not say {w:?}: {stderr}");
-    }
-    stderr
 }
 
 const SMALL: [&str; 2] = ["--size", "32x24"];

@@ -4,7 +4,7 @@
 //! (`--origin -5,-3`, no `=` needed), and the mask at a negative origin is the origin-0 mask
 //! moved.
 
-mod common;
+use crate::common;
 
 use std::path::PathBuf;
 use std::process::Command;
