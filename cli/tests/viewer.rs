@@ -11,7 +11,7 @@ use std::process::Command;
 
 use autostereo::image_io::{compare, RgbImage};
 
-use common::xvfb::{xvfb_or_clear_error, Xvfb};
+use common::xvfb::{headless, xvfb_or_clear_error, Xvfb};
 
 fn out(name: &str) -> PathBuf {
     common::out_dir().join(name)
@@ -36,34 +36,24 @@ fn presented_frames_equal_the_headless_render_at_the_window_position() {
         ("volume", "volume", &["--builtin-size", "96"][..]),
     ] {
         let shot = out(&format!("viewer_{kind}.png"));
-        let headless = out(&format!("viewer_{kind}_headless.png"));
-        let (ok, _, err) = x.cli(&[
-            "view",
-            "--kind",
-            kind,
-            "--position",
-            "37,21",
-            "--size",
-            "160x120",
-            "--quit-after-frames",
-            "3",
-            "--screenshot",
-            shot.to_str().unwrap(),
-        ]);
-        assert!(ok, "{kind}: {err}");
-        let mut args = vec![
-            command,
-            "--origin",
-            "37,21",
-            "--size",
-            "160x120",
-            "--out",
-            headless.to_str().unwrap(),
-        ];
+        let headless_png = out(&format!("viewer_{kind}_headless.png"));
+        x.screenshot(
+            &[
+                "--kind",
+                kind,
+                "--position",
+                "37,21",
+                "--size",
+                "160x120",
+                "--quit-after-frames",
+                "3",
+            ],
+            &shot,
+        );
+        let mut args = vec!["--size", "160x120"];
         args.extend_from_slice(extra);
-        let (ok, err) = common::cli(&args);
-        assert!(ok, "{kind} headless: {err}");
-        assert_same(kind, &shot, &headless);
+        headless(command, &args, "37,21", &headless_png);
+        assert_same(kind, &shot, &headless_png);
     }
 }
 
@@ -168,37 +158,23 @@ fn moving_the_window_moves_the_mask_phase() {
     let Some(x) = xvfb_or_clear_error() else {
         return;
     };
-    let shot = out("viewer_moved.png");
-    let (ok, _, err) = x.cli(&[
-        "view",
-        "--kind",
-        "mesh",
-        "--position",
-        "10,10",
-        "--size",
-        "160x120",
-        "--move-after",
-        "2:51,33",
-        "--quit-after-frames",
-        "8",
-        "--screenshot",
-        shot.to_str().unwrap(),
-    ]);
-    assert!(ok, "{err}");
-    let render = |origin: &str, name: &str| {
-        let path = out(name);
-        let (ok, err) = common::cli(&[
+    let shot = x.screenshot(
+        &[
+            "--kind",
             "mesh",
-            "--origin",
-            origin,
+            "--position",
+            "10,10",
             "--size",
             "160x120",
-            "--out",
-            path.to_str().unwrap(),
-        ]);
-        assert!(ok, "{err}");
-        path
-    };
+            "--move-after",
+            "2:51,33",
+            "--quit-after-frames",
+            "8",
+        ],
+        &out("viewer_moved.png"),
+    );
+    let render =
+        |origin: &str, name: &str| headless("mesh", &["--size", "160x120"], origin, &out(name));
     let moved = render("51,33", "viewer_moved_headless.png");
     assert_same("after the move", &shot, &moved);
     // And the phase really changed: the image at the old position differs.
@@ -530,9 +506,8 @@ fn a_gaussian_splat_file_is_presented_as_the_gaussians_command_renders_it() {
     ];
     for (name, flags) in [("plain", &[][..]), ("camera", &camera[..])] {
         let shot = out(&format!("viewer_gaussians_{name}.png"));
-        let headless = out(&format!("viewer_gaussians_{name}_headless.png"));
+        let headless_png = out(&format!("viewer_gaussians_{name}_headless.png"));
         let mut args = vec![
-            "view",
             file,
             "--position",
             "37,21",
@@ -540,26 +515,13 @@ fn a_gaussian_splat_file_is_presented_as_the_gaussians_command_renders_it() {
             "96x64",
             "--quit-after-frames",
             "2",
-            "--screenshot",
-            shot.to_str().unwrap(),
         ];
         args.extend_from_slice(flags);
-        let (ok, _, err) = x.cli(&args);
-        assert!(ok, "{name}: {err}");
-        let mut args = vec![
-            "gaussians",
-            file,
-            "--origin",
-            "37,21",
-            "--size",
-            "96x64",
-            "--out",
-            headless.to_str().unwrap(),
-        ];
+        x.screenshot(&args, &shot);
+        let mut args = vec![file, "--size", "96x64"];
         args.extend_from_slice(flags);
-        let (ok, err) = common::cli(&args);
-        assert!(ok, "{name} headless: {err}");
-        assert_same(name, &shot, &headless);
+        headless("gaussians", &args, "37,21", &headless_png);
+        assert_same(name, &shot, &headless_png);
     }
     let a = RgbImage::load_png(&out("viewer_gaussians_plain.png")).unwrap();
     let b = RgbImage::load_png(&out("viewer_gaussians_camera.png")).unwrap();

@@ -201,7 +201,7 @@ pub const SUGGESTED_SHARE_SAMPLES: f32 = 0.5;
 
 /// The probing stride through transparent material USAGE.md suggests: 2 voxels at the default
 /// step, which keeps ≥ 45 dB against the exact image even on phantoms with shells one or two
-/// voxels thin (tests/empty_stride.rs; 8 loses up to 16 dB there), and ≥ 55 dB on the head and
+/// voxels thin (cli/tests/empty_stride.rs; 8 loses up to 16 dB there), and ≥ 55 dB on the head and
 /// brainsmall at 512² (docs/volumes/BENCHMARKS.md).
 pub const SUGGESTED_EMPTY_STRIDE: u32 = 4;
 

@@ -244,7 +244,7 @@ impl<S: ?Sized> SceneWarp<S> {
     /// Copy one texel of the nearness just rendered. Mesa 22.3's llvmpipe (GL) can start a
     /// compute dispatch that reads a texture while the rasteriser threads are still writing it
     /// from the render pass before: under load the row-bounds pass then read stale nearness
-    /// (tests/outputs.rs saw 1.5 % of subpixels off, about one run in eight). A copy waits for
+    /// (cli/tests/outputs.rs saw 1.5 % of subpixels off, about one run in eight). A copy waits for
     /// the writes to finish; elsewhere it is one texel.
     fn settle_references(&self, encoder: &mut wgpu::CommandEncoder, images: &ReferenceImages) {
         encoder.copy_texture_to_texture(

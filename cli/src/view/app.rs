@@ -469,7 +469,7 @@ impl State {
             let mut report = self.memory.report();
             report["frames"] = self.frames.into();
             report["period_frames"] = self.exercise_period(args).into();
-            // The test's heap bound depends on the backend (see tests/viewer.rs).
+            // The test's heap bound depends on the backend (see cli/tests/viewer.rs).
             report["backend"] = self.ctx.info().backend.to_str().into();
             self.exercise_report = Some(report);
         }

@@ -1,6 +1,7 @@
 //! An X server of the tests' own (Xvfb; CI installs it: .ci/run), for the viewer's tests in a
 //! real window.
 
+use std::path::{Path, PathBuf};
 use std::process::{Child, Command};
 
 /// An X server of our own, stopped on drop.
@@ -59,6 +60,28 @@ impl Xvfb {
             String::from_utf8_lossy(&out.stderr).into_owned(),
         )
     }
+}
+
+impl Xvfb {
+    /// `view ARGS --screenshot SHOT`, which must succeed: where the presented frame was saved.
+    pub fn screenshot(&self, args: &[&str], shot: &Path) -> PathBuf {
+        let mut all = vec!["view"];
+        all.extend_from_slice(args);
+        all.extend(["--screenshot", shot.to_str().unwrap()]);
+        let (ok, _, err) = self.cli(&all);
+        assert!(ok, "{all:?}: {err}");
+        shot.to_path_buf()
+    }
+}
+
+/// `command ARGS` rendered headless at `--origin ORIGIN` into `path` (which it returns): the
+/// image the viewer must present in a window at that position (the mask follows the window).
+pub fn headless(command: &str, args: &[&str], origin: &str, path: &Path) -> PathBuf {
+    let mut all = vec![command, "--origin", origin, "--out", path.to_str().unwrap()];
+    all.extend_from_slice(args);
+    let (ok, err) = super::cli(&all);
+    assert!(ok, "{all:?}: {err}");
+    path.to_path_buf()
 }
 
 impl Drop for Xvfb {

@@ -10,7 +10,7 @@ use std::path::PathBuf;
 use std::process::Command;
 
 use autostereo::image_io::{compare, RgbImage};
-use common::xvfb::xvfb_or_clear_error;
+use common::xvfb::{headless, xvfb_or_clear_error};
 
 fn out(name: &str) -> PathBuf {
     common::out_dir().join(name)
@@ -124,43 +124,31 @@ fn view_takes_a_negative_position_and_the_mask_follows_it() {
     let Some(x) = xvfb_or_clear_error() else {
         return;
     };
-    let shot = out("viewer_negative_position.png");
-    let (ok, _, err) = x.cli(&[
-        "view",
-        "--kind",
-        "mesh",
-        "--position",
-        "-100,0",
-        "--size",
-        "160x120",
-        "--quit-after-frames",
-        "3",
-        "--screenshot",
-        shot.to_str().unwrap(),
-    ]);
-    assert!(ok, "{err}");
-    let headless = |origin: &str, name: &str| {
-        let path = out(name);
-        let (ok, err) = common::cli(&[
+    let shot = x.screenshot(
+        &[
+            "--kind",
             "mesh",
-            "--origin",
-            origin,
+            "--position",
+            "-100,0",
             "--size",
             "160x120",
-            "--out",
-            path.to_str().unwrap(),
-        ]);
-        assert!(ok, "--origin {origin}: {err}");
+            "--quit-after-frames",
+            "3",
+        ],
+        &out("viewer_negative_position.png"),
+    );
+    let rendered_at = |origin: &str, name: &str| {
+        let path = headless("mesh", &["--size", "160x120"], origin, &out(name));
         RgbImage::load_png(&path).unwrap()
     };
     let presented = RgbImage::load_png(&shot).unwrap();
     let diff = compare(
         &presented,
-        &headless("-100,0", "negative_position_headless.png"),
+        &rendered_at("-100,0", "negative_position_headless.png"),
     )
     .unwrap();
     assert!(diff.frac_off_2 <= 0.001, "at --origin -100,0: {diff:?}");
     // Clamped to 0 (the window's position read as 0,0) it would be another image.
-    let diff = compare(&presented, &headless("0,0", "negative_position_at_0.png")).unwrap();
+    let diff = compare(&presented, &rendered_at("0,0", "negative_position_at_0.png")).unwrap();
     assert!(diff.frac_off_2 > 0.01, "the mask did not follow: {diff:?}");
 }
