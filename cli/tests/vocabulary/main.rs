@@ -11,4 +11,5 @@ mod errors_flags;
 mod numbers;
 mod origin;
 mod outputs;
+mod refusals;
 mod view;

@@ -149,6 +149,10 @@ fn view_takes_a_negative_position_and_the_mask_follows_it() {
     .unwrap();
     assert!(diff.frac_off_2 <= 0.001, "at --origin -100,0: {diff:?}");
     // Clamped to 0 (the window's position read as 0,0) it would be another image.
-    let diff = compare(&presented, &rendered_at("0,0", "negative_position_at_0.png")).unwrap();
+    let diff = compare(
+        &presented,
+        &rendered_at("0,0", "negative_position_at_0.png"),
+    )
+    .unwrap();
     assert!(diff.frac_off_2 > 0.01, "the mask did not follow: {diff:?}");
 }
