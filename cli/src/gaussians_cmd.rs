@@ -10,7 +10,7 @@ use autostereo::render::Method;
 use autostereo::RendererOptions;
 
 use crate::args::{gpu, RenderArgs};
-use crate::run::{compare_with, merge, report, run_fields, run_summary, timed};
+use crate::run::{render_and_save, report, run_summary, Rendered};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum SortArg {
@@ -118,41 +118,29 @@ pub fn run(args: GaussiansArgs) -> Result<()> {
     let scene = GaussianScene::new(device, &gaussians)?;
     let (count, sh_degree) = (gaussians.len(), gaussians.sh_degree);
     drop(gaussians);
-    let run = timed(&ctx, renderer.as_mut(), &scene, &frame, &args.common.timing)?;
-    let saved = crate::output::save_all(
-        &ctx,
-        renderer.as_mut(),
-        &scene,
-        &frame,
-        bounds,
-        &args.common,
-        &run.image,
-    )?;
-    let diff = if args.common.compare {
-        let npass = RendererOptions {
-            method: Method::NPass,
-            ..options
-        };
-        let mut npass = npass.gaussians_renderer(device)?;
-        Some(compare_with(
-            &ctx,
-            npass.as_mut(),
-            &scene,
-            &frame,
-            &run.image,
-        )?)
-    } else {
-        None
-    };
     let sort = args.gaussians.sort.name();
-    let mut extra = serde_json::json!({
+    let extra = serde_json::json!({
         "gaussians": count,
         "sh_degree": sh_degree,
         "sort": sort,
         "load_ms": load_ms,
     });
-    merge(&mut extra, saved.fields());
-    let fields = run_fields(&ctx, &args.common, &frame, &run, extra);
+    let npass = RendererOptions {
+        method: Method::NPass,
+        ..options
+    };
+    let Rendered { run, fields, diff } = render_and_save(
+        &ctx,
+        &args.common,
+        &options,
+        renderer.as_mut(),
+        |o| o.gaussians_renderer(device),
+        || Ok(npass.gaussians_renderer(device)?),
+        &scene,
+        &frame,
+        bounds,
+        extra,
+    )?;
     let summary = format!(
         "{}: {count} Gaussians (SH degree {sh_degree}, loaded in {load_ms:.0} ms), {sort} sort, {}",
         args.common.method.name(),

@@ -9,8 +9,7 @@ use autostereo::render::Method;
 use autostereo::{MeshOptions, RendererOptions};
 
 use crate::args::{gpu, RenderArgs};
-use crate::run::{compare_with, merge, report, run_fields, run_summary, timed};
-use crate::warp_cmd::hole_report;
+use crate::run::{render_and_save, report, run_summary, Rendered};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum VisibilityArg {
@@ -145,53 +144,23 @@ pub fn run(args: MeshArgs) -> Result<()> {
         ..args.common.options()
     };
     let mut renderer = options.mesh_renderer(device)?;
-    let run = timed(
+    let Rendered {
+        run,
+        mut fields,
+        diff,
+    } = render_and_save(
         &ctx,
+        &args.common,
+        &options,
         renderer.as_mut(),
-        &buffers,
-        &frame,
-        &args.common.timing,
-    )?;
-    let mut saved = crate::output::save_all(
-        &ctx,
-        renderer.as_mut(),
+        |o| o.mesh_renderer(device),
+        || Ok(RendererOptions::new(Method::NPass).mesh_renderer(device)?),
         &buffers,
         &frame,
         bounds,
-        &args.common,
-        &run.image,
+        serde_json::json!({ "triangles": mesh.triangle_count() }),
     )?;
-    let diff = if args.common.compare {
-        let mut npass = RendererOptions::new(Method::NPass).mesh_renderer(device)?;
-        Some(compare_with(
-            &ctx,
-            npass.as_mut(),
-            &buffers,
-            &frame,
-            &run.image,
-        )?)
-    } else {
-        None
-    };
     let method_name = args.common.method.name();
-    let mut extra = serde_json::json!({ "triangles": mesh.triangle_count() });
-    if args.common.method == Method::Warp {
-        let build = |o: &RendererOptions| o.mesh_renderer(device);
-        merge(
-            &mut extra,
-            hole_report(
-                &ctx,
-                &args.common,
-                &options,
-                build,
-                &buffers,
-                &frame,
-                &mut saved,
-            )?,
-        );
-    }
-    merge(&mut extra, saved.fields());
-    let mut fields = run_fields(&ctx, &args.common, &frame, &run, extra);
     if args.common.method == Method::SinglePass {
         fields["visibility"] = options.mesh_single_pass(device).visibility.name().into();
         fields["bounds"] = format!("{:?}", args.mesh.bounds).to_lowercase().into();

@@ -11,8 +11,7 @@ use autostereo::render::Method;
 use autostereo::{PointOptions, RendererOptions};
 
 use crate::args::{gpu, RenderArgs};
-use crate::run::{compare_with, merge, report, run_fields, run_summary, timed};
-use crate::warp_cmd::hole_report;
+use crate::run::{render_and_save, report, run_summary, Rendered};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum DepthArg {
@@ -137,35 +136,7 @@ pub fn run(args: PointsArgs) -> Result<()> {
         ..args.common.options()
     };
     let splat_options = options.points.for_scene(&scene);
-    let method = args.common.method;
     let mut renderer = options.points_renderer(device, &scene)?;
-    let run = timed(&ctx, renderer.as_mut(), &scene, &frame, &args.common.timing)?;
-    let mut saved = crate::output::save_all(
-        &ctx,
-        renderer.as_mut(),
-        &scene,
-        &frame,
-        bounds,
-        &args.common,
-        &run.image,
-    )?;
-    let diff = if args.common.compare {
-        let npass = RendererOptions {
-            method: Method::NPass,
-            ..options
-        };
-        let mut npass = npass.points_renderer(device, &scene)?;
-        Some(compare_with(
-            &ctx,
-            npass.as_mut(),
-            &scene,
-            &frame,
-            &run.image,
-        )?)
-    } else {
-        None
-    };
-    let method_name = args.common.method.name();
     let extra = serde_json::json!({
         "depth": splat_options.depth.name(),
         "points": splats.len(),
@@ -179,24 +150,23 @@ pub fn run(args: PointsArgs) -> Result<()> {
         "epsilon": splat_options.epsilon,
         "median_radius": scene.median_radius,
     });
-    let mut extra = extra;
-    if method == Method::Warp {
-        let build = |o: &RendererOptions| o.points_renderer(device, &scene);
-        merge(
-            &mut extra,
-            hole_report(
-                &ctx,
-                &args.common,
-                &options,
-                build,
-                &scene,
-                &frame,
-                &mut saved,
-            )?,
-        );
-    }
-    merge(&mut extra, saved.fields());
-    let fields = run_fields(&ctx, &args.common, &frame, &run, extra);
+    let npass = RendererOptions {
+        method: Method::NPass,
+        ..options
+    };
+    let Rendered { run, fields, diff } = render_and_save(
+        &ctx,
+        &args.common,
+        &options,
+        renderer.as_mut(),
+        |o| o.points_renderer(device, &scene),
+        || Ok(npass.points_renderer(device, &scene)?),
+        &scene,
+        &frame,
+        bounds,
+        extra,
+    )?;
+    let method_name = args.common.method.name();
     let estimated = match (completion.normals_estimated, completion.radii_estimated) {
         (false, false) => String::new(),
         (n, r) => format!(

@@ -178,3 +178,52 @@ pub fn run_summary(
         ctx.adapter_label()
     )
 }
+
+/// What a render command has made once its renderer has run: the timed run, the `--json`
+/// fields (the run's, the command's `extra`, the files written, the warp's holes) and the
+/// comparison with the N-pass (`--compare`).
+pub struct Rendered {
+    pub run: Timed,
+    pub fields: serde_json::Value,
+    pub diff: Option<ImageDiff>,
+}
+
+/// The steps every render command takes after loading, in one place: the timed run of
+/// `renderer`, its outputs (`save_all`), with `--compare` the `oracle`'s frame beside it, with
+/// `--method warp` the hole report (`build` makes the warp again with a hole mask), then the
+/// fields. `extra`: the command's own fields.
+#[allow(clippy::too_many_arguments)]
+pub fn render_and_save<S: ?Sized>(
+    ctx: &GpuContext,
+    common: &crate::args::RenderArgs,
+    options: &autostereo::RendererOptions,
+    renderer: &mut dyn Renderer<S>,
+    build: impl FnOnce(&autostereo::RendererOptions) -> autostereo::Result<Box<dyn Renderer<S>>>,
+    oracle: impl FnOnce() -> Result<Box<dyn Renderer<S>>>,
+    scene: &S,
+    frame: &Frame,
+    bounds: autostereo::camera::Bounds,
+    mut extra: serde_json::Value,
+) -> Result<Rendered> {
+    let run = timed(ctx, renderer, scene, frame, &common.timing)?;
+    let mut saved =
+        crate::output::save_all(ctx, renderer, scene, frame, bounds, common, &run.image)?;
+    let diff = match common.compare {
+        true => Some(compare_with(
+            ctx,
+            oracle()?.as_mut(),
+            scene,
+            frame,
+            &run.image,
+        )?),
+        false => None,
+    };
+    if common.method == autostereo::render::Method::Warp {
+        let holes =
+            crate::warp_cmd::hole_report(ctx, common, options, build, scene, frame, &mut saved)?;
+        merge(&mut extra, holes);
+    }
+    merge(&mut extra, saved.fields());
+    let fields = run_fields(ctx, common, frame, &run, extra);
+    Ok(Rendered { run, fields, diff })
+}

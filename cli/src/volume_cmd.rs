@@ -10,9 +10,8 @@ use autostereo::volume::{phantom, TransferFunction, Volume};
 use glam::Mat4;
 
 use crate::args::{gpu, RenderArgs};
-use crate::run::{compare_with, merge, report, run_fields, run_summary, timed};
+use crate::run::{render_and_save, report, run_summary, Rendered};
 pub use crate::volume_render_args::{AlphaArg, PathArg, VolumeRenderArgs};
-use crate::warp_cmd::hole_report;
 use autostereo::volume::VolumeRaycaster;
 use autostereo::volume::VolumeSettings;
 use autostereo::RendererOptions;
@@ -277,28 +276,12 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     let settings = options.volume.settings;
     settings.validate_for(&scene)?;
     let mut renderer = options.volume_renderer(&ctx.device)?;
-    let run = timed(&ctx, renderer.as_mut(), &scene, &frame, &args.common.timing)?;
-    let mut saved = crate::output::save_all(
-        &ctx,
-        renderer.as_mut(),
-        &scene,
-        &frame,
-        bounds,
-        &args.common,
-        &run.image,
-    )?;
     let step = settings.step_length(&scene);
     // Against the exact N-pass: the probes would otherwise thin out the oracle's samples too,
     // and a coarser step than the default is an approximation of the default's image.
     let oracle = VolumeSettings {
         step: Some(step.min(scene.default_step_length()) / scene.voxel),
         ..settings.exact()
-    };
-    let diff = if args.common.compare {
-        let mut npass = VolumeRaycaster::new(&ctx.device, Method::NPass, oracle)?;
-        Some(compare_with(&ctx, &mut npass, &scene, &frame, &run.image)?)
-    } else {
-        None
     };
     let method = args.common.method.name();
     let extra = serde_json::json!({
@@ -321,24 +304,24 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         "thin_alpha": settings.thin_alpha,
         "transparent_cells": scene.cells().transparent_share(&scene.transfer),
     });
-    let mut extra = extra;
-    if args.common.method == Method::Warp {
-        let build = |o: &RendererOptions| o.volume_renderer(&ctx.device);
-        merge(
-            &mut extra,
-            hole_report(
-                &ctx,
-                &args.common,
-                &options,
-                build,
-                &scene,
-                &frame,
-                &mut saved,
-            )?,
-        );
-    }
-    merge(&mut extra, saved.fields());
-    let fields = run_fields(&ctx, &args.common, &frame, &run, extra);
+    let Rendered { run, fields, diff } = render_and_save(
+        &ctx,
+        &args.common,
+        &options,
+        renderer.as_mut(),
+        |o| o.volume_renderer(&ctx.device),
+        || {
+            Ok(Box::new(VolumeRaycaster::new(
+                &ctx.device,
+                Method::NPass,
+                oracle,
+            )?))
+        },
+        &scene,
+        &frame,
+        bounds,
+        extra,
+    )?;
     let summary = format!(
         "{method}: volume {:?}, {}",
         volume.dims,
