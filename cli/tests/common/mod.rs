@@ -61,3 +61,21 @@ pub fn measuring<'a>(args: &[&'a str]) -> Vec<&'a str> {
     }
     args
 }
+
+/// Subpixels of `tile` more than 2/255 off the `tile`-sized region of `image` at `origin`
+/// (a quilt's tile, a preview's): how far that region is from the tile rendered alone.
+pub fn tile_subpixels_off(
+    image: &autostereo::image_io::RgbImage,
+    [tx, ty]: [u32; 2],
+    tile: &autostereo::image_io::RgbImage,
+) -> usize {
+    let mut off = 0;
+    for y in 0..tile.height {
+        for x in 0..tile.width {
+            for c in 0..3 {
+                off += usize::from(image.get(tx + x, ty + y, c).abs_diff(tile.get(x, y, c)) > 2);
+            }
+        }
+    }
+    off
+}

@@ -116,16 +116,7 @@ fn the_quilt_preview_uses_the_grid_the_quilt_output_writes() {
         drawn > 150,
         "view 44 shows the scene: {drawn} of 1500 pixels"
     );
-    let mut off = 0;
-    for y in 0..th {
-        for x in 0..tw {
-            let q = (((ty + y) * 300 + tx + x) * 3) as usize;
-            let t = ((y * tw + x) * 3) as usize;
-            for c in 0..3 {
-                off += usize::from(preview.data[q + c].abs_diff(tile.data[t + c]) > 2);
-            }
-        }
-    }
+    let off = common::tile_subpixels_off(&preview, [tx, ty], &tile);
     assert!(off <= 9, "view 44: {off} of 4500 subpixels off its tile");
 }
 
