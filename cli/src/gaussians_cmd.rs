@@ -48,8 +48,9 @@ pub struct GaussianFlags {
     #[arg(long, value_enum, default_value = "gpu")]
     sort: SortArg,
     /// Single pass: every subpixel evaluates the SH itself instead of reading a colour table
-    /// filled once per Gaussian and view (the same image; slower, 8 bytes per Gaussian and view
-    /// less memory; scenes whose table would not fit a storage binding do this by themselves).
+    /// filled once per Gaussian and view (the same image, 8 bytes per Gaussian and view less
+    /// memory; slower at few views, faster at a hundred: docs/GAUSSIANS.md; scenes whose table
+    /// would not fit a storage binding do this by themselves).
     #[arg(long)]
     sh_per_subpixel: bool,
 }

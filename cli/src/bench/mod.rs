@@ -206,6 +206,14 @@ fn report_dir(dir: &std::path::Path) -> Result<()> {
     })
 }
 
+/// "one frame" or "median of N frames", as the reports say what each time is.
+pub(crate) fn frames_text(frames: u32) -> String {
+    match frames {
+        1 => "one frame".into(),
+        n => format!("median of {n} frames"),
+    }
+}
+
 /// Write one file of the `--report` folder, the error naming the path.
 pub(crate) fn write_report_file(path: &std::path::Path, contents: impl AsRef<[u8]>) -> Result<()> {
     std::fs::write(path, contents)

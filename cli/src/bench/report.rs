@@ -65,10 +65,10 @@ pub fn write(dir: &Path, r: &Results) -> Result<()> {
     writeln!(md, "- CPU: {}", r.cpu)?;
     writeln!(
         md,
-        "- {} run, median of {} frames after 2 warm-up frames per measurement ({} for the \
-         trade-off and economy studies), GPU time from {}",
+        "- {} run, {} after 2 warm-up frames per measurement ({} for the trade-off and \
+         economy studies), GPU time from {}",
         r.run_name(),
-        r.frames,
+        super::frames_text(r.frames),
         r.study_frames,
         r.timing
     )?;
