@@ -179,6 +179,22 @@ pub fn defaults_of<T: clap::Args + clap::FromArgMatches>() -> T {
     T::from_arg_matches(&matches).expect("a flag group's defaults are values")
 }
 
+/// The long flags of the group `T` that this process's command line gives (`--tf`, `--tf=x`),
+/// in their order there: to name the flag a refusal is about.
+pub fn flags_given_of<T: clap::Args>() -> Vec<String> {
+    let command = T::augment_args(clap::Command::new("flags"));
+    let longs: Vec<String> = command
+        .get_arguments()
+        .filter_map(|a| a.get_long().map(|l| format!("--{l}")))
+        .collect();
+    std::env::args()
+        .filter_map(|a| {
+            let flag = a.split('=').next().unwrap_or_default().to_string();
+            longs.contains(&flag).then_some(flag)
+        })
+        .collect()
+}
+
 /// Refuse two outputs of one run at the same path (the second would overwrite the first).
 pub fn distinct_outputs(paths: &[Option<&std::path::Path>]) -> Result<()> {
     let given: Vec<&std::path::Path> = paths.iter().flatten().copied().collect();
@@ -206,7 +222,7 @@ pub fn not_an_input(out: &std::path::Path, inputs: &[&std::path::Path]) -> Resul
 }
 
 /// The same file: the same path, or both existing and canonically the same.
-fn same_file(a: &std::path::Path, b: &std::path::Path) -> bool {
+pub fn same_file(a: &std::path::Path, b: &std::path::Path) -> bool {
     a == b
         || matches!(
             (std::fs::canonicalize(a), std::fs::canonicalize(b)),
@@ -336,8 +352,25 @@ pub struct RenderArgs {
 }
 
 impl RenderArgs {
-    /// Fail early on what can be checked before loading anything.
-    pub fn check(&self) -> Result<()> {
+    /// Fail early on what can be checked before loading anything. `methods`: those of the
+    /// command's primitive (`primitive`, as a user says it); `input`: the file it reads.
+    pub fn check(
+        &self,
+        primitive: &str,
+        methods: &[Method],
+        input: Option<&std::path::Path>,
+    ) -> Result<()> {
+        if let Some(input) = input {
+            crate::claims::inputs(&[input]);
+            if let Some(out) = &self.output.out {
+                not_an_input(out, &[input])?;
+            }
+        }
+        if !methods.contains(&Method::Warp) {
+            if let Some(flag) = self.warp.given() {
+                bail!("{flag}: {primitive} have no warp method, so no warp flags (drop it)");
+            }
+        }
         self.output
             .check(self.compare || self.timing.frames.is_some())?;
         let scaled = [Method::NPass, Method::Tiled, Method::Layered, Method::Mrt];
@@ -345,18 +378,11 @@ impl RenderArgs {
             Some([w, h]) => Some(format!("--view-size {w}x{h}")),
             None => (self.view_scale != 1.0).then(|| format!("--view-scale {}", self.view_scale)),
         };
-        if let Some(flag) = flag.as_ref().filter(|_| !scaled.contains(&self.method)) {
+        if let Some(flag) = flag.filter(|_| !scaled.contains(&self.method)) {
             bail!(
                 "{flag}: the {} method renders no view images to scale (only n-pass, tiled, \
                  layered and mrt do)",
                 self.method
-            );
-        }
-        if self.compare && self.method == Method::NPass && flag.is_none() {
-            bail!(
-                "--compare: the n-pass method is the oracle --compare renders, so it would be \
-                 compared with itself (with --view-scale or --view-size it measures the smaller \
-                 views)"
             );
         }
         self.warp.check(self.method)?;

@@ -98,7 +98,11 @@ pub fn builtin_scene() -> Gaussians {
 }
 
 pub fn run(args: GaussiansArgs) -> Result<()> {
-    args.common.check()?;
+    args.common.check(
+        "Gaussian splats",
+        &autostereo::gaussians::METHODS,
+        args.file.as_deref(),
+    )?;
     args.gaussians.check(args.common.method)?;
     let start = Instant::now();
     let gaussians = args.gaussians.load(args.file.as_deref())?;
@@ -136,7 +140,7 @@ pub fn run(args: GaussiansArgs) -> Result<()> {
         &options,
         renderer.as_mut(),
         |o| o.gaussians_renderer(device),
-        || Ok(npass.gaussians_renderer(device)?),
+        npass,
         &scene,
         &frame,
         bounds,

@@ -131,7 +131,8 @@ impl MeshFlags {
 }
 
 pub fn run(args: MeshArgs) -> Result<()> {
-    args.common.check()?;
+    args.common
+        .check("meshes", &autostereo::mesh::METHODS, args.file.as_deref())?;
     args.mesh.check(args.common.method)?;
     let mesh = args.mesh.load(args.file.as_deref())?;
     let bounds = mesh.bounds().context("the mesh has no vertices")?;
@@ -154,7 +155,10 @@ pub fn run(args: MeshArgs) -> Result<()> {
         &options,
         renderer.as_mut(),
         |o| o.mesh_renderer(device),
-        || Ok(RendererOptions::new(Method::NPass).mesh_renderer(device)?),
+        RendererOptions {
+            method: Method::NPass,
+            ..options
+        },
         &buffers,
         &frame,
         bounds,

@@ -309,22 +309,59 @@ pub fn quilt_layout(
     })
 }
 
-/// Refuses an `--out` whose name already says another quilt (`x_qs5x9a0.75.png` for a 3×3
-/// quilt): the name would promise Looking Glass software a grid the file does not have.
-fn check_quilt_name(out: &Path, named: &Path) -> Result<()> {
+/// The quilt `--output quilt` writes for `frame`: `--view-size` / `--view-scale` set the
+/// tiles' size, over a Looking Glass's own.
+pub fn frame_quilt(frame: &Frame, output: &OutputArgs) -> Result<QuiltLayout> {
+    let scaled = frame.view_scale != [1.0; 2];
+    let size = if scaled {
+        frame.view_size()
+    } else {
+        frame.size
+    };
+    let mut layout = quilt_layout(&frame.display, frame.camera.views, size, output.quilt_grid)?;
+    if scaled {
+        layout.tile = size;
+    }
+    Ok(layout)
+}
+
+/// Refuses an `--out` whose name already says another quilt than `layout` (`x_qs5x9a0.75.png`
+/// for a 3×3 quilt): the name would promise Looking Glass software a grid or aspect the file
+/// does not have. An aspect within 1 % is this quilt's (as reading a quilt allows).
+pub fn check_quilt_name(out: &Path, layout: &QuiltLayout) -> Result<()> {
+    let name = out
+        .file_name()
+        .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
     let stem = out
         .file_stem()
         .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
     let base = autostereo::render::quilt::strip_quilt_suffix(&stem);
-    if base != stem && named != out {
+    let Some(said) = (base != stem)
+        .then(|| autostereo::render::quilt::parse_quilt_name(&name))
+        .flatten()
+    else {
+        return Ok(());
+    };
+    if layout.says(said) {
+        return Ok(());
+    }
+    let (cols, rows, aspect) = said;
+    let ours = format!("{base}{}.png", layout.suffix());
+    if (cols, rows) == (layout.cols, layout.rows) {
         bail!(
-            "--out {}: the name says another quilt than this one, {}; name it {base}.png (the \
-             suffix is added), or pass --quilt COLSxROWS for another grid",
+            "--out {}: the name says views of aspect {aspect}, but this quilt's are {:.4}; name \
+             it {ours} (or {base}.png: the suffix is added)",
             out.display(),
-            named.display()
+            layout.aspect()
         );
     }
-    Ok(())
+    bail!(
+        "--out {}: the name says a {cols}x{rows} quilt, but this one is {}x{} ({ours}); pass \
+         --quilt {cols}x{rows} for that grid, or name it {base}.png (the suffix is added)",
+        out.display(),
+        layout.cols,
+        layout.rows
+    );
 }
 
 /// `{stem}_{v}.png` next to `out`, `v` zero-padded to the digits of view `views − 1` (at
@@ -370,6 +407,7 @@ pub fn write<S: ?Sized>(
         Ok(target)
     };
     if let Some((format, eye)) = output.format.stereo(frame.size) {
+        crate::claims::claim(out, "--out")?;
         let [l, r] = eye_views(output.eyes, views)?;
         let (left, right) = (one(l, eye, false)?, one(r, eye, false)?);
         let target = SpatialTarget::new(&ctx.device, format.output_size(eye))?;
@@ -392,30 +430,22 @@ pub fn write<S: ?Sized>(
     }
     match output.format {
         OutputArg::Views => {
-            let mut written = Vec::new();
-            for v in 0..views {
-                let path = view_file(out, v, views);
+            let written: Vec<PathBuf> = (0..views).map(|v| view_file(out, v, views)).collect();
+            for path in &written {
+                crate::claims::claim(path, "--out")?;
+            }
+            for (v, path) in (0..views).zip(&written) {
                 one(v, frame.size, false)?
                     .read(&ctx.device, &ctx.queue)?
-                    .save_png(&path)?;
-                written.push(path);
+                    .save_png(path)?;
             }
             Ok(written)
         }
         OutputArg::Quilt => {
-            // --view-size / --view-scale set the tiles' size, over a Looking Glass's own.
-            let scaled = frame.view_scale != [1.0; 2];
-            let size = if scaled {
-                frame.view_size()
-            } else {
-                frame.size
-            };
-            let mut layout = quilt_layout(&frame.display, views, size, output.quilt_grid)?;
-            if scaled {
-                layout.tile = size;
-            }
+            let layout = frame_quilt(frame, output)?;
             let named = layout.file_name(out);
-            check_quilt_name(out, &named)?;
+            check_quilt_name(out, &layout)?;
+            crate::claims::claim(&named, "--out")?;
             let [w, h] = layout.size();
             RgbImage::check_size(w, h).context("--output quilt")?;
             let mut quilt = RgbImage::new(w, h);
@@ -433,6 +463,7 @@ pub fn write<S: ?Sized>(
             Ok(vec![named])
         }
         _ => {
+            crate::claims::claim(out, "--out")?;
             match spatial {
                 Some(image) => image.save_png(out)?,
                 None => renderer

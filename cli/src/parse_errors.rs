@@ -47,7 +47,10 @@ pub fn explain(error: &clap::Error, args: &[String]) -> Option<String> {
 fn commands_with(name: &str) -> Vec<String> {
     crate::Cli::command()
         .get_subcommands()
-        .filter(|c| c.get_arguments().any(|a| a.get_long() == Some(name)))
+        .filter(|c| {
+            c.get_arguments()
+                .any(|a| a.get_long() == Some(name) && !a.is_hide_set())
+        })
         .map(|c| c.get_name().to_string())
         .collect()
 }

@@ -119,7 +119,8 @@ fn parse_groups(s: &str) -> Result<GroupCount, String> {
 }
 
 pub fn run(args: PointsArgs) -> Result<()> {
-    args.common.check()?;
+    args.common
+        .check("points", &autostereo::points::METHODS, args.file.as_deref())?;
     args.points.check(args.common.method)?;
     let start = Instant::now();
     let cloud = PointFlags::cloud(args.file.as_deref())?;
@@ -160,7 +161,7 @@ pub fn run(args: PointsArgs) -> Result<()> {
         &options,
         renderer.as_mut(),
         |o| o.points_renderer(device, &scene),
-        || Ok(npass.points_renderer(device, &scene)?),
+        npass,
         &scene,
         &frame,
         bounds,

@@ -80,6 +80,7 @@ pub fn run(args: RgbdArgs) -> Result<()> {
         .into_iter()
         .flatten()
         .collect();
+    crate::claims::inputs(&inputs);
     for out in [args.output.out.as_deref(), args.warp.hole_mask.as_deref()]
         .into_iter()
         .flatten()
@@ -136,7 +137,7 @@ pub fn run(args: RgbdArgs) -> Result<()> {
             ..options
         });
         let mask = warp.render_image(device, queue, &scene, &frame)?;
-        mask.save_png(path)?;
+        crate::claims::save_png(&mask, path, "--hole-mask")?;
         let share = crate::warp_cmd::hole_share(&mask);
         hole_share = Some(share);
         if !args.output.json {

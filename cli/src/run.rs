@@ -189,29 +189,37 @@ pub struct Rendered {
 }
 
 /// The steps every render command takes after loading, in one place: the timed run of
-/// `renderer`, its outputs (`save_all`), with `--compare` the `oracle`'s frame beside it, with
-/// `--method warp` the hole report (`build` makes the warp again with a hole mask), then the
-/// fields. `extra`: the command's own fields.
+/// `renderer`, its outputs (`save_all`), with `--compare` the frame `build` makes of `oracle`
+/// (the exact N-pass at full view size) beside it, with `--method warp` the hole report
+/// (`build` makes the warp again with a hole mask), then the fields. `extra`: the command's own
+/// fields. A run that is the oracle itself is refused before anything is rendered.
 #[allow(clippy::too_many_arguments)]
 pub fn render_and_save<S: ?Sized>(
     ctx: &GpuContext,
     common: &crate::args::RenderArgs,
     options: &autostereo::RendererOptions,
     renderer: &mut dyn Renderer<S>,
-    build: impl FnOnce(&autostereo::RendererOptions) -> autostereo::Result<Box<dyn Renderer<S>>>,
-    oracle: impl FnOnce() -> Result<Box<dyn Renderer<S>>>,
+    build: impl Fn(&autostereo::RendererOptions) -> autostereo::Result<Box<dyn Renderer<S>>>,
+    oracle: autostereo::RendererOptions,
     scene: &S,
     frame: &Frame,
     bounds: autostereo::camera::Bounds,
     mut extra: serde_json::Value,
 ) -> Result<Rendered> {
+    if common.compare && *options == oracle && frame.view_size() == frame.size {
+        anyhow::bail!(
+            "--compare: this run is the N-pass oracle itself (same settings, full-size views), \
+             so it would be compared with itself; smaller views (--view-scale < 1, a smaller \
+             --view-size) or an approximation (volume --step, --empty-stride) are measured"
+        );
+    }
     let run = timed(ctx, renderer, scene, frame, &common.timing)?;
     let mut saved =
         crate::output::save_all(ctx, renderer, scene, frame, bounds, common, &run.image)?;
     let diff = match common.compare {
         true => Some(compare_with(
             ctx,
-            oracle()?.as_mut(),
+            build(&oracle)?.as_mut(),
             scene,
             frame,
             &run.image,
@@ -220,7 +228,7 @@ pub fn render_and_save<S: ?Sized>(
     };
     if common.method == autostereo::render::Method::Warp {
         let holes =
-            crate::warp_cmd::hole_report(ctx, common, options, build, scene, frame, &mut saved)?;
+            crate::warp_cmd::hole_report(ctx, common, options, &build, scene, frame, &mut saved)?;
         merge(&mut extra, holes);
     }
     merge(&mut extra, saved.fields());

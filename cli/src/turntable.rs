@@ -110,9 +110,17 @@ pub fn turned(frame: &Frame, axis: Axis, center: Vec3, angle: f32) -> Frame {
     turned
 }
 
-/// `{stem}_{k:04}.png` next to `out`.
-fn numbered(out: &Path, k: u32) -> PathBuf {
-    PathBuf::from(format!("{}_{k:04}.png", out.with_extension("").display()))
+/// `{stem}_{k:04}.png` next to `out`; for a quilt (`quilt`) without the stem's `_qs…` suffix,
+/// which each frame's name gets after its number.
+fn numbered(out: &Path, k: u32, quilt: bool) -> PathBuf {
+    let stem = out
+        .file_stem()
+        .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
+    let base = match quilt {
+        true => autostereo::render::quilt::strip_quilt_suffix(&stem),
+        false => &stem,
+    };
+    out.with_file_name(format!("{base}_{k:04}.png"))
 }
 
 /// Render the turntable `args` asks for; `None` when it asks for none.
@@ -127,6 +135,11 @@ pub fn render<S: ?Sized>(
     let (Some(frames), Some(out)) = (common.turntable.turntable, &common.output.out) else {
         return Ok(None);
     };
+    let quilt = common.output.format == crate::output::OutputArg::Quilt;
+    if quilt {
+        // The name --out gives is checked once, as a single quilt's would be.
+        crate::output::check_quilt_name(out, &crate::output::frame_quilt(frame, &common.output)?)?;
+    }
     let start = Instant::now();
     let bar = crate::progress::bar(u64::from(frames), "turntable");
     let mut written = Vec::new();
@@ -142,7 +155,7 @@ pub fn render<S: ?Sized>(
             &this,
             &common.output,
             None,
-            &numbered(out, k),
+            &numbered(out, k, quilt),
         )?;
         frame_ms.push(t.elapsed().as_secs_f64() * 1e3);
         written.extend(paths);
@@ -165,7 +178,12 @@ mod tests {
 
     #[test]
     fn numbered_files_keep_the_directory_and_drop_the_extension() {
-        let p = numbered(Path::new("out/head.png"), 7);
+        let p = numbered(Path::new("out/head.png"), 7, false);
         assert_eq!(p, PathBuf::from("out/head_0007.png"));
+        // A quilt's frames get the suffix after the number (output::write), once.
+        let q = numbered(Path::new("out/b_qs2x4a1.3333.png"), 0, true);
+        assert_eq!(q, PathBuf::from("out/b_0000.png"));
+        let spatial = numbered(Path::new("out/b_qs2x4a1.3333.png"), 0, false);
+        assert_eq!(spatial, PathBuf::from("out/b_qs2x4a1.3333_0000.png"));
     }
 }

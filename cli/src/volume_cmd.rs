@@ -12,7 +12,6 @@ use glam::Mat4;
 use crate::args::{gpu, RenderArgs};
 use crate::run::{render_and_save, report, run_summary, Rendered};
 pub use crate::volume_render_args::{AlphaArg, PathArg, VolumeRenderArgs};
-use autostereo::volume::VolumeRaycaster;
 use autostereo::volume::VolumeSettings;
 use autostereo::RendererOptions;
 
@@ -258,7 +257,11 @@ pub fn run(args: VolumeArgs) -> Result<()> {
             path.display()
         );
     }
-    args.common.check()?;
+    args.common.check(
+        "volumes",
+        &autostereo::volume::METHODS,
+        args.file.as_deref(),
+    )?;
     args.render.check(args.common.method)?;
     let (volume, default_tf) = args.data.load(args.file.as_deref())?;
     let tf = args.data.transfer(default_tf)?;
@@ -279,8 +282,13 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     let step = settings.step_length(&scene);
     // Against the exact N-pass: the probes would otherwise thin out the oracle's samples too,
     // and a coarser step than the default is an approximation of the default's image.
+    // (A step no coarser than the default is kept as given: an exact N-pass run then has the
+    // oracle's very options, which --compare refuses as a comparison with itself.)
     let oracle = VolumeSettings {
-        step: Some(step.min(scene.default_step_length()) / scene.voxel),
+        step: match step <= scene.default_step_length() {
+            true => settings.step,
+            false => Some(scene.default_step_length() / scene.voxel),
+        },
         ..settings.exact()
     };
     let method = args.common.method.name();
@@ -310,12 +318,13 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         &options,
         renderer.as_mut(),
         |o| o.volume_renderer(&ctx.device),
-        || {
-            Ok(Box::new(VolumeRaycaster::new(
-                &ctx.device,
-                Method::NPass,
-                oracle,
-            )?))
+        RendererOptions {
+            method: Method::NPass,
+            volume: autostereo::VolumeOptions {
+                settings: oracle,
+                path: autostereo::VolumePath::RayMarch,
+            },
+            ..options
         },
         &scene,
         &frame,

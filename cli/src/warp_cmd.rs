@@ -90,11 +90,19 @@ pub struct WarpArgs {
 }
 
 impl WarpArgs {
-    /// Refuse warp flags with another method, and bad values, before loading anything.
-    pub fn check(&self, method: Method) -> Result<()> {
+    /// The first warp flag given, if any.
+    pub fn given(&self) -> Option<&'static str> {
         let mut given = vec![("--references", self.references.is_some())];
         given.extend(self.synthesis.given());
-        if let Some((flag, _)) = given.iter().find(|(_, set)| *set) {
+        given
+            .into_iter()
+            .find(|(_, set)| *set)
+            .map(|(flag, _)| flag)
+    }
+
+    /// Refuse warp flags with another method, and bad values, before loading anything.
+    pub fn check(&self, method: Method) -> Result<()> {
+        if let Some(flag) = self.given() {
             if method != Method::Warp {
                 bail!(
                     "{flag}: only --method warp warps views (the method is {method}); drop it \
@@ -150,7 +158,7 @@ pub fn hole_report<S: ?Sized>(
     let mut warp = build(&options)?;
     let mask = warp.render_image(&ctx.device, &ctx.queue, scene, frame)?;
     if let Some(path) = &args.synthesis.hole_mask {
-        mask.save_png(path)?;
+        crate::claims::save_png(&mask, path, "--hole-mask")?;
         crate::output::say_written(json, std::slice::from_ref(path));
         saved.written.push(path.clone());
     }

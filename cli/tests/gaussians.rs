@@ -247,15 +247,15 @@ fn methods_cameras_and_flags_without_a_gaussian_path_are_refused() {
     for (args, says) in [
         (
             &["view", file, "--radius-scale", "2"][..],
-            "flags of `autostereo points` were given, but",
+            "--radius-scale is a flag of `autostereo points`, but",
         ),
         (
             &["view", "--kind", "gaussians", "--tf", "mri"][..],
-            "flags of `autostereo volume` were given, but the built-in scene is Gaussian splats",
+            "--tf is a flag of `autostereo volume`, but the built-in scene is Gaussian splats",
         ),
         (
             &["view", "--kind", "mesh", "--sort", "cpu"][..],
-            "flags of `autostereo gaussians` were given, but the built-in scene is a mesh",
+            "--sort is a flag of `autostereo gaussians`, but the built-in scene is a mesh",
         ),
     ] {
         let out = std::process::Command::new(env!("CARGO_BIN_EXE_autostereo"))

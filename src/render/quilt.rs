@@ -189,15 +189,23 @@ impl QuiltLayout {
         format!("_qs{}x{}a{aspect}", self.cols, self.rows)
     }
 
+    /// Whether a name's grid and view aspect (`parse_quilt_name`) say this layout: the same
+    /// grid, the aspect within 1 % (as [`QuiltLayout::for_image`] reads a name).
+    pub fn says(&self, (cols, rows, aspect): (u32, u32, f32)) -> bool {
+        (cols, rows) == (self.cols, self.rows) && (self.aspect() / aspect - 1.0).abs() <= 0.01
+    }
+
     /// `path` named as Looking Glass software expects: this layout's suffix before the
     /// extension, in place of a suffix the name already ends in (`x_qs3x3a1.png` for a 5×9
-    /// quilt is `x_qs5x9a0.75.png`, not `x_qs3x3a1_qs5x9a0.75.png`).
+    /// quilt is `x_qs5x9a0.75.png`, not `x_qs3x3a1_qs5x9a0.75.png`); a name whose suffix
+    /// already says this layout ([`QuiltLayout::says`]) is kept as it is.
     pub fn file_name(&self, path: &Path) -> PathBuf {
         let stem = path
             .file_stem()
             .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
         let suffix = self.suffix();
-        if stem.ends_with(&suffix) {
+        let named = parse_quilt_name(&stem).filter(|_| strip_quilt_suffix(&stem) != stem);
+        if stem.ends_with(&suffix) || named.is_some_and(|said| self.says(said)) {
             return path.to_path_buf();
         }
         let ext = path

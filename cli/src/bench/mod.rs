@@ -41,8 +41,16 @@ pub struct BenchArgs {
     /// Write DIR/BENCHMARKS.md (and DIR/images/bench_*.png when built with the `plots` feature).
     #[arg(long)]
     report: Option<PathBuf>,
-    /// Write the report from a saved `--json` output instead of measuring (re-plotting).
-    #[arg(long, requires = "report")]
+    /// Write the report from a saved `--json` output instead of measuring (re-plotting; the
+    /// flags that choose what to measure do not apply).
+    #[arg(
+        long,
+        requires = "report",
+        conflicts_with_all = [
+            "quick", "duplication", "sweep", "warp", "view_scale", "volumes", "gaussians",
+            "frames", "data",
+        ]
+    )]
     from_json: Option<PathBuf>,
     /// Only the comparison with per-view duplication: every method on the paper's display
     /// (N = 8) at 512² and 1920×1080, the dragon res2 mesh and the full dragon points, no
@@ -206,6 +214,17 @@ fn report_dir(dir: &std::path::Path) -> Result<()> {
     })
 }
 
+/// Say so where the report was written without its charts (a build without `plots`): the
+/// charts of an earlier report in that folder are no longer linked from it.
+fn plots_note() {
+    if !cfg!(feature = "plots") {
+        eprintln!(
+            "note: built without the `plots` feature, so the report has its tables but no charts \
+             (cargo run --release --features autostereo-cli/plots -- bench …)"
+        );
+    }
+}
+
 /// "one frame" or "median of N frames", as the reports say what each time is.
 pub(crate) fn frames_text(frames: u32) -> String {
     match frames {
@@ -252,6 +271,7 @@ pub fn run(args: BenchArgs) -> Result<()> {
                 .with_context(|| format!("{} is not a `bench --json` output", json.display()))?;
             report::write(dir, &results)?;
             eprintln!("wrote {}", dir.join("BENCHMARKS.md").display());
+            plots_note();
             if args.json {
                 print_json(&serde_json::json!({ "from_json": json }))?;
             }
@@ -395,6 +415,7 @@ pub fn run(args: BenchArgs) -> Result<()> {
         write_report_file(&json, serde_json::to_string_pretty(&results)?)?;
         report::write(dir, &results)?;
         eprintln!("wrote {}", dir.join("BENCHMARKS.md").display());
+        plots_note();
     }
     if args.json {
         print_json(&results)?;

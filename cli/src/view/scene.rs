@@ -112,34 +112,46 @@ impl SceneFlags<'_> {
     /// Refuse flags of a primitive the scene is not (they would be ignored silently).
     pub fn check(&self) -> Result<()> {
         let kind = self.kind()?;
+        use crate::args::{defaults_of, flags_given_of};
         let given = [
             (
                 KindArg::Mesh,
-                *self.mesh != crate::args::defaults_of::<MeshFlags>(),
+                *self.mesh != defaults_of::<MeshFlags>(),
+                flags_given_of::<MeshFlags>(),
             ),
             (
                 KindArg::Points,
-                *self.points != crate::args::defaults_of::<PointFlags>(),
+                *self.points != defaults_of::<PointFlags>(),
+                flags_given_of::<PointFlags>(),
             ),
             (
                 KindArg::Volume,
-                *self.volume_data != crate::args::defaults_of::<VolumeDataArgs>()
-                    || *self.volume_render != crate::args::defaults_of::<VolumeRenderArgs>(),
+                *self.volume_data != defaults_of::<VolumeDataArgs>()
+                    || *self.volume_render != defaults_of::<VolumeRenderArgs>(),
+                [
+                    flags_given_of::<VolumeDataArgs>(),
+                    flags_given_of::<VolumeRenderArgs>(),
+                ]
+                .concat(),
             ),
             (
                 KindArg::Gaussians,
-                *self.gaussians != crate::args::defaults_of::<GaussianFlags>(),
+                *self.gaussians != defaults_of::<GaussianFlags>(),
+                flags_given_of::<GaussianFlags>(),
             ),
         ];
-        for (other, set) in given {
+        for (other, set, flags) in given {
             if set && other != kind {
                 let what = self
                     .file
                     .map_or_else(|| "the built-in scene".into(), |p| p.display().to_string());
+                let named = match flags.first() {
+                    Some(flag) => format!("{flag} is a flag of `autostereo {}`", other.name()),
+                    None => format!("flags of `autostereo {}` were given", other.name()),
+                };
                 bail!(
-                    "flags of `autostereo {}` were given, but {what} is {}: they apply to \
-                     {} only (`--kind {}` or such a file)",
-                    other.name(),
+                    "{named}, but {what} is {}: it applies to {} only (`--kind {}` or such a \
+                     file)",
                     kind.noun(),
                     other.noun(),
                     other.name(),

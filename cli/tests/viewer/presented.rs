@@ -103,21 +103,22 @@ fn the_viewer_takes_the_render_commands_flags() {
     }
 }
 
-/// Flags of another primitive are refused before a window opens (they would be ignored).
+/// Flags of another primitive are refused by name before a window opens (they would be
+/// ignored).
 #[test]
 fn the_viewer_refuses_another_primitives_flags() {
     for (args, says) in [
         (
             &["view", "--kind", "mesh", "--tf", "mri"][..],
-            "flags of `autostereo volume` were given, but the built-in scene is a mesh",
+            "--tf is a flag of `autostereo volume`, but the built-in scene is a mesh",
         ),
         (
             &["view", "--radius-scale", "2"][..],
-            "flags of `autostereo points` were given, but the built-in scene is a volume",
+            "--radius-scale is a flag of `autostereo points`, but the built-in scene is a volume",
         ),
         (
             &["view", "--kind", "points", "--visibility", "fast"][..],
-            "flags of `autostereo mesh` were given, but the built-in scene is a point cloud",
+            "--visibility is a flag of `autostereo mesh`, but the built-in scene is a point cloud",
         ),
     ] {
         let out = Command::new(env!("CARGO_BIN_EXE_autostereo"))

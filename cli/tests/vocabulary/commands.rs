@@ -81,7 +81,7 @@ fn compare_of_the_npass_with_itself_is_refused() {
     let (ok, stderr) = volume(&png, &["--method", "n-pass", "--compare"]);
     assert!(!ok, "compared the N-pass with itself");
     assert!(
-        stderr.contains("--compare: the n-pass method is the oracle"),
+        stderr.contains("--compare: this run is the N-pass oracle itself"),
         "{stderr}"
     );
     let (ok, stderr) = volume(
@@ -137,8 +137,8 @@ fn a_quilt_name_is_kept_or_refused_never_doubled() {
     common::cli_refused(
         &other.iter().map(String::as_str).collect::<Vec<_>>(),
         &[
-            "vocabulary_named_qs5x9a0.75.png: the name says another quilt",
-            "vocabulary_named.png",
+            "vocabulary_named_qs5x9a0.75.png: the name says a 5x9 quilt",
+            "vocabulary_named.png (the suffix is added)",
         ],
     );
 }

@@ -13,3 +13,4 @@ mod origin;
 mod outputs;
 mod refusals;
 mod view;
+mod written_names;
