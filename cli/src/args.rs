@@ -187,8 +187,10 @@ pub fn flags_given_of<T: clap::Args>() -> Vec<String> {
         .get_arguments()
         .filter_map(|a| a.get_long().map(|l| format!("--{l}")))
         .collect();
-    std::env::args()
+    // args_os: a file name that is not UTF-8 must not panic here (main.rs parses it so too).
+    std::env::args_os()
         .filter_map(|a| {
+            let a = a.to_string_lossy();
             let flag = a.split('=').next().unwrap_or_default().to_string();
             longs.contains(&flag).then_some(flag)
         })

@@ -342,7 +342,9 @@ pub fn check_quilt_name(out: &Path, layout: &QuiltLayout) -> Result<()> {
     else {
         return Ok(());
     };
-    if layout.says(said) {
+    // The exact suffix this layout writes is its own even where rounding its aspect to four
+    // decimals moves it by more than 1 % (tiles thinner than 1:200).
+    if layout.says(said) || stem.ends_with(&layout.suffix()) {
         return Ok(());
     }
     let (cols, rows, aspect) = said;

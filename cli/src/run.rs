@@ -213,6 +213,11 @@ pub fn render_and_save<S: ?Sized>(
              --view-size) or an approximation (volume --step, --empty-stride) are measured"
         );
     }
+    if let (Some(out), crate::output::OutputArg::Quilt) = (&common.output.out, common.output.format)
+    {
+        // Before minutes of rendering (write() checks it again for each file).
+        crate::output::check_quilt_name(out, &crate::output::frame_quilt(frame, &common.output)?)?;
+    }
     let run = timed(ctx, renderer, scene, frame, &common.timing)?;
     let mut saved =
         crate::output::save_all(ctx, renderer, scene, frame, bounds, common, &run.image)?;

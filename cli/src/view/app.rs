@@ -188,8 +188,6 @@ impl ApplicationHandler for App {
     }
 }
 
-/// Say so when the window's monitor is not the display's panel (a Looking Glass calibration
-/// knows its panel's size): the mask then does not meet the lenses it was made for.
 impl State {
     fn new(event_loop: &ActiveEventLoop, args: &ViewArgs) -> Result<Self> {
         let mut attributes = Window::default_attributes()

@@ -113,31 +113,36 @@ impl SceneFlags<'_> {
     pub fn check(&self) -> Result<()> {
         let kind = self.kind()?;
         use crate::args::{defaults_of, flags_given_of};
-        let given = [
+        // The flags' names are looked up only for the refusal.
+        fn volume_flags() -> Vec<String> {
+            [
+                flags_given_of::<VolumeDataArgs>(),
+                flags_given_of::<VolumeRenderArgs>(),
+            ]
+            .concat()
+        }
+        type FlagsGiven = fn() -> Vec<String>;
+        let given: [(KindArg, bool, FlagsGiven); 4] = [
             (
                 KindArg::Mesh,
                 *self.mesh != defaults_of::<MeshFlags>(),
-                flags_given_of::<MeshFlags>(),
+                flags_given_of::<MeshFlags>,
             ),
             (
                 KindArg::Points,
                 *self.points != defaults_of::<PointFlags>(),
-                flags_given_of::<PointFlags>(),
+                flags_given_of::<PointFlags>,
             ),
             (
                 KindArg::Volume,
                 *self.volume_data != defaults_of::<VolumeDataArgs>()
                     || *self.volume_render != defaults_of::<VolumeRenderArgs>(),
-                [
-                    flags_given_of::<VolumeDataArgs>(),
-                    flags_given_of::<VolumeRenderArgs>(),
-                ]
-                .concat(),
+                volume_flags,
             ),
             (
                 KindArg::Gaussians,
                 *self.gaussians != defaults_of::<GaussianFlags>(),
-                flags_given_of::<GaussianFlags>(),
+                flags_given_of::<GaussianFlags>,
             ),
         ];
         for (other, set, flags) in given {
@@ -145,7 +150,7 @@ impl SceneFlags<'_> {
                 let what = self
                     .file
                     .map_or_else(|| "the built-in scene".into(), |p| p.display().to_string());
-                let named = match flags.first() {
+                let named = match flags().first() {
                     Some(flag) => format!("{flag} is a flag of `autostereo {}`", other.name()),
                     None => format!("flags of `autostereo {}` were given", other.name()),
                 };

@@ -144,3 +144,28 @@ fn the_viewer_json_names_its_screenshot() {
     assert_eq!(json["frames"], 3, "{json}");
     assert!(shot.is_file());
 }
+
+/// A file name that is not UTF-8 reaches the refusal, named, instead of a panic in reading the
+/// command line (the viewer names the other primitive's flag from it).
+#[test]
+fn a_non_utf8_name_does_not_panic_the_viewers_refusal() {
+    use std::os::unix::ffi::OsStrExt;
+    let mut shot = common::out_dir().into_os_string();
+    shot.push(std::ffi::OsStr::from_bytes(b"/view_\xff.png"));
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_autostereo"))
+        .args(["view", "--kind", "mesh", "--tf", "bone", "--screenshot"])
+        .arg(&shot)
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        !out.status.success() && !stderr.contains("panicked"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("--tf is a flag of `autostereo volume`"),
+        "{stderr}"
+    );
+}

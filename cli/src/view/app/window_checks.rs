@@ -6,6 +6,8 @@ use anyhow::Result;
 use autostereo::display::Display;
 use winit::window::Window;
 
+/// Say so when the window's monitor is not the display's panel (a Looking Glass calibration
+/// knows its panel's size): the mask then does not meet the lenses it was made for.
 pub(super) fn check_monitor(window: &Window, display: &Display) {
     let (Some(panel), Some(monitor)) = (display.panel_size(), window.current_monitor()) else {
         return;
