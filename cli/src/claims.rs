@@ -1,7 +1,8 @@
 //! The files one run writes: never an input, never one file twice. The early checks
 //! (`args::not_an_input`, `args::distinct_outputs`) compare the names given; the names written
 //! can differ (a quilt's `_qs…` suffix, `_NN` view files, `_NNNN` turntable frames), so every
-//! write is also checked here, by the name it really has, before the file is touched.
+//! write is also checked here, by the name it really has, before the file is touched; and the
+//! names a run will write are checked together before it renders (`check_planned`).
 
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
@@ -40,6 +41,26 @@ pub fn claim(path: &Path, flag: &str) -> Result<()> {
     let Ok(mut claims) = CLAIMS.lock() else {
         return Ok(());
     };
+    claim_in(&mut claims, path, flag)
+}
+
+/// Refuse the run before it renders if any of the names it will write (`planned`, with the
+/// flag naming each) is an input or comes twice; nothing is taken yet.
+pub fn check_planned(planned: &[(PathBuf, &str)]) -> Result<()> {
+    let Ok(claims) = CLAIMS.lock() else {
+        return Ok(());
+    };
+    let mut trial = Claims {
+        inputs: claims.inputs.clone(),
+        written: claims.written.clone(),
+    };
+    for (path, flag) in planned {
+        claim_in(&mut trial, path, flag)?;
+    }
+    Ok(())
+}
+
+fn claim_in(claims: &mut Claims, path: &Path, flag: &str) -> Result<()> {
     if let Some(input) = claims
         .inputs
         .iter()
@@ -57,8 +78,8 @@ pub fn claim(path: &Path, flag: &str) -> Result<()> {
         .find(|(w, _)| crate::args::same_file(path, w))
     {
         bail!(
-            "{flag}: {} was already written by {by} in this run; writing it again would replace \
-             it (choose names that differ after the suffixes the outputs get)",
+            "{flag}: {} is also written by {by} in this run; one would replace the other \
+             (choose names that differ after the suffixes the outputs get)",
             path.display()
         );
     }

@@ -325,6 +325,38 @@ pub fn frame_quilt(frame: &Frame, output: &OutputArgs) -> Result<QuiltLayout> {
     Ok(layout)
 }
 
+/// The files a run will write, each with the flag that names it: `out` in `output`'s format
+/// (with `turntable` frames, each frame's), then a `hole_mask`. For `claims::check_planned`.
+pub fn planned(
+    frame: &Frame,
+    output: &OutputArgs,
+    turntable: Option<u32>,
+    hole_mask: Option<&Path>,
+) -> Result<Vec<(PathBuf, &'static str)>> {
+    let mut planned = Vec::new();
+    if let Some(out) = &output.out {
+        let quilt = output.format == OutputArg::Quilt;
+        let outs: Vec<PathBuf> = match turntable {
+            Some(frames) => (0..frames)
+                .map(|k| crate::turntable::numbered(out, k, quilt))
+                .collect(),
+            None => vec![out.clone()],
+        };
+        let views = frame.camera.views;
+        for out in outs {
+            match output.format {
+                OutputArg::Views => planned.extend((0..views).map(|v| view_file(&out, v, views))),
+                OutputArg::Quilt => planned.push(frame_quilt(frame, output)?.file_name(&out)),
+                _ => planned.push(out),
+            }
+        }
+    }
+    let mut planned: Vec<(PathBuf, &'static str)> =
+        planned.into_iter().map(|p| (p, "--out")).collect();
+    planned.extend(hole_mask.map(|p| (p.to_path_buf(), "--hole-mask")));
+    Ok(planned)
+}
+
 /// Refuses an `--out` whose name already says another quilt than `layout` (`x_qs5x9a0.75.png`
 /// for a 3×3 quilt): the name would promise Looking Glass software a grid or aspect the file
 /// does not have. An aspect within 1 % is this quilt's (as reading a quilt allows).

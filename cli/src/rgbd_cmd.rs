@@ -113,6 +113,12 @@ pub fn run(args: RgbdArgs) -> Result<()> {
     let (device, queue) = (&ctx.device, &ctx.queue);
     let scene = RgbdScene::new(device, queue, &image)?;
     let mut warp = RgbdWarp::new(device, options)?;
+    crate::claims::check_planned(&crate::output::planned(
+        &frame,
+        &args.output,
+        None,
+        args.warp.hole_mask.as_deref(),
+    )?)?;
     let run = timed(&ctx, &mut warp, &scene, &frame, &args.timing)?;
     let mut saved = Saved {
         written: Vec::new(),

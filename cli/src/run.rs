@@ -218,6 +218,18 @@ pub fn render_and_save<S: ?Sized>(
         // Before minutes of rendering (write() checks it again for each file).
         crate::output::check_quilt_name(out, &crate::output::frame_quilt(frame, &common.output)?)?;
     }
+    let hole_mask = common
+        .warp
+        .synthesis
+        .hole_mask
+        .as_deref()
+        .filter(|_| common.method == autostereo::render::Method::Warp);
+    crate::claims::check_planned(&crate::output::planned(
+        frame,
+        &common.output,
+        common.turntable.turntable,
+        hole_mask,
+    )?)?;
     let run = timed(ctx, renderer, scene, frame, &common.timing)?;
     let mut saved =
         crate::output::save_all(ctx, renderer, scene, frame, bounds, common, &run.image)?;

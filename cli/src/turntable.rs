@@ -112,7 +112,7 @@ pub fn turned(frame: &Frame, axis: Axis, center: Vec3, angle: f32) -> Frame {
 
 /// `{stem}_{k:04}.png` next to `out`; for a quilt (`quilt`) without the stem's `_qs…` suffix,
 /// which each frame's name gets after its number.
-fn numbered(out: &Path, k: u32, quilt: bool) -> PathBuf {
+pub fn numbered(out: &Path, k: u32, quilt: bool) -> PathBuf {
     let stem = out
         .file_stem()
         .map_or_else(String::new, |s| s.to_string_lossy().into_owned());

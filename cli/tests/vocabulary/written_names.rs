@@ -76,7 +76,10 @@ fn outputs_by_their_written_names_never_replace_an_input_or_each_other() {
     let mut args = mesh.to_vec();
     args.extend(["--output", "quilt", "--out", s(&quilt)]);
     args.extend(["--hole-mask", s(&hole_mask)]);
-    cli_refused(&args, &["--hole-mask", "was already written by --out"]);
+    let _ = std::fs::remove_file(&hole_mask);
+    cli_refused(&args, &["--hole-mask", "is also written by --out"]);
+    // Refused before rendering: not even the quilt was written.
+    assert!(!hole_mask.exists());
 }
 
 #[test]
