@@ -258,14 +258,8 @@ fn methods_cameras_and_flags_without_a_gaussian_path_are_refused() {
             "--sort is a flag of `autostereo gaussians`, but the built-in scene is a mesh",
         ),
     ] {
-        let out = std::process::Command::new(env!("CARGO_BIN_EXE_autostereo"))
-            .args(args)
-            .env_remove("DISPLAY")
-            .env_remove("WAYLAND_DISPLAY")
-            .output()
-            .unwrap();
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        assert!(!out.status.success(), "{args:?}");
+        let (ok, stderr) = common::xvfb::cli_without_display(args);
+        assert!(!ok, "{args:?}");
         assert!(stderr.contains(says), "{args:?}: {stderr}");
     }
 }

@@ -100,14 +100,23 @@ pub fn xvfb_or_clear_error() -> Option<Xvfb> {
     if let Some(x) = Xvfb::start() {
         return Some(x);
     }
+    let (ok, stderr) = cli_without_display(&["view", "--quit-after-frames", "1"]);
+    assert!(!ok, "a window opened without a display");
+    assert!(stderr.contains("window system"), "{stderr}");
+    None
+}
+
+/// Run the CLI with no window system to reach (`DISPLAY`, `WAYLAND_DISPLAY` unset): what the
+/// viewer refuses before it opens a window. (success, stderr)
+pub fn cli_without_display<S: AsRef<std::ffi::OsStr>>(args: &[S]) -> (bool, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_autostereo"))
-        .args(["view", "--quit-after-frames", "1"])
+        .args(args)
         .env_remove("DISPLAY")
         .env_remove("WAYLAND_DISPLAY")
         .output()
         .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(!out.status.success(), "a window opened without a display");
-    assert!(stderr.contains("window system"), "{stderr}");
-    None
+    (
+        out.status.success(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
 }

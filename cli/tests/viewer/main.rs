@@ -12,7 +12,6 @@ mod presented;
 mod previews;
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 use autostereo::image_io::{compare, RgbImage};
 

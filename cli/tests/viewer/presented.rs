@@ -121,14 +121,8 @@ fn the_viewer_refuses_another_primitives_flags() {
             "--visibility is a flag of `autostereo mesh`, but the built-in scene is a point cloud",
         ),
     ] {
-        let out = Command::new(env!("CARGO_BIN_EXE_autostereo"))
-            .args(args)
-            .env_remove("DISPLAY")
-            .env_remove("WAYLAND_DISPLAY")
-            .output()
-            .unwrap();
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        assert!(!out.status.success(), "{args:?}");
+        let (ok, stderr) = common::xvfb::cli_without_display(args);
+        assert!(!ok, "{args:?}");
         assert!(stderr.contains(says), "{args:?}: {stderr}");
     }
 }

@@ -152,18 +152,13 @@ fn a_non_utf8_name_does_not_panic_the_viewers_refusal() {
     use std::os::unix::ffi::OsStrExt;
     let mut shot = common::out_dir().into_os_string();
     shot.push(std::ffi::OsStr::from_bytes(b"/view_\xff.png"));
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_autostereo"))
-        .args(["view", "--kind", "mesh", "--tf", "bone", "--screenshot"])
-        .arg(&shot)
-        .env_remove("DISPLAY")
-        .env_remove("WAYLAND_DISPLAY")
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(
-        !out.status.success() && !stderr.contains("panicked"),
-        "{stderr}"
-    );
+    let mut args: Vec<std::ffi::OsString> =
+        ["view", "--kind", "mesh", "--tf", "bone", "--screenshot"]
+            .map(Into::into)
+            .to_vec();
+    args.push(shot);
+    let (ok, stderr) = common::xvfb::cli_without_display(&args);
+    assert!(!ok && !stderr.contains("panicked"), "{stderr}");
     assert!(
         stderr.contains("--tf is a flag of `autostereo volume`"),
         "{stderr}"
