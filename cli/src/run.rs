@@ -213,22 +213,12 @@ pub fn render_and_save<S: ?Sized>(
              --view-size) or an approximation (volume --step, --empty-stride) are measured"
         );
     }
-    if let (Some(out), crate::output::OutputArg::Quilt) = (&common.output.out, common.output.format)
-    {
-        // Before minutes of rendering (write() checks it again for each file).
-        crate::output::check_quilt_name(out, &crate::output::frame_quilt(frame, &common.output)?)?;
-    }
-    let hole_mask = common
-        .warp
-        .synthesis
-        .hole_mask
-        .as_deref()
-        .filter(|_| common.method == autostereo::render::Method::Warp);
+    // (--hole-mask is refused with any method but the warp: RenderArgs::check.)
     crate::claims::check_planned(&crate::output::planned(
         frame,
         &common.output,
         common.turntable.turntable,
-        hole_mask,
+        common.warp.synthesis.hole_mask.as_deref(),
     )?)?;
     let run = timed(ctx, renderer, scene, frame, &common.timing)?;
     let mut saved =

@@ -136,10 +136,6 @@ pub fn render<S: ?Sized>(
         return Ok(None);
     };
     let quilt = common.output.format == crate::output::OutputArg::Quilt;
-    if quilt {
-        // The name --out gives is checked once, as a single quilt's would be.
-        crate::output::check_quilt_name(out, &crate::output::frame_quilt(frame, &common.output)?)?;
-    }
     let start = Instant::now();
     let bar = crate::progress::bar(u64::from(frames), "turntable");
     let mut written = Vec::new();

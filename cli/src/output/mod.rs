@@ -14,7 +14,7 @@ use autostereo::render::{Renderer, StereoCompositor, StereoFormat};
 use autostereo::target::SpatialTarget;
 
 mod names;
-pub use names::{check_quilt_name, frame_quilt, planned, quilt_layout, view_file};
+pub use names::{frame_quilt, planned, quilt_layout, view_file};
 
 /// The formats of `--output`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -347,7 +347,6 @@ pub fn write<S: ?Sized>(
         OutputArg::Quilt => {
             let layout = frame_quilt(frame, output)?;
             let named = layout.file_name(out);
-            check_quilt_name(out, &layout)?;
             crate::claims::claim(&named, "--out")?;
             let [w, h] = layout.size();
             RgbImage::check_size(w, h).context("--output quilt")?;

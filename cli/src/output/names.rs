@@ -62,7 +62,8 @@ pub fn frame_quilt(frame: &Frame, output: &OutputArgs) -> Result<QuiltLayout> {
 }
 
 /// The files a run will write, each with the flag that names it: `out` in `output`'s format
-/// (with `turntable` frames, each frame's), then a `hole_mask`. For `claims::check_planned`.
+/// (with `turntable` frames, each frame's), then a `hole_mask`. For `claims::check_planned`,
+/// before the run renders; a quilt `--out` whose name says another quilt is refused here.
 pub fn planned(
     frame: &Frame,
     output: &OutputArgs,
@@ -72,6 +73,13 @@ pub fn planned(
     let mut planned = Vec::new();
     if let Some(out) = &output.out {
         let quilt = output.format == OutputArg::Quilt;
+        let layout = match quilt {
+            true => Some(frame_quilt(frame, output)?),
+            false => None,
+        };
+        if let Some(layout) = &layout {
+            check_quilt_name(out, layout)?;
+        }
         let outs: Vec<PathBuf> = match turntable {
             Some(frames) => (0..frames)
                 .map(|k| crate::turntable::numbered(out, k, quilt))
@@ -80,9 +88,11 @@ pub fn planned(
         };
         let views = frame.camera.views;
         for out in outs {
-            match output.format {
-                OutputArg::Views => planned.extend((0..views).map(|v| view_file(&out, v, views))),
-                OutputArg::Quilt => planned.push(frame_quilt(frame, output)?.file_name(&out)),
+            match (&output.format, &layout) {
+                (OutputArg::Views, _) => {
+                    planned.extend((0..views).map(|v| view_file(&out, v, views)))
+                }
+                (_, Some(layout)) => planned.push(layout.file_name(&out)),
                 _ => planned.push(out),
             }
         }
@@ -96,7 +106,7 @@ pub fn planned(
 /// Refuses an `--out` whose name already says another quilt than `layout` (`x_qs5x9a0.75.png`
 /// for a 3×3 quilt): the name would promise Looking Glass software a grid or aspect the file
 /// does not have. An aspect within 1 % is this quilt's (as reading a quilt allows).
-pub fn check_quilt_name(out: &Path, layout: &QuiltLayout) -> Result<()> {
+fn check_quilt_name(out: &Path, layout: &QuiltLayout) -> Result<()> {
     let name = out
         .file_name()
         .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
