@@ -10,11 +10,10 @@ use autostereo::display::Display;
 use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::image_io::compare;
-use autostereo::mesh::{Mesh, MeshBuffers};
-use autostereo::mesh::{MeshNPass, MeshSinglePass, MeshSinglePassOptions, Visibility};
-use autostereo::render::{Method, Renderer};
-use autostereo::target::SpatialTarget;
+use autostereo::mesh::{Mesh, MeshBuffers, Visibility};
+use autostereo::render::Method;
 use autostereo::views::extract_view;
+use autostereo::{AnyRenderer, AnyScene, MeshOptions, Renderer, RendererOptions};
 
 fn main() -> Result<()> {
     let out = std::env::args()
@@ -33,29 +32,30 @@ fn main() -> Result<()> {
     let camera = MultiViewCamera::framing(bounds, display.views(), None, 30f32.to_radians(), 1.0)?;
     let frame = Frame::new(camera, display, size)?;
 
-    // GPU resources borrowed from the caller's device.
-    let buffers = MeshBuffers::new(&ctx.device, &mesh)?;
-    let target = SpatialTarget::new(&ctx.device, size)?;
-    let mut renderer = MeshNPass::new(&ctx.device, Method::NPass)?;
-    renderer.render(&ctx.device, &ctx.queue, &buffers, &frame, &target)?;
-
-    let spatial = target.read(&ctx.device, &ctx.queue)?;
+    // GPU resources borrowed from the caller's device; one renderer type for every method.
+    let scene = AnyScene::Mesh(MeshBuffers::new(&ctx.device, &mesh)?);
+    let mut npass = AnyRenderer::new(&ctx.device, &scene, &RendererOptions::new(Method::NPass))?;
+    let spatial = npass.render_image(&ctx.device, &ctx.queue, &scene, &frame)?;
     spatial.save_png(out.as_ref())?;
     extract_view(&spatial, &frame.display.mask(), 3).save_png("view3.png".as_ref())?;
     println!("wrote {out} and view3.png");
 
-    // The single-pass renderer: same frame, same target, one geometry pass; the best exact
-    // visibility mode this adapter supports.
-    let options = MeshSinglePassOptions {
-        visibility: Visibility::best_exact(&ctx.device),
-        ..Default::default()
+    // The single pass: same frame, one geometry pass; the best exact visibility mode this
+    // adapter supports.
+    let visibility = Visibility::best_exact(&ctx.device);
+    let options = RendererOptions {
+        mesh: MeshOptions {
+            visibility: Some(visibility),
+            ..MeshOptions::default()
+        },
+        ..RendererOptions::new(Method::SinglePass)
     };
-    let mut single_pass = MeshSinglePass::new(&ctx.device, options)?;
-    single_pass.render(&ctx.device, &ctx.queue, &buffers, &frame, &target)?;
-    let diff = compare(&target.read(&ctx.device, &ctx.queue)?, &spatial)?;
+    let mut single_pass = AnyRenderer::new(&ctx.device, &scene, &options)?;
+    let image = single_pass.render_image(&ctx.device, &ctx.queue, &scene, &frame)?;
+    let diff = compare(&image, &spatial)?;
     println!(
-        "single pass ({:?}) vs N-pass: PSNR {:.1} dB, max abs error {}",
-        options.visibility, diff.psnr_db, diff.max_abs_err
+        "single pass ({visibility:?}) vs N-pass: PSNR {:.1} dB, max abs error {}",
+        diff.psnr_db, diff.max_abs_err
     );
     Ok(())
 }

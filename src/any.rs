@@ -4,8 +4,10 @@
 use crate::error::{Error, Result};
 use crate::frame::Frame;
 use crate::gaussians::GaussianScene;
+use crate::load::AnyData;
 use crate::mesh::MeshBuffers;
 use crate::options::RendererOptions;
+use crate::param::Param;
 use crate::points::SplatScene;
 use crate::render::Renderer;
 use crate::rgbd::RgbdScene;
@@ -27,6 +29,26 @@ pub enum AnyScene {
 }
 
 impl AnyScene {
+    /// `data` on the GPU: the scene its primitive's renderers take.
+    pub fn upload(device: &wgpu::Device, queue: &wgpu::Queue, data: &AnyData) -> Result<Self> {
+        Ok(match data {
+            AnyData::Mesh(mesh) => AnyScene::Mesh(MeshBuffers::new(device, mesh)?),
+            AnyData::Points(points) => {
+                AnyScene::Points(SplatScene::new(device, &points.splats, points.groups)?)
+            }
+            AnyData::Volume(v) => AnyScene::Volume(Box::new(VolumeScene::new(
+                device,
+                queue,
+                &v.volume,
+                v.transfer.clone(),
+                v.model,
+            )?)),
+            AnyData::Gaussians(gaussians) => {
+                AnyScene::Gaussians(GaussianScene::new(device, gaussians)?)
+            }
+        })
+    }
+
     /// `mesh`, `points`, `volume` or `rgbd`.
     pub fn primitive(&self) -> &'static str {
         match self {
@@ -81,7 +103,7 @@ impl AnyRenderer {
 
     fn mismatch(&self, scene: &AnyScene) -> Error {
         Error::invalid(
-            "scene",
+            Param::Scene,
             format!(
                 "a {} scene for a {} renderer",
                 scene.primitive(),

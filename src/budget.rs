@@ -42,6 +42,7 @@ pub fn check(what: impl FnOnce() -> String, bytes: u64) -> Result<()> {
             what: what(),
             bytes,
             budget,
+            raise_to: rounded_up(bytes),
         });
     }
     Ok(())
@@ -89,6 +90,7 @@ pub fn charge_gpu(what: impl FnOnce() -> String, bytes: u64) -> Result<GpuCharge
                 what,
                 bytes: total,
                 budget,
+                raise_to: rounded_up(total),
             });
         }
         match GPU_HELD.compare_exchange_weak(held, total, Ordering::Relaxed, Ordering::Relaxed) {

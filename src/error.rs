@@ -2,6 +2,9 @@
 
 use std::path::PathBuf;
 
+use crate::data_kind::DataKind;
+use crate::param::Param;
+
 /// Everything the library can fail with. User input never panics; it lands here.
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]
@@ -60,7 +63,7 @@ pub enum Error {
     },
     /// An input, or a renderer's per-view images, would need more memory than the budget
     /// (`crate::budget`; on the GPU too: software adapters allocate it from the same RAM).
-    #[error("{what} needs {bytes} bytes, over the memory budget of {budget} bytes (raise it with budget::set_max_memory, to at least {})", crate::budget::rounded_up(*.bytes))]
+    #[error("{what} needs {bytes} bytes, over the memory budget of {budget} bytes (raise it with budget::set_max_memory, to at least {raise_to})")]
     MemoryBudget {
         /// What would be allocated, in words.
         what: String,
@@ -68,6 +71,8 @@ pub enum Error {
         bytes: u64,
         /// The budget.
         budget: u64,
+        /// The smallest round figure the budget must be raised to (`budget::rounded_up`).
+        raise_to: String,
     },
     /// Device creation failed.
     #[error("could not create a device on '{adapter}': {source}")]
@@ -78,10 +83,10 @@ pub enum Error {
         source: wgpu::RequestDeviceError,
     },
     /// A parameter is outside its valid range (zero views, 0×0 image, NaN separation…).
-    #[error("invalid {name}: {}", printable(.reason))]
+    #[error("invalid {param}: {}", printable(.reason))]
     InvalidParameter {
-        /// The parameter's name as the user knows it.
-        name: &'static str,
+        /// The parameter.
+        param: Param,
         /// What is wrong with it.
         reason: String,
     },
@@ -143,6 +148,19 @@ pub enum Error {
         /// What it is and what reads it.
         reason: String,
     },
+    /// A file holds another kind of data than it was read as (`wanted`), or a kind that is
+    /// not a scene (`wanted: None`: an image given to [`crate::load`]).
+    #[error("{path}: this is {} ({}), {}", .holds.article(), printable(.detail), wrong_kind_advice(*.holds, *.wanted))]
+    WrongKind {
+        /// The file.
+        path: PathBuf,
+        /// The kind it holds.
+        holds: DataKind,
+        /// The kind it was read as; `None` where any scene was asked for.
+        wanted: Option<DataKind>,
+        /// Its format and what tells the kind ("NRRD", "PLY, 12 faces").
+        detail: String,
+    },
     /// An image could not be read or written.
     #[error("image {path}: {}", printable(.reason))]
     Image {
@@ -199,6 +217,17 @@ pub(crate) fn printable(text: &str) -> std::borrow::Cow<'_, str> {
     }
 }
 
+/// What to do with a file of kind `holds` read as `wanted`.
+fn wrong_kind_advice(holds: DataKind, wanted: Option<DataKind>) -> String {
+    match (holds, wanted) {
+        (DataKind::Image, None) => {
+            "not a scene: images are read as RGB-D colour or depth maps, or as quilts".into()
+        }
+        (_, None) => format!("read it as {}", holds.article()),
+        (_, Some(wanted)) => format!("not {}: read it as {}", wanted.article(), holds.article()),
+    }
+}
+
 /// Longest piece of a file's text an error quotes, in characters.
 const QUOTED_CHARS: usize = 40;
 
@@ -248,9 +277,9 @@ impl Error {
         Ok(())
     }
 
-    pub(crate) fn invalid(name: &'static str, reason: impl Into<String>) -> Self {
+    pub(crate) fn invalid(param: Param, reason: impl Into<String>) -> Self {
         Error::InvalidParameter {
-            name,
+            param,
             reason: reason.into(),
         }
     }

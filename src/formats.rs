@@ -1,51 +1,14 @@
 //! What a file is: its format from its first bytes where the format has a signature, else from
-//! its extension, and which primitive reads it, so that every command can say what a file is
-//! and which command reads it ("head.nrrd is a volume (NRRD): `autostereo volume head.nrrd`")
-//! instead of failing inside the wrong parser.
+//! its extension, and which primitive reads it, so that a file given as the wrong kind is
+//! refused saying what it is ([`Error::WrongKind`]: "head.nrrd: this is a volume (NRRD), not a
+//! mesh") instead of failing inside the wrong parser.
 
 use std::fmt;
 use std::io::Read;
 use std::path::Path;
 
+pub use crate::data_kind::DataKind;
 use crate::error::{Error, Result};
-
-/// The kinds of data the commands render.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum DataKind {
-    /// Triangle meshes (`autostereo mesh`).
-    Mesh,
-    /// Point clouds (`autostereo points`).
-    Points,
-    /// Scalar volumes (`autostereo volume`).
-    Volume,
-    /// Images: RGB-D colour, quilts (`autostereo rgbd`, `autostereo interleave`).
-    Image,
-    /// 3D Gaussian splats (`autostereo gaussians`).
-    Gaussians,
-}
-
-impl DataKind {
-    /// The command that reads this kind.
-    pub fn command(self) -> &'static str {
-        match self {
-            Self::Mesh => "autostereo mesh",
-            Self::Points => "autostereo points",
-            Self::Volume => "autostereo volume",
-            Self::Image => "autostereo rgbd or autostereo interleave",
-            Self::Gaussians => "autostereo gaussians",
-        }
-    }
-
-    fn article(self) -> &'static str {
-        match self {
-            Self::Mesh => "a mesh",
-            Self::Points => "a point cloud",
-            Self::Volume => "a volume",
-            Self::Image => "an image",
-            Self::Gaussians => "3D Gaussian splats",
-        }
-    }
-}
 
 /// The file formats the project knows, read or not.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -221,55 +184,43 @@ pub fn detect(path: &Path) -> Result<Format> {
     })
 }
 
-/// The format of `path` for a command that renders `kind`: refused by name when the file holds
-/// another kind of data (naming the command that reads it) or when this build does not read
-/// the format. A PLY is 3D Gaussian splats when its vertices have all of
-/// [`GAUSSIAN_PLY_PROPERTIES`], which only `autostereo gaussians` reads; a PLY with none of
-/// them is not Gaussian splats.
+/// The format of `path` read as `kind`: refused by name when the file holds another kind of
+/// data or when this build does not read the format. A PLY is 3D Gaussian splats when its vertices have all of
+/// [`GAUSSIAN_PLY_PROPERTIES`], read only as such; a PLY with none of them is not Gaussian
+/// splats. A file of another kind is refused with [`Error::WrongKind`].
 pub fn expect(path: &Path, kind: DataKind) -> Result<Format> {
     let format = detect(path)?;
-    let name = path.display();
+    let wrong = |holds: DataKind, detail: String| Error::WrongKind {
+        path: path.into(),
+        holds,
+        wanted: Some(kind),
+        detail,
+    };
     if format == Format::Ply {
         let splats = ply_gaussian_properties(path);
         let all = splats.len() == GAUSSIAN_PLY_PROPERTIES.len();
         if all && kind != DataKind::Gaussians {
-            return Err(Error::Format {
-                path: path.into(),
-                reason: format!(
-                    "3D Gaussian splats (a 3DGS PLY: its vertices have {}), not {}: use \
-                     `autostereo gaussians {name}`",
-                    GAUSSIAN_PLY_PROPERTIES.join(", "),
-                    kind.article()
+            return Err(wrong(
+                DataKind::Gaussians,
+                format!(
+                    "a 3DGS PLY: its vertices have {}",
+                    GAUSSIAN_PLY_PROPERTIES.join(", ")
                 ),
-            });
+            ));
         }
         if splats.is_empty() && kind == DataKind::Gaussians {
             let (theirs, what) = match ply_faces(path) {
                 Ok(faces) if faces > 0 => (DataKind::Mesh, format!("{faces} faces")),
                 _ => (DataKind::Points, "vertices only".to_string()),
             };
-            return Err(Error::Format {
-                path: path.into(),
-                reason: format!(
-                    "this is {} (PLY, {what}; no {}), not 3D Gaussian splats: `{} {name}` reads it",
-                    theirs.article(),
-                    GAUSSIAN_PLY_PROPERTIES.join(", "),
-                    theirs.command()
-                ),
-            });
+            return Err(wrong(
+                theirs,
+                format!("PLY, {what}; no {}", GAUSSIAN_PLY_PROPERTIES.join(", ")),
+            ));
         }
     }
     if !format.kinds().contains(&kind) {
-        let theirs = format.kinds()[0];
-        return Err(Error::Format {
-            path: path.into(),
-            reason: format!(
-                "this is {} ({format}), not {}: `{} {name}` reads it",
-                theirs.article(),
-                kind.article(),
-                theirs.command()
-            ),
-        });
+        return Err(wrong(format.kinds()[0], format.to_string()));
     }
     if !format.is_read_as(kind) {
         return Err(Error::Format {
@@ -302,21 +253,21 @@ pub fn kind(path: &Path) -> Result<(Format, DataKind)> {
 /// How many faces the PLY header of `path` declares (its first 64 KiB hold the header).
 pub(crate) fn ply_faces(path: &Path) -> Result<usize> {
     let head = ply_head(path)?;
-    crate::points::ply::face_count(&head).map_err(|reason| Error::Points {
+    crate::io::ply::face_count(&head).map_err(|reason| Error::Points {
         path: path.into(),
         reason,
     })
 }
 
 /// The vertex properties that make a PLY 3D Gaussian splats (graphdeco's 3DGS PLY).
-pub const GAUSSIAN_PLY_PROPERTIES: [&str; 4] = crate::gaussians::load::GAUSSIAN_PROPERTIES;
+pub const GAUSSIAN_PLY_PROPERTIES: [&str; 4] = crate::io::ply::GAUSSIAN_PROPERTIES;
 
 /// Which of [`GAUSSIAN_PLY_PROPERTIES`] the PLY header of `path` declares on its vertices
 /// (none when it cannot be read: the loader says why).
 fn ply_gaussian_properties(path: &Path) -> Vec<&'static str> {
     ply_head(path)
         .ok()
-        .and_then(|head| crate::gaussians::load::gaussian_properties(&head).ok())
+        .and_then(|head| crate::io::ply::gaussian_properties(&head).ok())
         .unwrap_or_default()
 }
 
@@ -444,7 +395,7 @@ mod tests {
     }
 
     #[test]
-    fn a_file_of_another_kind_names_the_command_that_reads_it() {
+    fn a_file_of_another_kind_says_what_it_is() {
         let dir = std::env::temp_dir().join("autostereo_formats_test");
         std::fs::create_dir_all(&dir).unwrap();
         let file = |name: &str, bytes: &[u8]| {
@@ -455,8 +406,14 @@ mod tests {
         // The signature wins over a misleading extension.
         let volume = file("head.obj", b"NRRD0004\ntype: uchar\n");
         let e = expect(&volume, DataKind::Mesh).unwrap_err().to_string();
-        assert!(e.contains("a volume (NRRD), not a mesh"), "{e}");
-        assert!(e.contains("`autostereo volume "), "{e}");
+        assert!(
+            e.contains("this is a volume (NRRD), not a mesh: read it as a volume"),
+            "{e}"
+        );
+        assert!(
+            !e.contains("`autostereo "),
+            "a library error names no command: {e}"
+        );
         let unknown = file("notes.txt", b"hello");
         let e = expect(&unknown, DataKind::Points).unwrap_err().to_string();
         assert!(e.contains("unknown format; read here: meshes .obj"), "{e}");

@@ -7,6 +7,7 @@ use glam::Vec3;
 use crate::camera::{CameraUniform, MultiViewCamera};
 use crate::display::{Display, MaskUniform};
 use crate::error::{Error, Result};
+use crate::param::Param;
 
 /// Eye-space directional Blinn-Phong light.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -137,7 +138,7 @@ impl Frame {
         self.camera.validate()?;
         if self.size[0] == 0 || self.size[1] == 0 {
             return Err(Error::invalid(
-                "size",
+                Param::Size,
                 format!(
                     "{}x{}: width and height must be at least 1",
                     self.size[0], self.size[1]
@@ -146,13 +147,13 @@ impl Frame {
         }
         if !self.view_scale.iter().all(|s| *s > 0.0 && *s <= 1.0) {
             return Err(Error::invalid(
-                "view scale",
+                Param::ViewScale,
                 format!("{}: each must be in (0, 1]", self.view_scale_text()),
             ));
         }
         if self.camera.views != self.display.views() {
             return Err(Error::invalid(
-                "views",
+                Param::Views,
                 format!(
                     "camera has {} views but the display has {}",
                     self.camera.views,
@@ -180,7 +181,7 @@ impl Frame {
     pub fn scale_views_to(&mut self, size: [u32; 2]) -> Result<()> {
         if size.contains(&0) || size[0] > self.size[0] || size[1] > self.size[1] {
             return Err(Error::invalid(
-                "view image size",
+                Param::ViewImageSize,
                 format!(
                     "{}x{}: each side must be in 1 ..= the frame's {}x{}",
                     size[0], size[1], self.size[0], self.size[1]
@@ -241,7 +242,7 @@ impl Frame {
             return Ok(());
         }
         Err(Error::invalid(
-            "view scale",
+            Param::ViewScale,
             format!(
                 "{}: the {method} method renders no view images to scale (only n-pass, tiled, \
                  layered and mrt do)",

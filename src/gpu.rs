@@ -1,6 +1,7 @@
 //! Headless GPU context: adapter selection (any backend, overridable by environment), one device.
 
 use crate::error::{Error, Result};
+use crate::param::Param;
 
 /// How to choose the adapter. Both fields default to the environment:
 /// `WGPU_BACKEND` (e.g. `vulkan`, `gl`) and `WGPU_ADAPTER_NAME` (case-insensitive substring).
@@ -225,7 +226,7 @@ fn feature_names(features: wgpu::Features) -> String {
 pub fn check_size_2d(device: &wgpu::Device, width: u32, height: u32) -> Result<()> {
     if width == 0 || height == 0 {
         return Err(Error::invalid(
-            "size",
+            Param::Size,
             format!("{width}x{height}: width and height must be at least 1"),
         ));
     }

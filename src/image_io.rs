@@ -3,6 +3,7 @@
 use std::path::Path;
 
 use crate::error::{Error, Result};
+use crate::param::Param;
 
 /// A tightly packed RGB8 image, rows top-down.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -24,14 +25,14 @@ impl RgbImage {
     pub fn check_size(width: u32, height: u32) -> Result<()> {
         if width == 0 || height == 0 {
             return Err(Error::invalid(
-                "image size",
+                Param::ImageSize,
                 format!("{width}x{height}: width and height must be at least 1"),
             ));
         }
         let pixels = u64::from(width) * u64::from(height);
         if pixels > MAX_IMAGE_PIXELS {
             return Err(Error::invalid(
-                "image size",
+                Param::ImageSize,
                 format!("{width}x{height}: {pixels} pixels, more than {MAX_IMAGE_PIXELS}"),
             ));
         }
@@ -102,7 +103,7 @@ impl RgbImage {
     /// bytes; its size checked against the image limits and the memory budget before it is
     /// decoded). A file of another kind is refused naming the command that reads it.
     pub fn load(path: &Path) -> Result<Self> {
-        let rgb = crate::rgbd::decode(path)?.to_rgb8();
+        let rgb = decode(path)?.to_rgb8();
         Ok(Self {
             width: rgb.width(),
             height: rgb.height(),
@@ -144,7 +145,7 @@ pub struct ImageDiff {
 pub fn compare(image: &RgbImage, reference: &RgbImage) -> Result<ImageDiff> {
     if (image.width, image.height) != (reference.width, reference.height) {
         return Err(Error::invalid(
-            "image size",
+            Param::ImageSize,
             format!(
                 "{}x{} vs reference {}x{}",
                 image.width, image.height, reference.width, reference.height
@@ -171,4 +172,45 @@ pub fn compare(image: &RgbImage, reference: &RgbImage) -> Result<ImageDiff> {
         max_abs_err: max,
         frac_off_2: off as f64 / n,
     })
+}
+
+/// Largest image file read (a PNG of the largest image `RgbImage` allows, 16-bit RGBA,
+/// uncompressed, is 2 GiB: no real picture or depth map comes near).
+pub const MAX_IMAGE_FILE_BYTES: u64 = 1 << 31;
+
+/// An image file (PNG; JPEG with the `jpeg` feature) decoded: its format checked
+/// ([`crate::formats`]: a file of another kind names the command that reads it), its bytes
+/// read with a bound, then [`decode_bytes`].
+pub(crate) fn decode(path: &Path) -> Result<image::DynamicImage> {
+    crate::formats::expect(path, crate::formats::DataKind::Image)?;
+    let bytes = crate::file::read_bounded(path, MAX_IMAGE_FILE_BYTES, "the image-file limit")?;
+    decode_bytes(&bytes, path)
+}
+
+/// An image decoded after its size (from the header) passed the image-size and memory
+/// checks; `path` names it in errors.
+pub(crate) fn decode_bytes(bytes: &[u8], path: &Path) -> Result<image::DynamicImage> {
+    let fail = |reason: String| Error::Image {
+        path: path.to_path_buf(),
+        reason,
+    };
+    let reader = || {
+        image::ImageReader::new(std::io::Cursor::new(bytes))
+            .with_guessed_format()
+            .map_err(|e| fail(e.to_string()))
+    };
+    let (w, h) = reader()?
+        .into_dimensions()
+        .map_err(|e| fail(e.to_string()))?;
+    RgbImage::check_size(w, h).map_err(|e| fail(e.to_string()))?;
+    // Decoded (up to 8 bytes per pixel), its luma (2) and the f32 values (4).
+    let bytes_needed = u64::from(w) * u64::from(h) * 14;
+    crate::budget::check(|| format!("image {}", path.display()), bytes_needed)?;
+    let mut reader = reader()?;
+    let mut limits = image::Limits::default();
+    limits.max_image_width = Some(w);
+    limits.max_image_height = Some(h);
+    limits.max_alloc = Some(bytes_needed);
+    reader.limits(limits);
+    reader.decode().map_err(|e| fail(e.to_string()))
 }

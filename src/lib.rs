@@ -16,6 +16,7 @@
 mod any;
 pub mod budget;
 pub mod camera;
+mod data_kind;
 pub mod display;
 mod error;
 pub mod file;
@@ -24,8 +25,11 @@ pub mod frame;
 pub mod gaussians;
 pub mod gpu;
 pub mod image_io;
+pub mod io;
+mod load;
 pub mod mesh;
 mod options;
+mod param;
 pub mod points;
 pub mod readback;
 pub mod render;
@@ -38,5 +42,12 @@ pub mod volume;
 pub mod warp;
 
 pub use any::{AnyRenderer, AnyScene};
+pub use data_kind::DataKind;
 pub use error::{Error, Result};
+pub use load::{
+    complete, default_preset, load, resampled, AnyData, LoadOptions, MeshLoad, PointData,
+    PointLoad, VolumeData, VolumeLoad,
+};
 pub use options::{MeshOptions, PointOptions, RendererOptions, VolumeOptions, VolumePath};
+pub use param::Param;
+pub use render::Renderer;

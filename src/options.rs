@@ -9,6 +9,7 @@ use crate::mesh::{
     CoverBounds, MeshLayered, MeshMrt, MeshNPass, MeshSinglePass, MeshSinglePassOptions, MeshTiled,
     TileClip, Visibility,
 };
+use crate::param::Param;
 use crate::points::SplatScene;
 use crate::points::{PointSplatter, SplatDepth, SplatOptions, DEFAULT_EPSILON_FRACTION};
 use crate::render::{Banded, Method, Renderer};
@@ -160,7 +161,7 @@ impl RendererOptions {
         if let VolumePath::Slices(alpha) = self.volume.path {
             if self.method != Method::SinglePass {
                 return Err(Error::invalid(
-                    "volume path",
+                    Param::VolumePath,
                     format!(
                         "proxy slices are a single-pass path; the {} method ray-marches",
                         self.method
@@ -191,7 +192,7 @@ impl RendererOptions {
     pub fn rgbd_renderer(&self, device: &wgpu::Device) -> Result<Box<dyn Renderer<RgbdScene>>> {
         if self.method != Method::Warp {
             return Err(Error::invalid(
-                "method",
+                Param::Method,
                 format!(
                     "an RGB-D image holds one view, so it is warped into the others (method \
                      warp), not rendered by the {} method",

@@ -3,6 +3,7 @@
 use crate::error::Result;
 use crate::gpu::check_size_2d;
 use crate::image_io::RgbImage;
+use crate::param::Param;
 use crate::readback::read_texture_rgba8;
 use crate::render::texture::{texture_2d, Texture2d};
 
@@ -80,7 +81,7 @@ impl SpatialTarget {
             None
         };
         if let Some(problem) = problem {
-            return Err(crate::Error::invalid("target texture", problem));
+            return Err(crate::Error::invalid(Param::TargetTexture, problem));
         }
         let view = texture.create_view(&Default::default());
         Ok(Self {
@@ -101,7 +102,7 @@ impl SpatialTarget {
         }
         if !self.owned {
             return Err(crate::Error::invalid(
-                "target texture",
+                Param::TargetTexture,
                 "a caller's texture: make one of the new size and wrap it with from_texture",
             ));
         }
@@ -118,7 +119,7 @@ impl SpatialTarget {
     pub fn read(&self, device: &wgpu::Device, queue: &wgpu::Queue) -> Result<RgbImage> {
         if !self.texture.usage().contains(wgpu::TextureUsages::COPY_SRC) {
             return Err(crate::Error::invalid(
-                "target texture",
+                Param::TargetTexture,
                 "reading it back needs COPY_SRC usage",
             ));
         }

@@ -2,36 +2,89 @@
 //! its own terms ("sampling step", "use Visibility::Exact"); here the message also names the
 //! flag that sets the parameter (`--step`) and gives the advice as flags (`--visibility exact`).
 
-/// (library parameter name, the flag that sets it).
-const FLAGS: &[(&str, &str)] = &[
-    ("sampling step", "--step"),
-    ("sample sharing tolerance", "--share-samples"),
-    (
-        "probing stride through transparent material",
-        "--empty-stride",
-    ),
-    ("thin-material opacity", "--thin-alpha"),
-    ("volume path", "--path"),
-    ("hole gap", "--hole-gap"),
-    ("references", "--references"),
-    ("epsilon", "--epsilon"),
-    ("radius scale", "--radius-scale"),
-    ("view scale", "--view-scale"),
-    ("focus", "--focus"),
-    ("depthiness", "--depthiness"),
-    ("separation", "--separation"),
-    ("downsample factor", "--downsample"),
-    ("method", "--method"),
-    ("camera model", "--camera"),
-    ("look-from", "--look-from"),
-    ("look-at", "--look-at"),
-    ("up", "--up"),
-    ("focal distance", "--focal/--focal-scale"),
-    ("views", "--views"),
-    ("groups", "--groups"),
-    ("splat groups", "--groups"),
-    ("field of view", "--fov"),
-];
+use autostereo::Param;
+
+/// The flag that sets the library parameter `param`, where one does: one exhaustive `match`,
+/// so a parameter added to the library without a decision here does not compile. `None`: the
+/// CLI sets the parameter from a file or computes it (a calibration's values, the target
+/// textures), or its errors already name the flag (`--tf FILE`, `--display SPEC`).
+pub fn flag_of(param: Param) -> Option<&'static str> {
+    Some(match param {
+        Param::SamplingStep => "--step",
+        Param::SampleSharing => "--share-samples",
+        Param::EmptyStride => "--empty-stride",
+        Param::ThinAlpha => "--thin-alpha",
+        Param::VolumePath => "--path",
+        Param::HoleGap => "--hole-gap",
+        Param::References => "--references",
+        Param::Epsilon => "--epsilon",
+        Param::RadiusScale => "--radius-scale",
+        Param::ViewScale => "--view-scale",
+        Param::Focus => "--focus",
+        Param::Depthiness => "--depthiness",
+        Param::Separation => "--separation",
+        Param::DownsampleFactor => "--downsample",
+        Param::Method => "--method",
+        Param::CameraModel => "--camera",
+        Param::LookFrom => "--look-from",
+        Param::LookAt => "--look-at",
+        Param::Up => "--up",
+        Param::FocalDistance => "--focal/--focal-scale",
+        Param::Views => "--views",
+        Param::Groups => "--groups",
+        Param::FieldOfView => "--fov",
+        Param::Aspect
+        | Param::Bands
+        | Param::Camera
+        | Param::CameraFraming
+        | Param::DepthMap
+        | Param::Far
+        | Param::Fov
+        | Param::Gaussians
+        | Param::ImageSize
+        | Param::LookingGlassCalibration
+        | Param::Mesh
+        | Param::Near
+        | Param::Phase
+        | Param::Pitch
+        | Param::PointCloud
+        | Param::Quilt
+        | Param::QuiltAtlas
+        | Param::RgbdColorTexture
+        | Param::RgbdNearnessTexture
+        | Param::SameSurface
+        | Param::Scene
+        | Param::Size
+        | Param::Slant
+        | Param::SpatialTarget
+        | Param::Splats
+        | Param::StereoEyes
+        | Param::StereoOutput
+        | Param::Target
+        | Param::TargetFormat
+        | Param::TargetTexture
+        | Param::TransferFunction
+        | Param::View
+        | Param::ViewCone
+        | Param::ViewImageSize
+        | Param::ViewMatrix
+        | Param::VolumeAxes
+        | Param::VolumeData
+        | Param::VolumeDimensions
+        | Param::VolumeRotation
+        | Param::VoxelSpacing
+        | Param::WindowOffset => return None,
+    })
+}
+
+/// The flag that sets a count the adapter limits (`Error::LimitExceeded`'s quantity).
+fn flag_of_limit(what: &str) -> Option<&'static str> {
+    match what {
+        "views" => Some("--views"),
+        "groups" | "splat groups" => Some("--groups"),
+        _ => None,
+    }
+}
 
 /// (library term in an error's advice, the command line's words for it).
 const TERMS: &[(&str, &str)] = &[
@@ -51,12 +104,17 @@ const TERMS: &[(&str, &str)] = &[
     ("DepthMapOptions::resample", "--depth-resample"),
 ];
 
-/// The flag that sets the library parameter `name`, where one does.
-pub fn flag_of(name: &str) -> Option<&'static str> {
-    FLAGS
-        .iter()
-        .find(|(n, _)| *n == name)
-        .map(|(_, flag)| *flag)
+/// The command line that reads `file`, data of `kind`.
+pub fn reader_of(kind: autostereo::DataKind, file: &str) -> String {
+    use autostereo::DataKind;
+    let command = match kind {
+        DataKind::Mesh => "mesh",
+        DataKind::Points => "points",
+        DataKind::Volume => "volume",
+        DataKind::Image => return "`autostereo rgbd` or `autostereo interleave`".into(),
+        DataKind::Gaussians => "gaussians",
+    };
+    format!("`autostereo {command} {file}`")
 }
 
 /// `error` and its causes as `{:#}` prints them, each invalid library parameter prefixed with
@@ -65,10 +123,25 @@ pub fn describe(error: &anyhow::Error) -> String {
     let parts: Vec<String> = error
         .chain()
         .map(|cause| match cause.downcast_ref::<autostereo::Error>() {
-            Some(autostereo::Error::InvalidParameter { name, .. }) => match flag_of(name) {
+            Some(autostereo::Error::InvalidParameter { param, .. }) => match flag_of(*param) {
                 Some(flag) => format!("{flag}: {cause}"),
                 None => cause.to_string(),
             },
+            // A file of another kind: the command that reads it, with the file.
+            Some(autostereo::Error::WrongKind {
+                path,
+                holds,
+                wanted,
+                detail,
+            }) => {
+                let name = path.display();
+                let not = wanted.map_or(String::new(), |w| format!(", not {}", w.article()));
+                format!(
+                    "{name}: this is {} ({detail}){not}: {} reads it",
+                    holds.article(),
+                    reader_of(*holds, &name.to_string())
+                )
+            }
             // Every display spec the user types is `--display`'s.
             Some(autostereo::Error::DisplaySpec { spec, reason }) => {
                 format!("--display {spec}: {reason}")
@@ -84,7 +157,8 @@ pub fn describe(error: &anyhow::Error) -> String {
                 format!("{cause} (--size: at most {limit} pixels a side on this adapter)")
             }
             // A count a flag sets, over what the adapter takes: the flag and the most it takes.
-            Some(autostereo::Error::LimitExceeded { what, limit, .. }) => match flag_of(what) {
+            Some(autostereo::Error::LimitExceeded { what, limit, .. }) => match flag_of_limit(what)
+            {
                 Some(flag) => format!("{flag}: {cause} (at most {flag} {limit} on this adapter)"),
                 None => cause.to_string(),
             },
@@ -129,6 +203,35 @@ mod tests {
         assert_eq!(describe(&plain), "no such file");
         let advice = anyhow::anyhow!("X needs Y; use Visibility::Exact");
         assert_eq!(describe(&advice), "X needs Y; use --visibility exact");
+    }
+
+    /// Every flag a parameter maps to is a flag of some command (a renamed flag fails here).
+    #[test]
+    fn every_parameter_maps_to_a_real_flag() {
+        use clap::CommandFactory;
+        let cli = crate::Cli::command();
+        let mut longs = std::collections::BTreeSet::new();
+        for command in cli.get_subcommands() {
+            for arg in command.get_arguments() {
+                if let Some(long) = arg.get_long() {
+                    longs.insert(format!("--{long}"));
+                }
+            }
+        }
+        for param in Param::ALL {
+            for flag in flag_of(param).into_iter().flat_map(|f| f.split('/')) {
+                assert!(
+                    longs.contains(flag),
+                    "{param}: {flag} is no flag of any command"
+                );
+            }
+        }
+        assert_eq!(flag_of(Param::SamplingStep), Some("--step"));
+        assert_eq!(
+            flag_of(Param::TargetTexture),
+            None,
+            "set by an embedder, not a flag"
+        );
     }
 
     #[test]

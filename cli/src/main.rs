@@ -34,7 +34,7 @@ use clap::{Parser, Subcommand};
     version,
     about = "Multi-view rendering for autostereoscopic displays"
 )]
-struct Cli {
+pub struct Cli {
     #[command(subcommand)]
     command: Command,
 }

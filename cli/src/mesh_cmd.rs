@@ -95,6 +95,13 @@ impl MeshFlags {
         Ok(())
     }
 
+    /// How the library prepares a mesh file (`autostereo::load`).
+    pub fn load_options(&self) -> autostereo::MeshLoad {
+        autostereo::MeshLoad {
+            sort_triangles: self.sort_triangles,
+        }
+    }
+
     /// The mesh in `file` (the generated torus scene without one), reordered if asked.
     pub fn load(&self, file: Option<&Path>) -> Result<Mesh> {
         let mut mesh = match file {

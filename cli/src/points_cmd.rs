@@ -6,7 +6,7 @@ use std::time::Instant;
 
 use anyhow::{bail, Result};
 use autostereo::points::SplatDepth;
-use autostereo::points::{Completion, GroupCount, PointCloud, SplatScene, Splats};
+use autostereo::points::{GroupCount, PointCloud, SplatScene, Splats};
 use autostereo::render::Method;
 use autostereo::{PointOptions, RendererOptions};
 
@@ -77,10 +77,17 @@ impl PointFlags {
         Ok(())
     }
 
-    /// The cloud in `file` (the generated torus scene without one), completed into splats
-    /// (normals and radii estimated where missing, radii scaled).
-    pub fn load(&self, file: Option<&Path>) -> Result<(Splats, Completion)> {
-        Ok(Self::cloud(file)?.complete(self.radius_scale)?)
+    /// How the library prepares a point cloud (`autostereo::load`).
+    pub fn load_options(&self) -> autostereo::PointLoad {
+        autostereo::PointLoad {
+            radius_scale: self.radius_scale,
+            groups: self.groups,
+        }
+    }
+
+    /// `cloud` completed into splats as the flags say.
+    pub fn complete(&self, cloud: &PointCloud) -> Result<autostereo::PointData> {
+        Ok(autostereo::complete(cloud, &self.load_options())?)
     }
 
     /// The cloud in `file`, the generated torus scene without one.

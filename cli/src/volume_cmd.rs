@@ -4,9 +4,10 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
 use autostereo::render::Method;
-use autostereo::volume::load::{load_any, load_raw, RawSpec, SampleType};
+use autostereo::volume::load::{RawSpec, SampleType};
 use autostereo::volume::VolumeScene;
 use autostereo::volume::{phantom, TransferFunction, Volume};
+use autostereo::{AnyData, DataKind, LoadOptions, VolumeData, VolumeLoad};
 use glam::Mat4;
 
 use crate::args::{gpu, RenderArgs};
@@ -128,91 +129,90 @@ fn parse_f32_triple(s: &str) -> Result<[f32; 3], String> {
     }
 }
 
-/// The transfer-function preset a file gets without --tf: `mri` for the formats of MR studies
-/// (NIfTI, VolPack's MRI brain), else `ct-skin`.
-pub fn default_preset(path: &std::path::Path) -> &'static str {
-    use autostereo::formats::Format;
-    match autostereo::formats::detect(path) {
-        Ok(Format::Nifti | Format::Den) => "mri",
-        _ => "ct-skin",
-    }
-}
-
 impl VolumeDataArgs {
-    /// The volume in `file` (the built-in data set without one) and the transfer-function
-    /// preset its format gets without --tf.
-    pub fn load(&self, file: Option<&Path>) -> Result<(Volume, &'static str)> {
-        let (mut volume, default_tf) = match file {
-            None => {
-                if self.raw_dims.is_some()
-                    || self.raw_type.is_some()
-                    || self.raw_big_endian
-                    || self.raw_header != 0
-                {
-                    bail!(
-                        "--raw-dims, --raw-type, --raw-big-endian and --raw-header describe a raw \
-                         FILE, and none is given"
-                    );
-                }
-                match self.builtin {
-                    Builtin::Head => (phantom::ct_head(self.builtin_size)?, "ct-skin"),
-                    Builtin::Ml => (phantom::marschner_lobb(self.builtin_size)?, "ml"),
-                }
-            }
-            Some(path) => {
-                let defaults = crate::args::defaults_of::<Self>();
-                if self.builtin != defaults.builtin || self.builtin_size != defaults.builtin_size {
-                    bail!(
-                        "--builtin and --builtin-size choose the data set used without a FILE, \
-                         and {} is given",
-                        path.display()
-                    );
-                }
-                let raw = self.raw_dims.is_some() || self.raw_type.is_some();
-                if !raw && (self.raw_big_endian || self.raw_header != 0) {
-                    bail!(
-                        "--raw-big-endian and --raw-header describe a raw file, given with \
-                         --raw-dims and --raw-type"
-                    );
-                }
-                let volume = match (self.raw_dims, &self.raw_type) {
-                    (Some(dims), Some(kind)) => {
-                        let kind = SampleType::parse(kind).with_context(|| {
-                            format!(
-                                "unknown --raw-type '{kind}' (u8, i8, u16, i16, u32, i32, f32, f64)"
-                            )
-                        })?;
-                        let spec = RawSpec {
-                            dims,
-                            kind,
-                            big_endian: self.raw_big_endian,
-                            spacing: self.spacing.unwrap_or([1.0; 3]),
-                            header_bytes: self.raw_header,
-                        };
-                        load_raw(path, &spec)?
-                    }
-                    (None, None) => load_any(path)?,
-                    _ => bail!("raw volumes need both --raw-dims and --raw-type"),
-                };
-                (volume, default_preset(path))
-            }
-        };
-        if let Some(spacing) = self.spacing {
-            volume = Volume::new(volume.dims, spacing, volume.data)?;
-        }
-        if self.downsample > 1 {
-            let smallest = volume.dims.into_iter().min().unwrap_or(0);
-            if self.downsample * 2 > smallest {
+    /// The volume in `file` (the built-in data set without one), resampled, classified by
+    /// --tf (else the preset of its format) and placed by --rotate: by the library's
+    /// [`autostereo::load`] for a file.
+    pub fn load(&self, file: Option<&Path>) -> Result<VolumeData> {
+        let raw = self.raw_dims.is_some()
+            || self.raw_type.is_some()
+            || self.raw_big_endian
+            || self.raw_header != 0;
+        let Some(path) = file else {
+            if raw {
                 bail!(
-                    "--downsample {}: the volume's smallest side, {smallest} voxels, would keep \
-                     fewer than 2 (nothing to render); at most --downsample {}",
-                    self.downsample,
-                    (smallest / 2).max(1)
+                    "--raw-dims, --raw-type, --raw-big-endian and --raw-header describe a raw \
+                     FILE, and none is given"
                 );
             }
-            volume = volume.downsample(self.downsample)?;
+            let (volume, preset) = match self.builtin {
+                Builtin::Head => (phantom::ct_head(self.builtin_size)?, "ct-skin"),
+                Builtin::Ml => (phantom::marschner_lobb(self.builtin_size)?, "ml"),
+            };
+            let volume = match self.spacing {
+                Some(spacing) => Volume::new(volume.dims, spacing, volume.data)?,
+                None => volume,
+            };
+            let volume = autostereo::resampled(volume, self.downsample)?;
+            let mut data = VolumeData::with_preset(volume, preset, self.model())?;
+            if self.tf.is_some() {
+                data.transfer = self.transfer(preset)?;
+                data.preset = None;
+            }
+            return Ok(data);
+        };
+        let defaults = crate::args::defaults_of::<Self>();
+        if self.builtin != defaults.builtin || self.builtin_size != defaults.builtin_size {
+            bail!(
+                "--builtin and --builtin-size choose the data set used without a FILE, and {} is \
+                 given",
+                path.display()
+            );
         }
-        Ok((volume, default_tf))
+        let options = LoadOptions {
+            kind: Some(DataKind::Volume),
+            volume: self.volume_load()?,
+            ..LoadOptions::default()
+        };
+        match autostereo::load(path, &options)? {
+            AnyData::Volume(data) => Ok(*data),
+            _ => unreachable!("a volume was asked for"),
+        }
+    }
+
+    /// How the library reads a FILE: raw as --raw-* describe, --spacing, --downsample, --tf,
+    /// --rotate.
+    pub fn volume_load(&self) -> Result<VolumeLoad> {
+        let raw = match (self.raw_dims, &self.raw_type) {
+            (Some(dims), Some(kind)) => {
+                let kind = SampleType::parse(kind).with_context(|| {
+                    format!("unknown --raw-type '{kind}' (u8, i8, u16, i16, u32, i32, f32, f64)")
+                })?;
+                Some(RawSpec {
+                    dims,
+                    kind,
+                    big_endian: self.raw_big_endian,
+                    spacing: self.spacing.unwrap_or([1.0; 3]),
+                    header_bytes: self.raw_header,
+                })
+            }
+            (None, None) if self.raw_big_endian || self.raw_header != 0 => bail!(
+                "--raw-big-endian and --raw-header describe a raw file, given with --raw-dims and \
+                 --raw-type"
+            ),
+            (None, None) => None,
+            _ => bail!("raw volumes need both --raw-dims and --raw-type"),
+        };
+        Ok(VolumeLoad {
+            raw,
+            spacing: self.spacing,
+            downsample: self.downsample,
+            transfer: match self.tf {
+                Some(_) => Some(self.transfer("")?),
+                None => None,
+            },
+            model: self.model(),
+        })
     }
 
     /// The transfer function: --tf, else `default` (a preset name).
@@ -235,18 +235,6 @@ impl VolumeDataArgs {
         let [ax, ay, az] = self.rotate.map(f32::to_radians);
         Mat4::from_rotation_z(az) * Mat4::from_rotation_y(ay) * Mat4::from_rotation_x(ax)
     }
-
-    /// The scene on the GPU: loaded, its transfer function, placed.
-    pub fn scene(
-        &self,
-        ctx: &autostereo::gpu::GpuContext,
-        file: Option<&Path>,
-    ) -> Result<(Volume, VolumeScene)> {
-        let (volume, default_tf) = self.load(file)?;
-        let tf = self.transfer(default_tf)?;
-        let scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, tf, self.model())?;
-        Ok((volume, scene))
-    }
 }
 
 pub fn run(args: VolumeArgs) -> Result<()> {
@@ -263,13 +251,17 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         args.file.as_deref(),
     )?;
     args.render.check(args.common.method)?;
-    let (volume, default_tf) = args.data.load(args.file.as_deref())?;
-    let tf = args.data.transfer(default_tf)?;
+    let VolumeData {
+        volume,
+        transfer,
+        model,
+        ..
+    } = args.data.load(args.file.as_deref())?;
     let step = args.render.step(&volume);
     let bounds = volume.bounds();
     let frame = args.common.frame(bounds)?;
     let ctx = gpu()?;
-    let scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, tf, args.data.model())?;
+    let scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, transfer, model)?;
     // The settings are checked where the renderer is built (src/volume/settings.rs, the
     // renderers' constructors); cli/src/flags.rs names the flags in their errors.
     let options = RendererOptions {

@@ -1,5 +1,5 @@
 #![no_main]
 //! PLY bytes (ASCII and binary).
 libfuzzer_sys::fuzz_target!(|data: &[u8]| {
-    let _ = autostereo::points::ply::parse(data);
+    let _ = autostereo::io::ply::parse(data);
 });

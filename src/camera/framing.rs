@@ -4,6 +4,7 @@ use glam::{Mat4, Vec3};
 
 use super::{CameraModel, MultiViewCamera};
 use crate::error::{Error, Result};
+use crate::param::Param;
 
 /// Axis-aligned bounding box in world space.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -47,7 +48,7 @@ impl Bounds {
 fn check_lens(fov_y: f32, aspect: f32, separation: Option<f32>) -> Result<()> {
     if !(fov_y > 0.0 && fov_y < std::f32::consts::PI && aspect.is_finite() && aspect > 0.0) {
         return Err(Error::invalid(
-            "field of view",
+            Param::FieldOfView,
             format!(
                 "{}° ({fov_y} rad) at aspect {aspect}: the vertical field of view must be \
                  between 0 and 180°, the aspect positive",
@@ -56,7 +57,10 @@ fn check_lens(fov_y: f32, aspect: f32, separation: Option<f32>) -> Result<()> {
         ));
     }
     if let Some(e) = separation.filter(|e| !e.is_finite()) {
-        return Err(Error::invalid("separation", format!("{e}: must be finite")));
+        return Err(Error::invalid(
+            Param::Separation,
+            format!("{e}: must be finite"),
+        ));
     }
     Ok(())
 }
@@ -94,7 +98,7 @@ impl MultiViewCamera {
         // Only the data decides this camera: say so, rather than blame a flag never given.
         camera.validate().map_err(|e| {
             Error::invalid(
-                "camera framing",
+                Param::CameraFraming,
                 format!(
                     "the scene's bounds {:?} .. {:?} (radius {radius}) give no usable camera \
                      ({e}); centre or scale the data",
@@ -126,7 +130,11 @@ impl MultiViewCamera {
         aspect: f32,
     ) -> Result<Self> {
         check_lens(fov_y, aspect, separation)?;
-        for (name, v) in [("look-from", from), ("look-at", at), ("up", up)] {
+        for (name, v) in [
+            (Param::LookFrom, from),
+            (Param::LookAt, at),
+            (Param::Up, up),
+        ] {
             if !v.is_finite() {
                 return Err(Error::invalid(name, format!("{v}: must be finite")));
             }
@@ -138,8 +146,8 @@ impl MultiViewCamera {
         if !focal_distance.is_finite() {
             let (name, point, other_name, other) =
                 match at.abs().max_element() >= from.abs().max_element() {
-                    true => ("look-at", at, "look-from", from),
-                    false => ("look-from", from, "look-at", at),
+                    true => (Param::LookAt, at, Param::LookFrom, from),
+                    false => (Param::LookFrom, from, Param::LookAt, at),
                 };
             return Err(Error::invalid(
                 name,
@@ -154,17 +162,20 @@ impl MultiViewCamera {
         let scale = from.abs().max(at.abs()).max_element().max(bounds.radius());
         if focal_distance <= 1e-6 * scale {
             return Err(Error::invalid(
-                "look-at",
+                Param::LookAt,
                 format!("{at} is the look-from point {from}: the camera looks nowhere"),
             ));
         }
         let forward = view / focal_distance;
         if up.length() <= 0.0 {
-            return Err(Error::invalid("up", "the zero vector has no direction"));
+            return Err(Error::invalid(
+                Param::Up,
+                "the zero vector has no direction",
+            ));
         }
         if forward.cross(up.normalize()).length() < 1e-4 {
             return Err(Error::invalid(
-                "up",
+                Param::Up,
                 format!(
                     "{up} is parallel to the view direction {forward} (look-from {from} to \
                      look-at {at}): it must point across it, towards the image's top"
@@ -175,7 +186,7 @@ impl MultiViewCamera {
         let centre = forward.dot(bounds.center() - from);
         if centre + radius <= 0.0 {
             return Err(Error::invalid(
-                "look-at",
+                Param::LookAt,
                 format!(
                     "looking from {from} towards {at}, the scene's bounds {:?} .. {:?} are \
                      wholly behind the camera",
@@ -210,7 +221,7 @@ impl MultiViewCamera {
     pub fn spread_over_cone(&mut self, cone: f32) -> Result<()> {
         if !(cone > 0.0 && cone < std::f32::consts::PI) {
             return Err(Error::invalid(
-                "view cone",
+                Param::ViewCone,
                 format!("{cone} rad: must be between 0 and π"),
             ));
         }

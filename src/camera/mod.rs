@@ -13,6 +13,7 @@ use glam::{Mat4, Vec2, Vec3, Vec4};
 
 use crate::display::check_views;
 use crate::error::{Error, Result};
+use crate::param::Param;
 
 /// How the N cameras at offsets `vd_i` look at the scene.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -61,7 +62,9 @@ impl std::str::FromStr for CameraModel {
         Self::ALL
             .into_iter()
             .find(|m| m.name() == s)
-            .ok_or_else(|| Error::invalid("camera", format!("'{s}': skewed, parallel or toe-in")))
+            .ok_or_else(|| {
+                Error::invalid(Param::Camera, format!("'{s}': skewed, parallel or toe-in"))
+            })
     }
 }
 
@@ -103,7 +106,7 @@ impl MultiViewCamera {
     /// Check every parameter; each failure names the parameter.
     pub fn validate(&self) -> Result<()> {
         check_views(self.views)?;
-        let positive = |name: &'static str, v: f32| {
+        let positive = |name: Param, v: f32| {
             if v.is_finite() && v > 0.0 {
                 Ok(())
             } else {
@@ -113,21 +116,21 @@ impl MultiViewCamera {
                 ))
             }
         };
-        positive("focal distance", self.focal_distance)?;
-        positive("aspect", self.aspect)?;
-        positive("near", self.near)?;
+        positive(Param::FocalDistance, self.focal_distance)?;
+        positive(Param::Aspect, self.aspect)?;
+        positive(Param::Near, self.near)?;
         if !self.separation.is_finite() {
-            return Err(Error::invalid("separation", "must be finite"));
+            return Err(Error::invalid(Param::Separation, "must be finite"));
         }
         if !(self.fov_y > 0.0 && self.fov_y < std::f32::consts::PI) {
             return Err(Error::invalid(
-                "fov",
+                Param::Fov,
                 format!("{} rad: must be in (0, π)", self.fov_y),
             ));
         }
         if !(self.far.is_finite() && self.far > self.near) {
             return Err(Error::invalid(
-                "far",
+                Param::Far,
                 format!(
                     "{}: must be finite and beyond near = {}",
                     self.far, self.near
@@ -135,10 +138,13 @@ impl MultiViewCamera {
             ));
         }
         if !self.eye_from_world.is_finite() {
-            return Err(Error::invalid("view matrix", "contains NaN or infinity"));
+            return Err(Error::invalid(
+                Param::ViewMatrix,
+                "contains NaN or infinity",
+            ));
         }
         if !self.window_offset.is_finite() {
-            return Err(Error::invalid("window offset", "must be finite"));
+            return Err(Error::invalid(Param::WindowOffset, "must be finite"));
         }
         Ok(())
     }

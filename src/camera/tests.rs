@@ -174,7 +174,7 @@ fn a_degenerate_look_at_is_refused_by_name() {
     let refused = |from: Vec3, at: Vec3, up: Vec3, name: &str, says: &str| {
         let e = MultiViewCamera::looking_at(bounds, from, at, up, 8, None, 0.6, 1.0).unwrap_err();
         match &e {
-            Error::InvalidParameter { name: n, .. } => assert_eq!(*n, name, "{e}"),
+            Error::InvalidParameter { param, .. } => assert_eq!(param.name(), name, "{e}"),
             other => panic!("{other}"),
         }
         assert!(e.to_string().contains(says), "{e}");

@@ -6,6 +6,7 @@
 use std::path::{Path, PathBuf};
 
 use crate::error::{Error, Result};
+use crate::param::Param;
 
 /// The calibration's path on the display's volume.
 const ON_VOLUME: [&str; 2] = ["LKG_calibration", "visual.json"];
@@ -70,7 +71,7 @@ pub fn find_attached(bases: &[PathBuf]) -> Result<PathBuf> {
     match found.as_slice() {
         [one] => Ok(one.clone()),
         [] => Err(Error::invalid(
-            "Looking Glass calibration",
+            Param::LookingGlassCalibration,
             format!(
                 "no attached display found: looked for {} on the volumes mounted in {} (one or \
                  two folders down); connect the display and let the system mount its volume, \
@@ -80,7 +81,7 @@ pub fn find_attached(bases: &[PathBuf]) -> Result<PathBuf> {
             ),
         )),
         several => Err(Error::invalid(
-            "Looking Glass calibration",
+            Param::LookingGlassCalibration,
             format!(
                 "{} attached displays found ({}): choose one with lkg:PATH",
                 several.len(),

@@ -18,6 +18,7 @@ pub use mask::{hubner8_paper_view, Mask, MaskUniform};
 pub use subpixel_cells::{CellPattern, SubpixelCell, SubpixelCells};
 
 use crate::error::{Error, Result};
+use crate::param::Param;
 
 /// Most views any display or renderer supports (texture-array layers, u8 view images).
 pub const MAX_VIEWS: u32 = 256;
@@ -185,7 +186,7 @@ impl Display {
             _ if own == n => {}
             _ => {
                 return Err(Error::invalid(
-                    "views",
+                    Param::Views,
                     format!("this display has {own} views; {n} were requested"),
                 ))
             }
@@ -213,10 +214,10 @@ impl Display {
                 // Derived from the calibration: finite inputs can still give an unusable lens.
                 let s = calibration.slanted();
                 check_slanted(s.pitch, s.slant, s.phase)
-                    .map_err(|e| Error::invalid("Looking Glass calibration", e.to_string()))
+                    .map_err(|e| Error::invalid(Param::LookingGlassCalibration, e.to_string()))
             }
             DisplayKind::OneView { views, view } if view >= views => Err(Error::invalid(
-                "view",
+                Param::View,
                 format!("{view}: the display has views 0…{}", views - 1),
             )),
             DisplayKind::Lenticular { .. } | DisplayKind::Hubner8 | DisplayKind::OneView { .. } => {
@@ -283,11 +284,11 @@ const MAX_PERIODS: f64 = (1u64 << 32) as f64;
 fn check_slanted(pitch: f64, slant: f64, phase: f64) -> Result<()> {
     if !(pitch.is_finite() && pitch >= MIN_PITCH) {
         return Err(Error::invalid(
-            "pitch",
+            Param::Pitch,
             format!("{pitch}: the lens pitch must be a positive, finite number of subpixels"),
         ));
     }
-    for (name, v) in [("slant", slant), ("phase", phase)] {
+    for (name, v) in [(Param::Slant, slant), (Param::Phase, phase)] {
         if !(v.is_finite() && (v / pitch).abs() <= MAX_PERIODS) {
             return Err(Error::invalid(
                 name,
@@ -310,7 +311,7 @@ pub const MIN_PITCH: f64 = 1.0 / MAX_PERIODS;
 pub fn check_views(n: u32) -> Result<()> {
     if n == 0 || n > MAX_VIEWS {
         return Err(Error::invalid(
-            "views",
+            Param::Views,
             format!("{n}: the number of views must be between 1 and {MAX_VIEWS}"),
         ));
     }

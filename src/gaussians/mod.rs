@@ -21,6 +21,7 @@ use glam::{Mat3, Quat, Vec3};
 
 use crate::camera::Bounds;
 use crate::error::{Error, Result};
+use crate::param::Param;
 use crate::render::Method;
 
 /// The methods that render 3D Gaussian splats; [`GaussianSplatter::new`] refuses the others
@@ -105,7 +106,7 @@ impl Gaussians {
     /// scales ≥ 0, unit rotations, opacities in [0, 1].
     pub fn validate(&self) -> Result<()> {
         match self.problem() {
-            Some(reason) => Err(Error::invalid("gaussians", reason)),
+            Some(reason) => Err(Error::invalid(Param::Gaussians, reason)),
             None => Ok(()),
         }
     }

@@ -9,6 +9,7 @@ use wgpu::util::DeviceExt;
 use super::Gaussians;
 use crate::camera::Bounds;
 use crate::error::Result;
+use crate::param::Param;
 use crate::render::gpu_buffer::check_storage_bytes;
 
 /// One Gaussian. Keep in sync with `struct Gaussian` in `wgsl/gaussians/shared/gaussian.wgsl`.
@@ -95,7 +96,7 @@ impl GaussianScene {
             sh_degree: gaussians.sh_degree,
             means: gaussians.positions.clone(),
             bounds: gaussians.bounds().ok_or_else(|| {
-                crate::error::Error::invalid("gaussians", "the means have no finite bounds")
+                crate::error::Error::invalid(Param::Gaussians, "the means have no finite bounds")
             })?,
             _charge: charge,
         })

@@ -21,6 +21,7 @@ use glam::Vec3;
 
 use crate::camera::Bounds;
 use crate::error::{Error, Result};
+use crate::param::Param;
 use crate::render::Method;
 
 /// The methods that render meshes: every one ([`crate::RendererOptions::mesh_renderer`]).
@@ -110,7 +111,7 @@ impl Mesh {
 
     /// Check array lengths, index range and that every coordinate is finite.
     pub fn validate(&self) -> Result<()> {
-        let fail = |reason: String| Error::invalid("mesh", reason);
+        let fail = |reason: String| Error::invalid(Param::Mesh, reason);
         let n = self.positions.len();
         if self.normals.len() != n || self.colors.len() != n {
             return Err(fail(format!(

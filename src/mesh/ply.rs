@@ -28,17 +28,17 @@ pub(super) fn load(path: &Path) -> Result<Mesh> {
 
 /// Parse PLY `bytes` as a mesh (`path` names it in errors).
 pub(super) fn parse(bytes: &[u8], path: &Path) -> Result<Mesh> {
-    let ply = crate::points::ply::parse_mesh(bytes).map_err(|e| fail(path, e))?;
+    let ply = crate::io::ply::parse_mesh(bytes).map_err(|e| fail(path, e))?;
     if ply.triangles.is_empty() {
-        return Err(fail(
-            path,
-            format!(
-                "no faces with three or more corners ({} vertices): a point cloud, which \
-                 `autostereo points {}` reads",
-                ply.vertices.positions.len(),
-                path.display()
+        return Err(crate::Error::WrongKind {
+            path: path.into(),
+            holds: crate::formats::DataKind::Points,
+            wanted: Some(crate::formats::DataKind::Mesh),
+            detail: format!(
+                "PLY: no faces with three or more corners, {} vertices",
+                ply.vertices.positions.len()
             ),
-        ));
+        });
     }
     let cloud = ply.vertices;
     let n = cloud.positions.len();
@@ -93,13 +93,16 @@ mod tests {
     }
 
     #[test]
-    fn a_cloud_without_faces_names_the_points_command() {
+    fn a_cloud_without_faces_is_refused_as_points() {
         let text = "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n\
                     property float z\nend_header\n0 0 0\n";
         let e = parse(text.as_bytes(), Path::new("cloud.ply"))
             .unwrap_err()
             .to_string();
-        assert!(e.contains("`autostereo points cloud.ply`"), "{e}");
+        assert!(
+            e.contains("cloud.ply: this is a point cloud (PLY: no faces with three or more corners, 1 vertices), not a mesh"),
+            "{e}"
+        );
     }
 
     #[test]

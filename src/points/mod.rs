@@ -12,7 +12,6 @@ pub(crate) mod groups;
 #[cfg(feature = "las")]
 pub mod las;
 pub(crate) mod passes;
-pub mod ply;
 mod scene;
 
 use std::path::Path;
@@ -26,6 +25,7 @@ pub use scene::{GpuSplat, SplatScene};
 
 use crate::camera::Bounds;
 use crate::error::{Error, Result};
+use crate::param::Param;
 use crate::render::Method;
 
 /// The methods that render point splats: all but [`Method::Mrt`], which [`PointSplatter::new`]
@@ -79,6 +79,17 @@ pub struct Completion {
     pub estimate_ms: f64,
 }
 
+impl From<crate::io::ply::Vertices> for PointCloud {
+    fn from(v: crate::io::ply::Vertices) -> Self {
+        Self {
+            positions: v.positions,
+            normals: v.normals,
+            colors: v.colors,
+            radii: v.radii,
+        }
+    }
+}
+
 impl PointCloud {
     /// Load a `.ply` (its `vertex` element), `.las`/`.laz` (with the `las` feature) or `.obj`
     /// (its `v` lines, with `v x y z r g b` colours when present; faces, normals and texture
@@ -104,14 +115,13 @@ impl PointCloud {
         match expect(path, DataKind::Points)? {
             Format::Ply => {
                 let faces = ply_faces(path)?;
-                let cloud = ply::load(path)?;
+                let cloud = PointCloud::from(crate::io::ply::load(path)?);
                 if faces > 0 {
                     log::warn!(
                         "{}: a mesh of {faces} faces; its {} vertices are drawn as points \
-                         (`autostereo mesh {}` draws its surface)",
+                         (read as a mesh, its surface is drawn)",
                         path.display(),
                         cloud.len(),
-                        path.display()
                     );
                 }
                 Ok(cloud)
@@ -140,7 +150,7 @@ impl PointCloud {
     /// Check lengths and that everything is finite (radii also ≥ 0).
     pub fn validate(&self) -> Result<()> {
         let n = self.len();
-        let fail = |reason: String| Error::invalid("point cloud", reason);
+        let fail = |reason: String| Error::invalid(Param::PointCloud, reason);
         if n == 0 {
             return Err(fail("no points".into()));
         }
@@ -193,7 +203,7 @@ impl PointCloud {
         self.validate()?;
         if !(radius_scale.is_finite() && radius_scale >= 0.0) {
             return Err(Error::invalid(
-                "radius scale",
+                Param::RadiusScale,
                 format!("{radius_scale}: must be finite and ≥ 0"),
             ));
         }
@@ -322,7 +332,7 @@ impl Splats {
     /// Check lengths, that everything is finite, radii ≥ 0 and the point count.
     pub fn validate(&self) -> Result<()> {
         let n = self.positions.len();
-        let fail = |reason: String| Error::invalid("splats", reason);
+        let fail = |reason: String| Error::invalid(Param::Splats, reason);
         if n == 0 {
             return Err(fail("no splats".into()));
         }

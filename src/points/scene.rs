@@ -11,6 +11,7 @@ use super::groups::{self, GroupCount, Grouping};
 use super::Splats;
 use crate::camera::Bounds;
 use crate::error::{Error, Result};
+use crate::param::Param;
 use crate::render::gpu_buffer::check_storage_bytes;
 
 /// One splat. Keep in sync with `struct Splat` in `wgsl/points/shared/splat.wgsl`.
@@ -62,7 +63,7 @@ impl SplatScene {
             // One texture-array layer per group: check before grouping allocates per group.
             let limit = device.limits().max_texture_array_layers;
             if k == 0 {
-                return Err(Error::invalid("groups", "0: need at least one group"));
+                return Err(Error::invalid(Param::Groups, "0: need at least one group"));
             }
             // With the spare layer a square group image may need (array_layers_for).
             let layers = crate::render::view_layers::array_layers_for([1, 1], k);

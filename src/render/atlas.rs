@@ -9,6 +9,7 @@ use super::view_layers::DEPTH_FORMAT;
 use crate::error::{Error, Result};
 use crate::frame::FrameBinding;
 use crate::image_io::RgbImage;
+use crate::param::Param;
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 
 /// The atlas texture (RGBA8, quilt layout) and, for rendering into it, one depth buffer.
@@ -73,7 +74,7 @@ impl Atlas {
     ) -> Result<Self> {
         if [image.width, image.height] != layout.size() {
             return Err(Error::invalid(
-                "quilt",
+                Param::Quilt,
                 format!(
                     "image is {}x{}, a {}x{} grid of {}x{} tiles is {}x{}",
                     image.width,
@@ -125,7 +126,10 @@ impl Atlas {
     /// The depth buffer as f32 texels (rows top-down), if there is one.
     pub fn read_depth(&self, device: &wgpu::Device, queue: &wgpu::Queue) -> Result<Vec<f32>> {
         let depth = self.depth.as_ref().ok_or_else(|| {
-            Error::invalid("quilt atlas", "has no depth buffer (only tiled renders do)")
+            Error::invalid(
+                Param::QuiltAtlas,
+                "has no depth buffer (only tiled renders do)",
+            )
         })?;
         super::depth_readback::read_depth(device, queue, &depth.texture)
     }
@@ -244,7 +248,7 @@ impl QuiltInterleaver {
         super::check_target(frame, target)?;
         if atlas.layout.views < frame.camera.views {
             return Err(Error::invalid(
-                "quilt",
+                Param::Quilt,
                 format!(
                     "holds {} views, the display shows {}",
                     atlas.layout.views, frame.camera.views

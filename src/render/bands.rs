@@ -11,6 +11,7 @@
 use crate::camera::CameraModel;
 use crate::error::{Error, Result};
 use crate::frame::Frame;
+use crate::param::Param;
 use crate::render::{Method, Renderer};
 use crate::target::SpatialTarget;
 
@@ -136,7 +137,7 @@ impl<S: ?Sized> Renderer<S> for Banded<S> {
         if let Some(why) = self.unbandable(frame) {
             return Err(match whole {
                 Some(e) => e,
-                None => Error::invalid("bands", format!("a frame cannot be banded: {why}")),
+                None => Error::invalid(Param::Bands, format!("a frame cannot be banded: {why}")),
             });
         }
         let mut last = whole;
@@ -172,7 +173,7 @@ impl<S: ?Sized> Renderer<S> for Banded<S> {
         }
         Err(last.unwrap_or_else(|| {
             Error::invalid(
-                "bands",
+                Param::Bands,
                 format!(
                     "no band of at least {MIN_BAND_SIDE} pixels a side fits the band size limit"
                 ),
@@ -205,7 +206,7 @@ impl<S: ?Sized> Renderer<S> for Banded<S> {
             .contains(wgpu::TextureUsages::COPY_DST)
         {
             return Err(Error::invalid(
-                "target",
+                Param::Target,
                 "a frame rendered in bands is copied into the target, which needs COPY_DST usage",
             ));
         }

@@ -7,6 +7,7 @@ use crate::error::{Error, Result};
 use crate::frame::{frame_bind_group_layout, FrameBinding, FrameUniform};
 use crate::gpu::check_size_2d;
 use crate::image_io::RgbImage;
+use crate::param::Param;
 use crate::readback::read_texture_rgba8;
 
 /// Renders `mask_views` of `wgsl/shared/mask.wgsl` for every pixel.
@@ -40,7 +41,7 @@ impl MaskImageRenderer {
         check_size_2d(device, size[0], size[1])?;
         if display.views() > 256 {
             return Err(Error::invalid(
-                "views",
+                Param::Views,
                 "view-index images hold at most 256 views",
             ));
         }

@@ -1,6 +1,7 @@
 //! Which cameras a renderer evaluates: one enum for every primitive.
 
 use crate::error::{Error, Result};
+use crate::param::Param;
 
 /// How a multi-view frame is made. Not every primitive has every method: MRT (one depth
 /// buffer shared by the views of a draw) is the meshes' alone, and an RGB-D image is only
@@ -83,7 +84,7 @@ impl std::str::FromStr for Method {
             .ok_or_else(|| {
                 let names: Vec<_> = Method::ALL.iter().map(|m| m.name()).collect();
                 Error::invalid(
-                    "method",
+                    Param::Method,
                     format!("'{s}': expected one of {}", names.join(", ")),
                 )
             })

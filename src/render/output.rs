@@ -9,6 +9,7 @@
 use super::pipeline::{draw_fullscreen, fullscreen_pipeline_with};
 use super::texture::texture_2d_layout_entry;
 use crate::error::{Error, Result};
+use crate::param::Param;
 use crate::target::SpatialTarget;
 
 /// Formats an [`OutputBlit`] writes.
@@ -31,7 +32,7 @@ impl OutputBlit {
     pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat) -> Result<Self> {
         if !OUTPUT_FORMATS.contains(&format) {
             return Err(Error::invalid(
-                "target format",
+                Param::TargetFormat,
                 format!(
                     "{format:?}: the spatial image can go to {OUTPUT_FORMATS:?} (8-bit per \
                      channel, so that every subpixel value reaches the panel unchanged)"
@@ -106,12 +107,12 @@ impl OutputBlit {
             None
         };
         if let Some(problem) = problem {
-            return Err(Error::invalid("target texture", problem));
+            return Err(Error::invalid(Param::TargetTexture, problem));
         }
         let usage = source.texture.usage();
         if !usage.contains(wgpu::TextureUsages::TEXTURE_BINDING) {
             return Err(Error::invalid(
-                "spatial target",
+                Param::SpatialTarget,
                 format!("usage {usage:?} lacks TEXTURE_BINDING, which the output pass samples"),
             ));
         }

@@ -5,6 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use crate::error::{Error, Result};
+use crate::param::Param;
 
 /// Keep in sync with `Quilt` in wgsl/shared/quilt.wgsl.
 #[repr(C)]
@@ -62,7 +63,7 @@ impl QuiltLayout {
     pub fn with_grid(cols: u32, rows: u32, tile: [u32; 2], views: u32) -> Result<Self> {
         if cols == 0 || rows == 0 || (cols as u64 * rows as u64) < views as u64 {
             return Err(Error::invalid(
-                "quilt",
+                Param::Quilt,
                 format!("a {cols}x{rows} grid cannot hold {views} views"),
             ));
         }
@@ -91,7 +92,7 @@ impl QuiltLayout {
             (None, Some((cols, rows, _))) => [cols, rows],
             (None, None) => {
                 return Err(Error::invalid(
-                    "quilt",
+                    Param::Quilt,
                     format!(
                         "{name}: no grid; name it …_qs{{cols}}x{{rows}}a{{aspect}}.png (Looking \
                          Glass's convention) or give the grid (QuiltLayout::for_image's grid)"
@@ -102,7 +103,7 @@ impl QuiltLayout {
         if cols == 0 || rows == 0 || !size[0].is_multiple_of(cols) || !size[1].is_multiple_of(rows)
         {
             return Err(Error::invalid(
-                "quilt",
+                Param::Quilt,
                 format!(
                     "{name} is {}x{}, which a {cols}x{rows} grid does not divide into whole tiles",
                     size[0], size[1]
@@ -114,7 +115,7 @@ impl QuiltLayout {
             let tiles = tile[0] as f32 / tile[1] as f32;
             if (tiles / aspect - 1.0).abs() > 0.01 {
                 return Err(Error::invalid(
-                    "quilt",
+                    Param::Quilt,
                     format!(
                         "{name}: the name says views of aspect {aspect}, its {cols}x{rows} tiles \
                          of {}x{} have {tiles:.4}",

@@ -4,6 +4,7 @@
 
 use crate::error::{Error, Result};
 use crate::frame::Frame;
+use crate::param::Param;
 use crate::target::SpatialTarget;
 
 /// Renders scenes of type `S` (single pass, N-pass, single view…).
@@ -175,7 +176,7 @@ pub(crate) fn check_target(frame: &Frame, target: &SpatialTarget) -> Result<()> 
     frame.validate()?;
     if target.size() != frame.size {
         return Err(Error::invalid(
-            "target",
+            Param::Target,
             format!(
                 "size {:?} differs from the frame's {:?}",
                 target.size(),

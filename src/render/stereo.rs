@@ -9,6 +9,7 @@ use super::pass_params::constants_buffer;
 use super::pipeline::{bind_group_layout, draw_fullscreen, fullscreen_pipeline, uniform_entry};
 use super::texture::texture_2d_layout_entry;
 use crate::error::{Error, Result};
+use crate::param::Param;
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 
 /// A stereo image format.
@@ -122,7 +123,7 @@ impl StereoCompositor {
     ) -> Result<()> {
         if left.size() != right.size() {
             return Err(Error::invalid(
-                "stereo eyes",
+                Param::StereoEyes,
                 format!(
                     "left {:?} and right {:?} differ in size",
                     left.size(),
@@ -136,7 +137,7 @@ impl StereoCompositor {
         let fits = |i: usize| output.size()[i] >= wanted[i] && output.size()[i] <= wanted[i] + 1;
         if !(fits(0) && fits(1)) {
             return Err(Error::invalid(
-                "stereo output",
+                Param::StereoOutput,
                 format!(
                     "{:?} for {} of {:?} eyes: needs {wanted:?}",
                     output.size(),

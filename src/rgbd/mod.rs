@@ -10,7 +10,8 @@ mod scene;
 use std::path::Path;
 
 use crate::error::{Error, Result};
-use crate::image_io::RgbImage;
+use crate::image_io::{decode, decode_bytes, RgbImage};
+use crate::param::Param;
 
 pub use scene::{RgbdScene, NEARNESS_MAP_FORMAT};
 
@@ -41,7 +42,7 @@ impl RgbdImage {
         let pixels = color.width as usize * color.height as usize;
         if nearness.len() != pixels {
             return Err(Error::invalid(
-                "depth map",
+                Param::DepthMap,
                 format!(
                     "{} values for a {}x{} colour image ({pixels} pixels)",
                     nearness.len(),
@@ -52,7 +53,7 @@ impl RgbdImage {
         }
         if let Some(i) = nearness.iter().position(|d| !(0.0..=1.0).contains(d)) {
             return Err(Error::invalid(
-                "depth map",
+                Param::DepthMap,
                 format!("value {} at pixel {i} is outside 0…1", nearness[i]),
             ));
         }
@@ -178,47 +179,6 @@ impl RgbdImage {
         }
         Self::new(color, nearness_of(depth, options.invert))
     }
-}
-
-/// Largest image file read (a PNG of the largest image `RgbImage` allows, 16-bit RGBA,
-/// uncompressed, is 2 GiB: no real picture or depth map comes near).
-pub const MAX_IMAGE_FILE_BYTES: u64 = 1 << 31;
-
-/// An image file (PNG; JPEG with the `jpeg` feature) decoded: its format checked
-/// ([`crate::formats`]: a file of another kind names the command that reads it), its bytes
-/// read with a bound, then [`decode_bytes`].
-pub(crate) fn decode(path: &Path) -> Result<image::DynamicImage> {
-    crate::formats::expect(path, crate::formats::DataKind::Image)?;
-    let bytes = crate::file::read_bounded(path, MAX_IMAGE_FILE_BYTES, "the image-file limit")?;
-    decode_bytes(&bytes, path)
-}
-
-/// An image decoded after its size (from the header) passed the image-size and memory
-/// checks; `path` names it in errors.
-fn decode_bytes(bytes: &[u8], path: &Path) -> Result<image::DynamicImage> {
-    let fail = |reason: String| Error::Image {
-        path: path.to_path_buf(),
-        reason,
-    };
-    let reader = || {
-        image::ImageReader::new(std::io::Cursor::new(bytes))
-            .with_guessed_format()
-            .map_err(|e| fail(e.to_string()))
-    };
-    let (w, h) = reader()?
-        .into_dimensions()
-        .map_err(|e| fail(e.to_string()))?;
-    RgbImage::check_size(w, h).map_err(|e| fail(e.to_string()))?;
-    // Decoded (up to 8 bytes per pixel), its luma (2) and the f32 values (4).
-    let bytes_needed = u64::from(w) * u64::from(h) * 14;
-    crate::budget::check(|| format!("image {}", path.display()), bytes_needed)?;
-    let mut reader = reader()?;
-    let mut limits = image::Limits::default();
-    limits.max_image_width = Some(w);
-    limits.max_image_height = Some(h);
-    limits.max_alloc = Some(bytes_needed);
-    reader.limits(limits);
-    reader.decode().map_err(|e| fail(e.to_string()))
 }
 
 /// Normalised luma (8-bit maps scale to 0…1 as 16-bit ones do).

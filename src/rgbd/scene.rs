@@ -3,6 +3,7 @@
 
 use super::RgbdImage;
 use crate::error::{Error, Result};
+use crate::param::Param;
 use crate::render::texture::{texture_2d, Texture2d};
 use crate::target::SPATIAL_FORMAT;
 
@@ -61,7 +62,7 @@ impl RgbdScene {
     /// bindable (`TEXTURE_BINDING`); mismatches are refused by name.
     pub fn from_textures(color: &wgpu::Texture, nearness: &wgpu::Texture) -> Result<Self> {
         let size = [color.width(), color.height()];
-        let check = |t: &wgpu::Texture, name: &'static str, format: wgpu::TextureFormat| {
+        let check = |t: &wgpu::Texture, name: Param, format: wgpu::TextureFormat| {
             let problem = if t.format() != format {
                 Some(format!("is {:?}, needs {format:?}", t.format()))
             } else if [t.width(), t.height()] != size {
@@ -82,8 +83,8 @@ impl RgbdScene {
                 None => Ok(()),
             }
         };
-        check(color, "RGB-D colour texture", SPATIAL_FORMAT)?;
-        check(nearness, "RGB-D nearness texture", NEARNESS_MAP_FORMAT)?;
+        check(color, Param::RgbdColorTexture, SPATIAL_FORMAT)?;
+        check(nearness, Param::RgbdNearnessTexture, NEARNESS_MAP_FORMAT)?;
         Ok(Self {
             color: color.create_view(&Default::default()),
             nearness: nearness.create_view(&Default::default()),

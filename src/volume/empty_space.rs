@@ -9,7 +9,7 @@
 //! cells overlap into one run of zero entries: a segment between any two samples in the cube
 //! adds exactly zero. So a ray at a sample in cell c may jump as far as it moves at most D − 1
 //! voxels along every axis and resume on the same sample planes (wgsl/volume/shared/march.wgsl):
-//! the image is the one without skipping, bit for bit (tests/volume.rs). Unlike fixed bricks, a
+//! the image is the one without skipping, bit for bit (tests/volumes/volume.rs). Unlike fixed bricks, a
 //! ray in air next to a surface still skips all but the voxel or two before it, and one look-up
 //! crosses up to 254 voxels of open space.
 //!

@@ -25,6 +25,7 @@ use glam::{Mat3, Vec3};
 
 use crate::camera::Bounds;
 use crate::error::{Error, Result};
+use crate::param::Param;
 use crate::render::Method;
 
 /// The methods that render volumes: all but [`Method::Mrt`], which [`VolumeRaycaster::new`]
@@ -67,7 +68,7 @@ pub const PEAK_BYTES_PER_VOXEL: u64 = 4 + 16 + 8 + 4;
 pub fn check_dims(dims: [u64; 3]) -> Result<u64> {
     if dims.contains(&0) {
         return Err(Error::invalid(
-            "volume dimensions",
+            Param::VolumeDimensions,
             format!("{dims:?}: every dimension must be at least 1"),
         ));
     }
@@ -77,7 +78,7 @@ pub fn check_dims(dims: [u64; 3]) -> Result<u64> {
         .filter(|&n| n <= MAX_VOXELS)
         .ok_or_else(|| {
             Error::invalid(
-                "volume dimensions",
+                Param::VolumeDimensions,
                 format!("{dims:?}: more than {MAX_VOXELS} voxels"),
             )
         })?;
@@ -95,7 +96,7 @@ fn check_spacing(spacing: [f32; 3]) -> Result<()> {
         Ok(())
     } else {
         Err(Error::invalid(
-            "voxel spacing",
+            Param::VoxelSpacing,
             format!("{spacing:?}: must be positive and finite"),
         ))
     }
@@ -130,13 +131,13 @@ impl Volume {
         orientation::check_axes(self.axes)?;
         if self.data.len() as u64 != count {
             return Err(Error::invalid(
-                "volume data",
+                Param::VolumeData,
                 format!("{} values for dimensions {:?}", self.data.len(), self.dims),
             ));
         }
         if let Some(i) = self.data.iter().position(|v| !(0.0..=1.0).contains(v)) {
             return Err(Error::invalid(
-                "volume data",
+                Param::VolumeData,
                 format!("voxel {i} is {}: scalars must be in 0..1", self.data[i]),
             ));
         }
@@ -205,7 +206,10 @@ impl Volume {
     /// Average blocks of `factor`³ voxels (edges: partial blocks); spacing grows by `factor`.
     pub fn downsample(&self, factor: u32) -> Result<Self> {
         if factor == 0 {
-            return Err(Error::invalid("downsample factor", "must be at least 1"));
+            return Err(Error::invalid(
+                Param::DownsampleFactor,
+                "must be at least 1",
+            ));
         }
         let dims = self.dims.map(|d| d.div_ceil(factor));
         let mut data = Vec::with_capacity(dims.iter().map(|&d| d as usize).product());

@@ -15,6 +15,7 @@
 use glam::{Mat3, Vec3};
 
 use crate::error::{Error, Result};
+use crate::param::Param;
 
 /// The renderer's world from RAS+: screen x = the patient's left (−R), y = superior, z =
 /// anterior (toward the viewer).
@@ -39,7 +40,7 @@ pub fn screen_axes_from_ras(ras: Mat3) -> Result<Mat3> {
     for (a, c) in columns.iter().enumerate() {
         unit[a] = c.try_normalize().ok_or_else(|| {
             Error::invalid(
-                "volume axes",
+                Param::VolumeAxes,
                 format!("voxel axis {a} has no direction ({c})"),
             )
         })?;
@@ -60,7 +61,7 @@ pub fn check_axes(axes: Mat3) -> Result<()> {
         return Ok(());
     }
     Err(Error::invalid(
-        "volume axes",
+        Param::VolumeAxes,
         format!(
             "{:?}: the voxel axes must be unit directions at right angles (a sheared or \
              degenerate grid)",

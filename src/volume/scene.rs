@@ -10,6 +10,7 @@ use wgpu::util::DeviceExt;
 use super::transfer::{PreintegrationTable, TransferFunction, TABLE_SIZE};
 use super::{CellRanges, Volume};
 use crate::error::{Error, Result};
+use crate::param::Param;
 
 /// The volume as one RGBA16F 3D texture: Sobel gradient in RGB, scalar in A (paper §3.5.1).
 pub struct VolumeTexture {
@@ -193,7 +194,7 @@ pub struct VolumeScene {
     pub(crate) id: u64,
 }
 
-/// The sample-sharing tolerance tests/share_samples.rs holds to its measured error bound, in
+/// The sample-sharing tolerance tests/volumes/share_samples.rs holds to its measured error bound, in
 /// voxels: the largest on the measured curve (docs/volumes/BENCHMARKS.md) that keeps ≥ 40 dB
 /// against the exact single pass on the head and brainsmall. On lavapipe sharing is slower than
 /// the exact path at this tolerance, so nothing turns it on by default.
@@ -201,7 +202,7 @@ pub const SUGGESTED_SHARE_SAMPLES: f32 = 0.5;
 
 /// The probing stride through transparent material USAGE.md suggests: 2 voxels at the default
 /// step, which keeps ≥ 45 dB against the exact image even on phantoms with shells one or two
-/// voxels thin (cli/tests/empty_stride.rs; 8 loses up to 16 dB there), and ≥ 55 dB on the head and
+/// voxels thin (cli/tests/accuracy/empty_stride.rs; 8 loses up to 16 dB there), and ≥ 55 dB on the head and
 /// brainsmall at 512² (docs/volumes/BENCHMARKS.md).
 pub const SUGGESTED_EMPTY_STRIDE: u32 = 4;
 
@@ -285,7 +286,7 @@ impl VolumeScene {
 fn check_scene(transfer: &TransferFunction, model: Mat4) -> Result<()> {
     transfer.validate()?;
     if !model.is_finite() {
-        return Err(Error::invalid("volume rotation", "not finite"));
+        return Err(Error::invalid(Param::VolumeRotation, "not finite"));
     }
     Ok(())
 }
@@ -297,7 +298,7 @@ pub(super) fn check_step(extent: Vec3, voxel: f32, step: f32) -> Result<()> {
     let diagonal = extent.length();
     if !(step.is_finite() && step > 0.0 && diagonal / step <= MAX_SAMPLES_PER_RAY) {
         return Err(Error::invalid(
-            "sampling step",
+            Param::SamplingStep,
             format!(
                 "{} voxels: must be at least {} voxels (of the smallest spacing, {voxel} world \
                  units) for this volume, at most {MAX_SAMPLES_PER_RAY} samples across its \

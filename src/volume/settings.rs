@@ -5,6 +5,7 @@
 use super::scene::{check_step, MAX_EMPTY_STRIDE};
 use super::VolumeScene;
 use crate::error::{Error, Result};
+use crate::param::Param;
 
 /// Sampling, shading and the measured approximations of volume rendering. The default is the
 /// exact image: half-voxel steps, shading, exact empty-space skipping, no probes, no sharing.
@@ -75,14 +76,14 @@ impl VolumeSettings {
         if let Some(step) = self.step {
             if !(step.is_finite() && step > 0.0) {
                 return Err(Error::invalid(
-                    "sampling step",
+                    Param::SamplingStep,
                     format!("{step} voxels: must be positive and finite"),
                 ));
             }
         }
         if !(self.share_samples.is_finite() && self.share_samples >= 0.0) {
             return Err(Error::invalid(
-                "sample sharing tolerance",
+                Param::SampleSharing,
                 format!(
                     "{}: must be a finite number of voxels, 0 or more",
                     self.share_samples
@@ -91,7 +92,7 @@ impl VolumeSettings {
         }
         if !(1..=MAX_EMPTY_STRIDE).contains(&self.empty_stride) {
             return Err(Error::invalid(
-                "probing stride through transparent material",
+                Param::EmptyStride,
                 format!(
                     "{}: must be 1 (exact) to {MAX_EMPTY_STRIDE} sample planes",
                     self.empty_stride
@@ -100,13 +101,13 @@ impl VolumeSettings {
         }
         if !(0.0..1.0).contains(&self.thin_alpha) {
             return Err(Error::invalid(
-                "thin-material opacity",
+                Param::ThinAlpha,
                 format!("{}: must be at least 0 and below 1", self.thin_alpha),
             ));
         }
         if self.thin_alpha != 0.0 && self.empty_stride < 2 {
             return Err(Error::invalid(
-                "thin-material opacity",
+                Param::ThinAlpha,
                 format!(
                     "{}: thin material is stepped through by the probes of the probing \
                      stride, which is {} (give a stride of 2 or more)",
@@ -116,7 +117,7 @@ impl VolumeSettings {
         }
         if self.empty_stride > 1 && !self.skip_empty {
             return Err(Error::invalid(
-                "probing stride through transparent material",
+                Param::EmptyStride,
                 format!(
                     "{}: probing is part of empty-space skipping, which is off; use stride 1 \
                      or turn skipping on",

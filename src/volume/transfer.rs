@@ -4,6 +4,7 @@
 use std::path::Path;
 
 use crate::error::{Error, Result};
+use crate::param::Param;
 
 /// Piecewise-linear colour and opacity. Opacity is per unit step of one voxel (the smallest
 /// voxel spacing); the pre-integration table rescales it to the actual sampling distance.
@@ -30,21 +31,21 @@ impl TransferFunction {
     pub fn validate(&self) -> Result<()> {
         if self.points.is_empty() {
             return Err(Error::invalid(
-                "transfer function",
+                Param::TransferFunction,
                 "needs at least one control point",
             ));
         }
         for (s, c) in &self.points {
             if !(0.0..=1.0).contains(s) || c.iter().any(|v| !(0.0..=1.0).contains(v)) {
                 return Err(Error::invalid(
-                    "transfer function",
+                    Param::TransferFunction,
                     format!("point {s} {c:?}: scalar and RGBA must be in 0..1"),
                 ));
             }
         }
         if self.points.windows(2).any(|w| w[1].0 < w[0].0) {
             return Err(Error::invalid(
-                "transfer function",
+                Param::TransferFunction,
                 "control point scalars must be in ascending order",
             ));
         }
@@ -93,7 +94,7 @@ impl TransferFunction {
             ],
             other => {
                 return Err(Error::invalid(
-                    "transfer function",
+                    Param::TransferFunction,
                     format!(
                         "unknown preset {other} (presets: {})",
                         PRESETS.join(", "),
@@ -116,7 +117,10 @@ impl TransferFunction {
                 Error::InvalidParameter { reason, .. } => reason,
                 other => other.to_string(),
             };
-            Error::invalid("transfer function", format!("{}: {reason}", path.display()))
+            Error::invalid(
+                Param::TransferFunction,
+                format!("{}: {reason}", path.display()),
+            )
         })
     }
 
@@ -134,7 +138,7 @@ impl TransferFunction {
                 .collect::<std::result::Result<_, _>>()
                 .map_err(|_| {
                     Error::invalid(
-                        "transfer function",
+                        Param::TransferFunction,
                         format!(
                             "line {}: {line} is not 5 numbers",
                             n + 1,
@@ -144,7 +148,7 @@ impl TransferFunction {
                 })?;
             if v.len() != 5 {
                 return Err(Error::invalid(
-                    "transfer function",
+                    Param::TransferFunction,
                     format!(
                         "line {}: {} numbers, expected 5 (scalar r g b a)",
                         n + 1,
@@ -197,7 +201,7 @@ impl PreintegrationTable {
         tf.validate()?;
         if !(step.is_finite() && step > 0.0) {
             return Err(Error::invalid(
-                "sampling step",
+                Param::SamplingStep,
                 format!("{step}: must be positive"),
             ));
         }

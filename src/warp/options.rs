@@ -3,6 +3,7 @@
 
 use super::WarpPath;
 use crate::error::{Error, Result};
+use crate::param::Param;
 
 /// References when none are asked for: the two outermost views, every other view interpolated
 /// between them.
@@ -65,31 +66,31 @@ impl WarpOptions {
     pub fn check(&self) -> Result<()> {
         if !(self.hole_gap.is_finite() && self.hole_gap >= 1.0) {
             return Err(Error::invalid(
-                "hole gap",
+                Param::HoleGap,
                 format!("{}: at least 1 pixel", self.hole_gap),
             ));
         }
         if !(0.0..=1.0).contains(&self.same_surface) {
             return Err(Error::invalid(
-                "same surface",
+                Param::SameSurface,
                 format!("{}: a share of the depth in 0…1", self.same_surface),
             ));
         }
         if !(0.0..=1.0).contains(&self.focus) {
             return Err(Error::invalid(
-                "focus",
+                Param::Focus,
                 format!("{}: a nearness in 0…1", self.focus),
             ));
         }
         if !self.depthiness.is_finite() || self.depthiness.abs() > 100.0 {
             return Err(Error::invalid(
-                "depthiness",
+                Param::Depthiness,
                 format!("{}: a finite scale within ±100", self.depthiness),
             ));
         }
         if self.view.is_some() && self.path == WarpPath::PerView {
             return Err(Error::invalid(
-                "view",
+                Param::View,
                 "the per-view path warps every view; one view is the direct path's",
             ));
         }
@@ -100,7 +101,7 @@ impl WarpOptions {
     pub(crate) fn check_view(&self, views: u32) -> Result<()> {
         if let Some(v) = self.view.filter(|&v| v >= views) {
             return Err(Error::invalid(
-                "view",
+                Param::View,
                 format!("{v}: the display has views 0…{}", views - 1),
             ));
         }

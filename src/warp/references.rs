@@ -5,6 +5,7 @@ use crate::camera::MultiViewCamera;
 use crate::display::{Display, DisplayKind};
 use crate::error::{Error, Result};
 use crate::frame::Frame;
+use crate::param::Param;
 use crate::render::ViewLayers;
 use crate::target::SPATIAL_FORMAT;
 
@@ -21,7 +22,7 @@ pub fn reference_frame(frame: &Frame, references: u32) -> Result<Frame> {
     let views = frame.camera.views;
     if references == 0 || references > views {
         return Err(Error::invalid(
-            "references",
+            Param::References,
             format!("{references}: between 1 and the display's {views} views"),
         ));
     }
@@ -116,7 +117,7 @@ pub trait ReferenceRenderer<S: ?Sized> {
 /// The error of a primitive's reference renderer used to render frames.
 pub(crate) fn not_a_frame_renderer(renderer: &str) -> Error {
     Error::invalid(
-        "method",
+        Param::Method,
         format!(
             "warp: this {renderer} renders a warp's reference views; render warped frames \
              with warp::SceneWarp"
@@ -130,7 +131,7 @@ pub(crate) fn check_reference_method(renderer: &str, method: crate::render::Meth
         return Ok(());
     }
     Err(Error::invalid(
-        "method",
+        Param::Method,
         format!("{renderer} built for {method} renders no reference views: build it for warp"),
     ))
 }

@@ -7,6 +7,7 @@ use super::uniform::WarpUniform;
 use super::{WarpOptions, WarpPath};
 use crate::error::Result;
 use crate::frame::{Frame, FrameBinding};
+use crate::param::Param;
 use crate::render::npass::NPassHarness;
 use crate::render::pass_params::constants_buffer;
 use crate::render::pipeline::{
@@ -130,7 +131,7 @@ impl Renderer<RgbdScene> for RgbdWarp {
         frame.check_full_views("RGB-D warp")?;
         if frame.camera.model != crate::camera::CameraModel::Skewed {
             return Err(crate::error::Error::invalid(
-                "camera",
+                Param::Camera,
                 format!(
                     "{}: an RGB-D image is warped into skewed views only",
                     frame.camera.model

@@ -8,6 +8,7 @@ use super::uniform::WarpUniform;
 use super::{WarpOptions, WarpPath};
 use crate::error::{Error, Result};
 use crate::frame::{Frame, FrameBinding};
+use crate::param::Param;
 use crate::render::gpu_buffer::GpuBuffer;
 use crate::render::npass::NPassHarness;
 use crate::render::pass_params::constants_buffer;
@@ -23,7 +24,7 @@ fn check_options(options: &WarpOptions) -> Result<()> {
     options.check()?;
     if let Some(view) = options.view {
         return Err(Error::invalid(
-            "view",
+            Param::View,
             format!(
                 "{view}: one view everywhere is an RGB-D warp's option; a scene's views come \
                  from its references (the per-view path renders every view's image)"
@@ -244,7 +245,7 @@ impl<S: ?Sized> SceneWarp<S> {
     /// Copy one texel of the nearness just rendered. Mesa 22.3's llvmpipe (GL) can start a
     /// compute dispatch that reads a texture while the rasteriser threads are still writing it
     /// from the render pass before: under load the row-bounds pass then read stale nearness
-    /// (cli/tests/outputs.rs saw 1.5 % of subpixels off, about one run in eight). A copy waits for
+    /// (cli/tests/commands/outputs.rs saw 1.5 % of subpixels off, about one run in eight). A copy waits for
     /// the writes to finish; elsewhere it is one texel.
     fn settle_references(&self, encoder: &mut wgpu::CommandEncoder, images: &ReferenceImages) {
         encoder.copy_texture_to_texture(
@@ -311,7 +312,7 @@ impl<S: ?Sized> Renderer<S> for SceneWarp<S> {
         frame.check_full_views("warp")?;
         if frame.camera.model == crate::camera::CameraModel::ToeIn {
             return Err(Error::invalid(
-                "camera",
+                Param::Camera,
                 "toe-in: the warp shifts reference rows horizontally, which turned cameras do \
                  not produce (use skewed or parallel cameras, or another method)",
             ));

@@ -255,7 +255,7 @@ pub fn write(dir: &Path, r: &Results) -> Result<()> {
     }
     writeln!(
         md,
-        "## Numerical stability\n\nThe stability suite (`tests/stability.rs`, run by CI) and its table: \
+        "## Numerical stability\n\nThe stability suite (`tests/meshes/stability.rs`, run by CI) and its table: \
          [STABILITY.md]({up}STABILITY.md).\n"
     )?;
     super::write_report_file(&dir.join("BENCHMARKS.md"), md)?;

@@ -6,10 +6,8 @@ use std::path::Path;
 
 use anyhow::{bail, Result};
 use autostereo::camera::Bounds;
-use autostereo::gaussians::GaussianScene;
-use autostereo::mesh::MeshBuffers;
 use autostereo::render::Method;
-use autostereo::{AnyScene, RendererOptions};
+use autostereo::{AnyData, AnyScene, DataKind, LoadOptions, RendererOptions};
 
 use crate::gaussians_cmd::GaussianFlags;
 use crate::mesh_cmd::MeshFlags;
@@ -40,6 +38,16 @@ impl KindArg {
         }
     }
 
+    /// The library's kind.
+    pub fn data_kind(self) -> DataKind {
+        match self {
+            KindArg::Mesh => DataKind::Mesh,
+            KindArg::Points => DataKind::Points,
+            KindArg::Volume => DataKind::Volume,
+            KindArg::Gaussians => DataKind::Gaussians,
+        }
+    }
+
     /// What a scene of this kind is, in a sentence.
     fn noun(self) -> &'static str {
         match self {
@@ -53,7 +61,6 @@ impl KindArg {
     /// The kind of data the file holds (autostereo::formats::kind: its first bytes, else
     /// its extension; a PLY with faces is a mesh).
     pub fn of(path: &Path) -> Result<Self> {
-        use autostereo::formats::DataKind;
         Ok(match autostereo::formats::kind(path)? {
             (_, DataKind::Mesh) => KindArg::Mesh,
             (_, DataKind::Points) => KindArg::Points,
@@ -167,7 +174,8 @@ impl SceneFlags<'_> {
     }
 }
 
-/// Load the scene the flags say; no file: the built-in volume (or the kind's generated scene).
+/// Load the scene the flags say: a file by the library's [`autostereo::load`]; no file: the
+/// built-in volume (or the kind's generated scene).
 pub fn load(ctx: &autostereo::gpu::GpuContext, flags: &SceneFlags) -> Result<ViewScene> {
     flags.check()?;
     let kind = flags.kind()?;
@@ -176,40 +184,48 @@ pub fn load(ctx: &autostereo::gpu::GpuContext, flags: &SceneFlags) -> Result<Vie
         || format!("built-in {}", kind.name()),
         |p| p.display().to_string(),
     );
-    let device = &ctx.device;
-    let mut options = RendererOptions::default();
-    let (scene, bounds) = match kind {
-        KindArg::Mesh => {
-            let mesh = flags.mesh.load(file)?;
-            let Some(bounds) = mesh.bounds() else {
-                bail!("{name}: the mesh has no vertices");
+    if kind == KindArg::Points {
+        flags.points.check_values()?;
+    }
+    let data = match (file, kind) {
+        (Some(path), _) => {
+            let options = LoadOptions {
+                kind: Some(kind.data_kind()),
+                mesh: flags.mesh.load_options(),
+                points: flags.points.load_options(),
+                volume: flags.volume_data.volume_load()?,
             };
-            options.mesh = flags.mesh.options();
-            (AnyScene::Mesh(MeshBuffers::new(device, &mesh)?), bounds)
+            autostereo::load(path, &options)?
         }
-        KindArg::Points => {
-            flags.points.check_values()?;
-            let (splats, _) = flags.points.load(file)?;
-            let bounds = splats.bounds().expect("complete() rejects empty clouds");
-            let scene = flags.points.scene(device, &splats)?;
-            options.points = flags.points.options();
-            (AnyScene::Points(scene), bounds)
-        }
-        KindArg::Volume => {
-            let (volume, scene) = flags.volume_data.scene(ctx, file)?;
-            let step = flags.volume_render.step(&volume);
-            options.volume = flags.volume_render.options(step);
-            options.volume.settings.validate_for(&scene)?;
-            (AnyScene::Volume(Box::new(scene)), volume.bounds())
-        }
-        KindArg::Gaussians => {
-            let gaussians = flags.gaussians.load(file)?;
-            let scene = GaussianScene::new(device, &gaussians)?;
-            options.gaussians = flags.gaussians.options();
-            let bounds = scene.bounds;
-            (AnyScene::Gaussians(scene), bounds)
-        }
+        (None, KindArg::Mesh) => AnyData::Mesh(flags.mesh.load(None)?),
+        (None, KindArg::Points) => AnyData::Points(
+            flags
+                .points
+                .complete(&autostereo::points::PointCloud::torus_scene())?,
+        ),
+        (None, KindArg::Volume) => AnyData::Volume(Box::new(flags.volume_data.load(None)?)),
+        (None, KindArg::Gaussians) => AnyData::Gaussians(flags.gaussians.load(None)?),
     };
+    let Some(bounds) = data.bounds() else {
+        bail!("{name}: the mesh has no vertices");
+    };
+    let scene = AnyScene::upload(&ctx.device, &ctx.queue, &data)?;
+    let mut options = RendererOptions::default();
+    match &scene {
+        AnyScene::Mesh(_) => options.mesh = flags.mesh.options(),
+        AnyScene::Points(_) => options.points = flags.points.options(),
+        AnyScene::Volume(volume) => {
+            let AnyData::Volume(data) = &data else {
+                unreachable!("a volume scene is uploaded from volume data")
+            };
+            options.volume = flags
+                .volume_render
+                .options(flags.volume_render.step(&data.volume));
+            options.volume.settings.validate_for(volume)?;
+        }
+        AnyScene::Gaussians(_) => options.gaussians = flags.gaussians.options(),
+        AnyScene::Rgbd(_) => unreachable!("the viewer loads no RGB-D scene"),
+    }
     Ok(ViewScene {
         scene,
         bounds,

@@ -1,7 +1,7 @@
 //! A small 3D Gaussian splat scene written as graphdeco's binary PLY (what the trainer writes:
 //! `x y z nx ny nz f_dc_* f_rest_* opacity scale_* rot_*`, `f_rest_*` channel-major, log
 //! scales, opacity logits, unnormalised (w, x, y, z) rotations), for the CLI's tests. The
-//! essentials of tests/gaussians_formats.rs' writer.
+//! essentials of tests/formats/gaussians_formats/' writer.
 
 use std::path::{Path, PathBuf};
 

@@ -9,7 +9,6 @@ mod spz;
 use std::path::Path;
 
 pub use ply::parse_ply;
-pub(crate) use ply::{gaussian_properties, GAUSSIAN_PROPERTIES};
 pub use splat::parse_splat;
 pub use spz::parse_spz;
 

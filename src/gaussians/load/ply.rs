@@ -3,7 +3,7 @@
 //! `f_rest_*` (channel-major: every R coefficient 1.., then G, then B; 0, 9, 24 or 45 of them
 //! for SH degree 0 to 3), `opacity` (a logit), `scale_0..2` (logs), `rot_0..3` (an
 //! unnormalised w, x, y, z quaternion). Normals and other scalar properties are skipped. The
-//! header is the point clouds' PLY header (`crate::points::ply::header`).
+//! header is the point clouds' PLY header (`crate::io::ply::header`).
 
 use std::path::Path;
 
@@ -12,23 +12,7 @@ use glam::Vec3;
 use super::{checked, error, rotation};
 use crate::error::Result;
 use crate::gaussians::{check_budget, coefficients, sigmoid, Gaussians};
-use crate::points::ply::header::{parse_header, Element, Format, Scalar};
-
-/// The vertex properties that tell a 3DGS PLY from a point cloud's.
-pub(crate) const GAUSSIAN_PROPERTIES: [&str; 4] = ["f_dc_0", "scale_0", "rot_0", "opacity"];
-
-/// Which of [`GAUSSIAN_PROPERTIES`] the `vertex` element of the PLY header at the start of
-/// `head` declares (`Err`: not a PLY header).
-pub(crate) fn gaussian_properties(head: &[u8]) -> std::result::Result<Vec<&'static str>, String> {
-    let header = parse_header(head)?;
-    let Some(vertex) = header.elements.iter().find(|e| e.name == "vertex") else {
-        return Ok(Vec::new());
-    };
-    Ok(GAUSSIAN_PROPERTIES
-        .into_iter()
-        .filter(|p| vertex.properties.iter().any(|q| q.name == *p))
-        .collect())
-}
+use crate::io::ply::header::{parse_header, Element, Format, Scalar};
 
 /// Which Gaussian attribute a vertex property feeds.
 #[derive(Clone, Copy, PartialEq)]
@@ -220,8 +204,8 @@ impl Layout {
             .collect();
         if !missing.is_empty() {
             return Err(format!(
-                "not a 3DGS PLY: the vertex element lacks {} (a point cloud's PLY is read by \
-                 `autostereo points`)",
+                "not a 3DGS PLY: the vertex element lacks {} (a point cloud's PLY is read as \
+                 points)",
                 missing.join(", ")
             ));
         }
@@ -272,6 +256,7 @@ mod tests {
 
     use super::*;
 
+    use crate::io::ply::{gaussian_properties, GAUSSIAN_PROPERTIES};
     fn header(properties: &[&str], count: usize) -> Vec<u8> {
         let mut h = format!("ply\nformat binary_little_endian 1.0\nelement vertex {count}\n");
         for p in properties {

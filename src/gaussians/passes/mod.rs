@@ -16,6 +16,7 @@ use super::scene::GaussianScene;
 use crate::camera::CameraModel;
 use crate::error::{Error, Result};
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
+use crate::param::Param;
 use crate::render::accumulation::AccumulationResolve;
 use crate::render::atlas::{Atlas, AtlasCompositor, TileSampling};
 use crate::render::composite::Compositor;
@@ -170,7 +171,7 @@ impl GaussianSplatter {
     pub fn new(device: &wgpu::Device, method: Method, options: GaussianOptions) -> Result<Self> {
         if !crate::gaussians::METHODS.contains(&method) {
             return Err(Error::invalid(
-                "method",
+                Param::Method,
                 format!(
                     "{method}: Gaussian splats render by single-pass, n-pass, single-view or \
                      tiled (a quilt)"

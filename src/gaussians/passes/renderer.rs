@@ -2,6 +2,7 @@
 //! sort, the colour table, per method its targets), and what `encode` records per method.
 
 use super::*;
+use crate::param::Param;
 
 impl Renderer<GaussianScene> for GaussianSplatter {
     fn prepare(
@@ -15,7 +16,7 @@ impl Renderer<GaussianScene> for GaussianSplatter {
         begin_prepare(device, frame, &mut self.prepared)?;
         if frame.camera.model == CameraModel::ToeIn && frame.camera.separation != 0.0 {
             return Err(Error::invalid(
-                "camera model",
+                Param::CameraModel,
                 "toe-in: turned cameras see the Gaussians at different depths, so no one sort \
                  serves every view; Gaussian splats use skewed or parallel cameras",
             ));

@@ -7,6 +7,7 @@ use crate::camera::ViewUniform;
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
 use crate::mesh::MeshBuffers;
+use crate::param::Param;
 use crate::render::npass::NPassHarness;
 use crate::render::pass_params::PassParams;
 use crate::render::pipeline::{begin_pass_to, cleared, PassTargets};
@@ -39,7 +40,7 @@ impl MeshNPass {
     pub fn new(device: &wgpu::Device, method: Method) -> Result<Self> {
         if !matches!(method, Method::NPass | Method::SingleView | Method::Warp) {
             return Err(crate::Error::invalid(
-                "method",
+                Param::Method,
                 format!(
                     "{method}: MeshNPass renders n-pass, single-view and a warp's references; \
                      use MeshSinglePass"

@@ -26,6 +26,7 @@ use self::prepared::{Plan, PreparedSplats, SplatPath};
 use self::views::SplatOutput;
 use crate::error::{Error, Result};
 use crate::frame::{Frame, FrameBinding};
+use crate::param::Param;
 use crate::points::SplatScene;
 use crate::render::atlas::{Atlas, AtlasCompositor};
 use crate::render::npass::NPassHarness;
@@ -85,7 +86,7 @@ impl SplatOptions {
     fn validate(&self) -> Result<()> {
         if !(self.epsilon.is_finite() && self.epsilon >= 0.0) {
             return Err(Error::invalid(
-                "epsilon",
+                Param::Epsilon,
                 format!("{}: must be finite and ≥ 0", self.epsilon),
             ));
         }
@@ -134,7 +135,7 @@ impl PointSplatter {
             Method::Layered => SplatPath::NPass,
             Method::Mrt => {
                 return Err(Error::invalid(
-                    "method",
+                    Param::Method,
                     "mrt renders meshes only: splat group images are integer textures (packed \
                      colour, weight and depth), which cannot blend, so the paper's α = 0 writes \
                      to the other views' targets would overwrite them; tiled and layered \

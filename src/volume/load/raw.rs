@@ -23,10 +23,10 @@ pub struct RawSpec {
 
 impl RawSpec {
     /// A raw volume as the fuzzer feeds it (fuzz/fuzz_targets/raw.rs, replayed on stable by
-    /// tests/fuzz_regressions.rs): the description from the first 12 bytes (dimensions as three
+    /// tests/formats/fuzz_regressions.rs): the description from the first 12 bytes (dimensions as three
     /// little-endian u16, the sample type and byte order, the z spacing, the header length),
     /// the file's bytes after them; `None` for fewer than 12 bytes.
-    #[doc(hidden)]
+    #[cfg(feature = "fuzzing")]
     pub fn from_fuzz_input(data: &[u8]) -> Option<(Self, &[u8])> {
         const KINDS: [SampleType; 8] = [
             SampleType::U8,

@@ -13,6 +13,7 @@ pub(crate) use prepared::{PreparedFor, VolumeEncode};
 use super::resources::{VolumeParams, VolumeResources};
 use crate::error::{Error, Result};
 use crate::frame::Frame;
+use crate::param::Param;
 use crate::render::atlas::{Atlas, AtlasCompositor, TileSampling};
 use crate::render::npass::NPassHarness;
 use crate::render::pipeline::{bind_group_layout, compilation, uniform_entry};
@@ -63,7 +64,7 @@ impl Output {
             Method::Tiled => Ok(Self::Atlas),
             Method::Warp => Ok(Self::References),
             Method::Mrt => Err(Error::invalid(
-                "method",
+                Param::Method,
                 "mrt renders meshes only: its point is one depth buffer shared by the views of \
                  a draw, and volumes have no depth buffer; tiled and layered duplicate a \
                  volume's views",
@@ -126,7 +127,7 @@ impl VolumeRaycaster {
         settings.validate()?;
         if settings.share_samples > 0.0 && method != Method::SinglePass {
             return Err(Error::invalid(
-                "sample sharing tolerance",
+                Param::SampleSharing,
                 format!(
                     "{}: sharing samples among a pixel's rays is part of the single pass, not of \
                      the {method} method",
@@ -416,7 +417,7 @@ mod tests {
 
     /// The ray caster really skips what the distances call empty: with cell ranges falsified
     /// to "air only", every cell is skipped and the head's image changes. (That the true
-    /// distances change no pixel is tests/volume.rs.)
+    /// distances change no pixel is tests/volumes/volume.rs.)
     #[test]
     fn falsified_cell_ranges_skip_everything() {
         let ctx = GpuContext::new(&GpuOptions::default()).expect("a GPU adapter (CI: lavapipe)");

@@ -10,6 +10,7 @@ use super::raycast::{PreparedFor, VolumeEncode};
 use super::resources::VolumeResources;
 use crate::error::{Error, Result};
 use crate::frame::Frame;
+use crate::param::Param;
 use crate::render::accumulation::AccumulationResolve;
 use crate::render::pipeline::{begin_pass, cleared, over_per_channel_pipeline};
 use crate::render::pipeline_cache::PipelineCache;
@@ -65,7 +66,7 @@ impl VolumeSlicer {
         settings.validate()?;
         if settings.share_samples > 0.0 {
             return Err(Error::invalid(
-                "sample sharing tolerance",
+                Param::SampleSharing,
                 format!(
                     "{}: sharing samples among a pixel's rays is a ray-marching approximation; \
                      the proxy slices (VolumePath::Slices) have none",
@@ -75,7 +76,7 @@ impl VolumeSlicer {
         }
         if settings.empty_stride > 1 {
             return Err(Error::invalid(
-                "probing stride through transparent material",
+                Param::EmptyStride,
                 format!(
                     "{}: probing is part of ray marching's empty-space skipping; the proxy \
                      slices (VolumePath::Slices) have none",

@@ -1,0 +1,12 @@
+//! The render commands end to end: outputs, quilts, turntables, interleave, Looking Glass, Gaussians.
+//! One test binary (fewer binaries: less linking, less disk); a module per theme.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod cli;
+mod gaussians;
+mod interleave;
+mod looking_glass;
+mod outputs;
+mod turntable;

@@ -1,0 +1,9 @@
+//! Display masks (CPU and WGSL), the GL backend, the library as an embedder uses it.
+//! One test binary (fewer binaries: less linking, less disk); a module per theme.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod embedding;
+mod gl_backend;
+mod mask;

@@ -1,0 +1,14 @@
+//! Reading files: every format, its refusals, the fuzz inputs replayed; `autostereo::load`.
+//! One test binary (fewer binaries: less linking, less disk); a module per theme.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod every_format;
+mod fuzz_regressions;
+mod gaussians_formats;
+mod points_las;
+mod volume_dicom;
+mod volume_formats;
+mod volume_load;
+mod volume_vtk;

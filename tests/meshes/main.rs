@@ -1,0 +1,11 @@
+//! Mesh renderers against the N-pass and each other; bands, stereo, stability.
+//! One test binary (fewer binaries: less linking, less disk); a module per theme.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod bands;
+mod npass_mesh;
+mod single_pass_mesh;
+mod stability;
+mod stereo;

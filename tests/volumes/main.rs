@@ -1,0 +1,8 @@
+//! Volume renderers against the N-pass; sample sharing.
+//! One test binary (fewer binaries: less linking, less disk); a module per theme.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod share_samples;
+mod volume;
