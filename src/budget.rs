@@ -48,6 +48,21 @@ pub fn check(what: impl FnOnce() -> String, bytes: u64) -> Result<()> {
     Ok(())
 }
 
+/// Peak bytes per point from file to a rendered frame: the cloud and its splats (positions,
+/// normals, colours, radii: 40 bytes each), the estimation and grouping grids, the group sort,
+/// and the GPU's splat, eye-splat and rectangle buffers (80), which a software adapter keeps
+/// in RAM. Measured: 294 bytes per point of peak resident memory (the dragon's PLYs, 23k to
+/// 438k points, docs/RELIABILITY.md); 400 leaves headroom.
+pub const PEAK_BYTES_PER_POINT: u64 = 400;
+
+/// `Err(MemoryBudget)` when `points` points exceed the budget (`crate::budget`).
+pub(crate) fn check_points(points: u64) -> Result<()> {
+    check(
+        || format!("{points} points × {PEAK_BYTES_PER_POINT} bytes from file to GPU"),
+        points.saturating_mul(PEAK_BYTES_PER_POINT),
+    )
+}
+
 /// A GPU resource's share of the budget, given back when it is dropped (with the resource).
 #[derive(Debug)]
 pub struct GpuCharge(u64);

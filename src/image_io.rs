@@ -101,7 +101,7 @@ impl RgbImage {
 
     /// Read an image file as RGB8: PNG, or JPEG with the `jpeg` feature (told by its first
     /// bytes; its size checked against the image limits and the memory budget before it is
-    /// decoded). A file of another kind is refused naming the command that reads it.
+    /// decoded). A file of another kind is refused as what it is (`Error::WrongKind`).
     pub fn load(path: &Path) -> Result<Self> {
         let rgb = decode(path)?.to_rgb8();
         Ok(Self {
@@ -179,7 +179,7 @@ pub fn compare(image: &RgbImage, reference: &RgbImage) -> Result<ImageDiff> {
 pub const MAX_IMAGE_FILE_BYTES: u64 = 1 << 31;
 
 /// An image file (PNG; JPEG with the `jpeg` feature) decoded: its format checked
-/// ([`crate::formats`]: a file of another kind names the command that reads it), its bytes
+/// ([`crate::formats`]: a file of another kind is refused as what it is), its bytes
 /// read with a bound, then [`decode_bytes`].
 pub(crate) fn decode(path: &Path) -> Result<image::DynamicImage> {
     crate::formats::expect(path, crate::formats::DataKind::Image)?;

@@ -64,7 +64,7 @@ pub struct Gaussians {
 impl Gaussians {
     /// Load a graphdeco `.ply`, antimatter15 `.splat` or Niantic `.spz` file, told by its first
     /// bytes, else its extension ([`crate::formats`]); a file of another kind (a point-cloud
-    /// PLY, a mesh) is refused naming the command that reads it.
+    /// PLY, a mesh) is refused as what it is (`Error::WrongKind`).
     pub fn load(path: &Path) -> Result<Self> {
         load::load(path)
     }

@@ -47,7 +47,7 @@ impl Mesh {
     /// Load a mesh file of any format this build reads ([`crate::formats`]: OBJ and PLY
     /// always, STL and glTF with their cargo features), told by its first bytes, else its
     /// extension. A file of another kind (a volume, a point cloud without faces) is refused
-    /// naming the command that reads it.
+    /// as what it is (`Error::WrongKind`).
     pub fn load(path: &std::path::Path) -> Result<Self> {
         use crate::formats::{expect, DataKind, Format};
         match expect(path, DataKind::Mesh)? {

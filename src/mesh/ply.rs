@@ -14,7 +14,7 @@ use crate::error::{Error, Result};
 /// costs ≈ 112, a binary triangle 13 and costs ≈ 24; src/mesh/obj.rs).
 const MESH_PEAK_PER_PLY_BYTE: u64 = super::obj::MESH_PEAK_PER_OBJ_BYTE;
 
-/// Load a PLY mesh; a file without faces is refused, naming the command that reads points.
+/// Load a PLY mesh; a file without faces is refused as points (`Error::WrongKind`).
 pub(super) fn load(path: &Path) -> Result<Mesh> {
     let bytes = crate::file::read_bounded(path, crate::file::MAX_TEXT_BYTES, "the PLY limit")?;
     let size = bytes.len() as u64;

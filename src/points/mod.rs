@@ -95,7 +95,7 @@ impl PointCloud {
     /// (its `v` lines, with `v x y z r g b` colours when present; faces, normals and texture
     /// coordinates are ignored), told by
     /// its first bytes, else its extension ([`crate::formats`]); a file of another kind is
-    /// refused naming the command that reads it. A PLY mesh's vertices are read as points,
+    /// refused as what it is (`Error::WrongKind`). A PLY mesh's vertices are read as points,
     /// and the log says that its faces are not drawn.
     pub fn load(path: &Path) -> Result<Self> {
         let cloud = Self::load_any(path)?;
@@ -257,25 +257,12 @@ impl PointCloud {
 /// Most points a cloud may have (GPU indices are u32, six vertices per splat).
 pub const MAX_POINTS: usize = (u32::MAX / 6) as usize;
 
-/// Peak bytes per point from file to a rendered frame: the cloud and its splats (positions,
-/// normals, colours, radii: 40 bytes each), the estimation and grouping grids, the group sort,
-/// and the GPU's splat, eye-splat and rectangle buffers (80), which a software adapter keeps
-/// in RAM. Measured: 294 bytes per point of peak resident memory (the dragon's PLYs, 23k to
-/// 438k points, docs/RELIABILITY.md); 400 leaves headroom.
-pub const PEAK_BYTES_PER_POINT: u64 = 400;
-
-/// `Err(MemoryBudget)` when `points` points exceed the budget (`crate::budget`).
-pub(crate) fn check_point_budget(points: u64) -> Result<()> {
-    crate::budget::check(
-        || format!("{points} points × {PEAK_BYTES_PER_POINT} bytes from file to GPU"),
-        points.saturating_mul(PEAK_BYTES_PER_POINT),
-    )
-}
+pub use crate::budget::PEAK_BYTES_PER_POINT;
 
 fn obj_vertices(path: &Path) -> Result<PointCloud> {
     let text = crate::file::read_text(path)?;
     // A vertex line takes at least 8 bytes ("v 0 0 0\n").
-    check_point_budget(text.len() as u64 / 8).map_err(|e| Error::Points {
+    crate::budget::check_points(text.len() as u64 / 8).map_err(|e| Error::Points {
         path: path.into(),
         reason: e.to_string(),
     })?;

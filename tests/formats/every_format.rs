@@ -278,5 +278,5 @@ fn an_image_or_a_file_of_another_kind_is_refused_as_what_it_is() {
         text.ends_with("this is a volume (NRRD), not a mesh: read it as a volume"),
         "{text}"
     );
-    assert!(matches!(AnyData::Mesh(Default::default()).bounds(), None));
+    assert!(AnyData::Mesh(Default::default()).bounds().is_none());
 }

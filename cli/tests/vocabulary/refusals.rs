@@ -148,7 +148,7 @@ fn degenerate_and_unused_settings_are_refused_by_name() {
         ),
         (
             with("volume", &["--downsample", "100", "--out", f]),
-            &["--downsample 100", "at most"],
+            &["--downsample: invalid downsample factor: 100", "at most"],
         ),
         (
             vec!["volume", "--builtin-size", "0", "--out", f],

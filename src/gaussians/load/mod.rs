@@ -16,7 +16,7 @@ use super::Gaussians;
 use crate::error::{Error, Result};
 
 /// Load a Gaussian splat file of any format this build reads, told by its first bytes, else
-/// its extension; a file of another kind is refused naming the command that reads it.
+/// its extension; a file of another kind is refused as what it is (`Error::WrongKind`).
 pub(super) fn load(path: &Path) -> Result<Gaussians> {
     use crate::formats::{expect, DataKind, Format};
     let format = expect(path, DataKind::Gaussians)?;

@@ -174,7 +174,7 @@ pub(super) fn read_vertices(
     let radii = has(|s| matches!(s, Slot::Radius), 1);
     check_count(reader, element)?;
     let n = element.count;
-    crate::points::check_point_budget(n as u64).map_err(|e| e.to_string())?;
+    crate::budget::check_points(n as u64).map_err(|e| e.to_string())?;
     let mut cloud = Vertices {
         positions: Vec::with_capacity(n),
         normals: normals.then(|| Vec::with_capacity(n)),

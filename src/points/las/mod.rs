@@ -45,7 +45,7 @@ pub fn parse(bytes: Vec<u8>) -> std::result::Result<PointCloud, String> {
     let n = header.number_of_points();
     let format = *header.point_format();
     let record = u64::from(format.len()).max(1);
-    crate::points::check_point_budget(n).map_err(|e| e.to_string())?;
+    crate::budget::check_points(n).map_err(|e| e.to_string())?;
     let bounds = header.bounds();
     let centre = DVec3::new(
         0.5 * (bounds.min.x + bounds.max.x),

@@ -173,7 +173,7 @@ pub(crate) fn format_error(path: &Path, reason: impl Into<String>) -> Error {
 /// a DICOM series — a folder or one of its files — with the `dicom` feature, VTK image data
 /// `.vti`/`.vtk` with the `vti` feature), told by its first bytes, else its extension. Raw
 /// files need their dimensions and sample type ([`load_raw`]); a file of another kind is
-/// refused naming the command that reads it.
+/// refused as what it is (`Error::WrongKind`).
 pub fn load_any(path: &Path) -> Result<Volume> {
     use crate::formats::{expect, DataKind, Format};
     // A folder is a DICOM series (the only format stored as one).
