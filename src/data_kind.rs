@@ -3,6 +3,7 @@
 
 /// A kind of data.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum DataKind {
     /// Triangle meshes.
     Mesh,
@@ -10,7 +11,8 @@ pub enum DataKind {
     Points,
     /// Scalar volumes.
     Volume,
-    /// Images: RGB-D colour and depth maps, quilts.
+    /// Images: RGB-D colour and depth maps, quilts (no scene: not a `--kind` to choose).
+    #[cfg_attr(feature = "clap", value(skip))]
     Image,
     /// 3D Gaussian splats.
     Gaussians,

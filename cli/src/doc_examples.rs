@@ -3,18 +3,19 @@
 //! nothing runs, so the commands' runtime checks (files, GPU) are not part of this.
 
 use crate::Cli;
-use clap::{CommandFactory, Parser};
+use clap::CommandFactory;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 use std::path::Path;
 
 /// Flags of other tools that the docs name, and whose they are.
 const OTHER_TOOLS: &[(&str, &str)] = &[
     ("--release", "cargo build/run: the optimised build"),
-    ("--features", "cargo: autostereo-cli/plots"),
+    ("--features", "cargo: autostereo-bench/plots"),
     ("--bench", "cargo bench --bench NAME"),
     ("--test", "cargo test --test NAME"),
     ("--nocapture", "the test harness's"),
     ("--example", "cargo run --example NAME"),
+    ("--workspace", "cargo build/test: every package"),
     ("--bin-dir", "docs/tools/peer_vtk.py's"),
     ("--no-build", "docs/tools/peer_vtk.py's"),
 ];
@@ -35,6 +36,24 @@ type Flags = BTreeMap<String, BTreeSet<String>>;
 /// A script's variables by this line, as text to substitute (arrays: their words, quoted).
 type Env = HashMap<String, String>;
 
+/// The CLI with the bench harness as its `bench` subcommand: the docs name both binaries.
+fn command() -> clap::Command {
+    use clap::Args;
+    let bench = autostereo_bench::BenchArgs::augment_args(clap::Command::new("bench"));
+    Cli::command().subcommand(bench)
+}
+
+/// `line` with `autostereo-bench …` (and `cargo run -p autostereo-bench -- …`) written as the
+/// `bench` subcommand of [`command`].
+fn bench_as_subcommand(line: &str) -> String {
+    line.replace(
+        "-p autostereo-bench --features plots -- ",
+        "--features plots -- bench ",
+    )
+    .replace("-p autostereo-bench -- ", "-- bench ")
+    .replace("autostereo-bench", "autostereo bench")
+}
+
 fn flags() -> Flags {
     fn collect(cmd: &clap::Command, set: &mut BTreeSet<String>) {
         let mut longs = Vec::new();
@@ -49,7 +68,7 @@ fn flags() -> Flags {
         }
         set.extend(longs.iter().map(|l| format!("--{l}")));
     }
-    let mut cli = Cli::command();
+    let mut cli = command();
     cli.build(); // adds --help and --version
     let mut flags = Flags::new();
     collect(&cli, flags.entry(String::new()).or_default());
@@ -245,7 +264,8 @@ impl Report {
         } else {
             let argv = ["autostereo".to_string()].into_iter();
             let missing = clap::error::ErrorKind::MissingRequiredArgument;
-            match Cli::try_parse_from(argv.chain(args.iter().map(|w| w.replace(UNKNOWN, "x")))) {
+            let argv = argv.chain(args.iter().map(|w| w.replace(UNKNOWN, "x")));
+            match command().try_get_matches_from(argv) {
                 Ok(_) => self.parsed += 1,
                 Err(e) if src == Src::Span && e.kind() == missing => self.synopses += 1,
                 Err(e) => {
@@ -262,6 +282,7 @@ impl Report {
         let (mut blank, mut carried, mut lines, none) =
             (true, None, (0, String::new()), Env::new());
         for (n, line) in text.lines().enumerate().map(|(n, l)| (n + 1, l)) {
+            let line = &bench_as_subcommand(line);
             let t = line.trim_start();
             let blank_before = std::mem::replace(&mut blank, t.is_empty());
             if t.starts_with("```") {
@@ -318,7 +339,7 @@ impl Report {
     fn script(&mut self, path: &str, text: &str, flags: &Flags) {
         let (mut env, mut lines) = (Env::new(), (0, String::new()));
         for (n, line) in text.lines().enumerate() {
-            if let Some((first, cmd)) = join(&mut lines, n + 1, line) {
+            if let Some((first, cmd)) = join(&mut lines, n + 1, &bench_as_subcommand(line)) {
                 assign(&cmd, &mut env);
                 self.check(format!("{path}:{first}"), &cmd, Src::Script, &env, flags);
             }

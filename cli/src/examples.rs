@@ -63,10 +63,6 @@ pub const MASK: &str = "Examples:
   autostereo mask --display lkg:calibration.json --size 3840x2160 --out mask.png
   autostereo mask --display slanted:45,7.5,1/6,0.2 --size 256x256 --gpu --out mask.png";
 
-pub const BENCH: &str = "Examples:
-  autostereo bench --quick
-  autostereo bench --gaussians --frames 1 --report docs/gaussians";
-
 #[cfg(test)]
 mod tests {
     use clap::Parser;
@@ -84,7 +80,6 @@ mod tests {
             super::VIEW,
             super::VIEWS,
             super::MASK,
-            super::BENCH,
         ];
         let mut count = 0;
         for text in all {

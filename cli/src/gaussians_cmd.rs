@@ -12,23 +12,6 @@ use autostereo::RendererOptions;
 use crate::args::{gpu, RenderArgs};
 use crate::run::{render_and_save, report, run_summary, Rendered};
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum SortArg {
-    /// Keys and a bitonic sort in compute passes: nothing leaves the GPU.
-    Gpu,
-    /// The keys sorted on the CPU each frame and uploaded with it.
-    Cpu,
-}
-
-impl SortArg {
-    fn name(self) -> &'static str {
-        match self {
-            SortArg::Gpu => "gpu",
-            SortArg::Cpu => "cpu",
-        }
-    }
-}
-
 #[derive(clap::Args)]
 pub struct GaussiansArgs {
     /// graphdeco 3DGS PLY, antimatter15 `.splat` or Niantic `.spz` (told by the first bytes,
@@ -46,7 +29,7 @@ pub struct GaussianFlags {
     /// Where the depth sort runs each frame: gpu (a bitonic sort in compute passes) or cpu
     /// (sorted on the CPU and uploaded).
     #[arg(long, value_enum, default_value = "gpu")]
-    sort: SortArg,
+    sort: SortOn,
     /// Single pass: every subpixel evaluates the SH itself instead of reading a colour table
     /// filled once per Gaussian and view (the same image, 8 bytes per Gaussian and view less
     /// memory; slower at few views, faster at a hundred: docs/GAUSSIANS.md; scenes whose table
@@ -79,10 +62,7 @@ impl GaussianFlags {
     /// The Gaussian options the flags say.
     pub fn options(&self) -> GaussianOptions {
         GaussianOptions {
-            sort: match self.sort {
-                SortArg::Gpu => SortOn::Gpu,
-                SortArg::Cpu => SortOn::Cpu,
-            },
+            sort: self.sort,
             color_table: !self.sh_per_subpixel,
         }
     }

@@ -1,7 +1,6 @@
 //! `autostereo`: command-line front end of the library.
 
 mod args;
-mod bench;
 mod camera_args;
 mod claims;
 #[cfg(test)]
@@ -93,9 +92,6 @@ enum Command {
     /// Write a display mask as a view-index image (each channel = view of that subpixel).
     #[command(after_help = examples::MASK)]
     Mask(mask_cmd::MaskArgs),
-    /// Benchmark every renderer side by side, with speed/accuracy trade-offs (`--report DIR`).
-    #[command(after_help = examples::BENCH)]
-    Bench(bench::BenchArgs),
 }
 
 fn main() -> std::process::ExitCode {
@@ -125,7 +121,6 @@ fn main() -> std::process::ExitCode {
         },
     };
     let result = match cli.command {
-        Command::Bench(a) => bench::run(a),
         Command::Mask(a) => mask_cmd::run(a),
         Command::Mesh(a) => mesh_cmd::run(a),
         Command::Gaussians(a) => gaussians_cmd::run(a),

@@ -25,22 +25,6 @@ pub enum VisibilityArg {
     Fast,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum TileClipArg {
-    /// Clip distances where the adapter has them, else discard.
-    Auto,
-    /// Four clip distances per vertex (needs CLIP_DISTANCES).
-    ClipDistances,
-    /// Discard fragments outside the tile (any adapter).
-    Discard,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum BoundsArg {
-    Exact,
-    Paper,
-}
-
 #[derive(clap::Args)]
 pub struct MeshArgs {
     /// Mesh file: OBJ, PLY with faces, STL, glTF (.gltf, .glb); a generated torus scene when
@@ -62,10 +46,10 @@ pub struct MeshFlags {
     /// Single-pass covering-quad bounds: exact (vd·|1 − fd/d| per vertex) or the paper's printed
     /// formula.
     #[arg(long, value_enum, default_value = "exact")]
-    bounds: BoundsArg,
+    bounds: CoverBounds,
     /// Tiled method: how each view's copy is kept inside its tile.
     #[arg(long, value_enum, default_value = "auto")]
-    tile_clip: TileClipArg,
+    tile_clip: TileClip,
     /// Reorder triangles along a Morton curve before rendering (locality; every method).
     #[arg(long)]
     sort_triangles: bool,
@@ -76,7 +60,7 @@ impl MeshFlags {
     pub fn check(&self, method: Method) -> Result<()> {
         let single_pass_only = [
             ("--visibility", self.visibility != VisibilityArg::Auto),
-            ("--bounds", self.bounds != BoundsArg::Exact),
+            ("--bounds", self.bounds != CoverBounds::Exact),
         ];
         for (flag, set) in single_pass_only {
             if set && method != Method::SinglePass {
@@ -86,7 +70,7 @@ impl MeshFlags {
                 );
             }
         }
-        if self.tile_clip != TileClipArg::Auto && method != Method::Tiled {
+        if self.tile_clip != TileClip::Auto && method != Method::Tiled {
             anyhow::bail!(
                 "--tile-clip: only --method tiled keeps views inside tiles (the method is \
                  {method}); drop it or use --method tiled"
@@ -124,15 +108,8 @@ impl MeshFlags {
                 VisibilityArg::Compute => Some(Visibility::Compute),
                 VisibilityArg::Fast => Some(Visibility::Fast),
             },
-            bounds: match self.bounds {
-                BoundsArg::Exact => CoverBounds::Exact,
-                BoundsArg::Paper => CoverBounds::Paper,
-            },
-            tile_clip: match self.tile_clip {
-                TileClipArg::Auto => TileClip::Auto,
-                TileClipArg::ClipDistances => TileClip::ClipDistances,
-                TileClipArg::Discard => TileClip::Discard,
-            },
+            bounds: self.bounds,
+            tile_clip: self.tile_clip,
         }
     }
 }

@@ -13,14 +13,6 @@ use autostereo::{PointOptions, RendererOptions};
 use crate::args::{gpu, RenderArgs};
 use crate::run::{render_and_save, report, run_summary, Rendered};
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum DepthArg {
-    /// One depth per subpixel (subpixel-resolution geometry pass).
-    Exact,
-    /// The paper's mean depth per pixel.
-    Paper,
-}
-
 #[derive(clap::Args)]
 pub struct PointsArgs {
     /// PLY (ASCII or binary), LAS/LAZ, or OBJ (its vertices); a generated torus scene when
@@ -46,13 +38,13 @@ pub struct PointFlags {
     radius_scale: f32,
     /// Single-pass depth per group image: exact (per subpixel) or the paper's (per pixel).
     #[arg(long, value_enum, default_value = "exact")]
-    depth: DepthArg,
+    depth: SplatDepth,
 }
 
 impl PointFlags {
     /// Refuse what `method` would ignore, then [`Self::check_values`].
     pub fn check(&self, method: Method) -> Result<()> {
-        if self.depth != DepthArg::Exact && method != Method::SinglePass {
+        if self.depth != SplatDepth::Exact && method != Method::SinglePass {
             bail!(
                 "--depth: only the single pass keeps one depth per group image (the {method} \
                  method renders each view with its own depth); drop it or use --method \
@@ -106,10 +98,7 @@ impl PointFlags {
     /// The point options the flags say.
     pub fn options(&self) -> PointOptions {
         PointOptions {
-            depth: match self.depth {
-                DepthArg::Exact => SplatDepth::Exact,
-                DepthArg::Paper => SplatDepth::Paper,
-            },
+            depth: self.depth,
             epsilon_fraction: self.epsilon,
         }
     }

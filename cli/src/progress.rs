@@ -1,4 +1,5 @@
-//! Progress bars for long runs (turntables, the bench), on stderr. indicatif hides them when
+//! Progress bars for long runs (turntables, the bench: bench/src/lib.rs includes this file),
+//! on stderr. indicatif hides them when
 //! stderr is not a terminal, so logs and tests see only the lines printed through
 //! [`log`].
 
@@ -19,6 +20,10 @@ pub fn bar(total: u64, what: &str) -> ProgressBar {
 
 /// Print a line on stderr without tearing the bar (and even where the bar is hidden, unlike
 /// `ProgressBar::println`, which then prints nothing).
+#[allow(
+    dead_code,
+    reason = "the bench's (bench/src/lib.rs includes this file); the CLI logs none"
+)]
 pub fn log(bar: &ProgressBar, line: &str) {
     bar.suspend(|| eprintln!("{line}"));
 }

@@ -13,7 +13,7 @@ use autostereo::warp::{RgbdWarp, WarpOptions};
 use crate::args::{parse_size, DisplayArgs};
 use crate::output::{say_written, OutputArgs, Saved};
 use crate::run::{report, timed};
-use crate::warp_cmd::{WarpPathArg, WarpSynthesisArgs};
+use crate::warp_cmd::WarpSynthesisArgs;
 
 #[derive(clap::Args)]
 pub struct RgbdArgs {
@@ -165,7 +165,7 @@ pub fn run(args: RgbdArgs) -> Result<()> {
         "ms": run.ms,
         "timing": run.timing,
         "gpu_bytes": run.gpu_bytes,
-        "warp_path": WarpPathArg::of(options.path),
+        "warp_path": options.path.name(),
         "focus": options.focus,
         "depthiness": options.depthiness,
         "hole_gap": options.hole_gap,
@@ -181,7 +181,7 @@ pub fn run(args: RgbdArgs) -> Result<()> {
         size[1],
         args.display.display,
         frame.camera.views,
-        WarpPathArg::of(options.path),
+        options.path.name(),
         run.ms,
         args.timing.described(),
         run.timing,

@@ -12,7 +12,7 @@ use glam::Mat4;
 
 use crate::args::{gpu, RenderArgs};
 use crate::run::{render_and_save, report, run_summary, Rendered};
-pub use crate::volume_render_args::{AlphaArg, PathArg, VolumeRenderArgs};
+pub use crate::volume_render_args::{PathArg, VolumeRenderArgs};
 use autostereo::volume::VolumeSettings;
 use autostereo::RendererOptions;
 
@@ -287,8 +287,8 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     let extra = serde_json::json!({
         "path": match args.render.path { PathArg::Compute => "compute", PathArg::Slices => "slices" },
         "alpha": match (args.render.path, args.render.alpha) {
-            (PathArg::Compute, _) | (PathArg::Slices, AlphaArg::Exact) => "exact",
-            (PathArg::Slices, AlphaArg::Paper) => "paper",
+            (PathArg::Compute, _) => "exact",
+            (PathArg::Slices, alpha) => alpha.name(),
         },
         "volume_dims": volume.dims,
         "spacing": volume.spacing,

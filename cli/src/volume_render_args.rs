@@ -15,14 +15,6 @@ pub enum PathArg {
     Slices,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum AlphaArg {
-    /// One α per channel (dual-source blending).
-    Exact,
-    /// The paper's mean α of the pixel's views.
-    Paper,
-}
-
 /// How a volume is rendered: the flags `volume` and `view` share.
 #[derive(clap::Args, Clone, Debug, PartialEq)]
 pub struct VolumeRenderArgs {
@@ -31,7 +23,7 @@ pub struct VolumeRenderArgs {
     pub(crate) path: PathArg,
     /// Slices path: per-channel (exact) or the paper's averaged α.
     #[arg(long, value_enum, default_value = "exact")]
-    pub(crate) alpha: AlphaArg,
+    pub(crate) alpha: AlphaMode,
     /// Samples across the volume's diagonal (3 to 16384).
     #[arg(long, conflicts_with = "step", value_parser = parse_slices)]
     slices: Option<u32>,
@@ -95,7 +87,7 @@ impl VolumeRenderArgs {
                  ray-marches each view); drop it or use --method single-pass"
             );
         }
-        if self.alpha != AlphaArg::Exact && self.path != PathArg::Slices {
+        if self.alpha != AlphaMode::Exact && self.path != PathArg::Slices {
             bail!(
                 "--alpha: only --path slices blends one α per pixel or per channel (the compute \
                  path's α is always per channel, exact); drop it or add --path slices"
@@ -151,8 +143,7 @@ impl VolumeRenderArgs {
         };
         let path = match (self.path, self.alpha) {
             (PathArg::Compute, _) => VolumePath::RayMarch,
-            (PathArg::Slices, AlphaArg::Exact) => VolumePath::Slices(AlphaMode::Exact),
-            (PathArg::Slices, AlphaArg::Paper) => VolumePath::Slices(AlphaMode::Paper),
+            (PathArg::Slices, alpha) => VolumePath::Slices(alpha),
         };
         VolumeOptions { path, settings }
     }

@@ -10,24 +10,6 @@ use autostereo::render::{Method, Renderer};
 use autostereo::warp::{WarpOptions, WarpPath};
 use autostereo::RendererOptions;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum WarpPathArg {
-    /// Straight into the spatial image (each subpixel warps its own view).
-    Direct,
-    /// Beck's way: N view images, then the mask compositing.
-    PerView,
-}
-
-impl WarpPathArg {
-    /// The flag value (`direct`, `per-view`), as the user writes it and `--json` reports it.
-    pub fn of(path: WarpPath) -> &'static str {
-        match path {
-            WarpPath::Direct => "direct",
-            WarpPath::PerView => "per-view",
-        }
-    }
-}
-
 /// How a warp makes its views: the flags `--method warp` and `rgbd` (always a warp) share.
 #[derive(clap::Args, Clone, Debug)]
 #[command(next_help_heading = "Warping (--method warp; rgbd)")]
@@ -39,7 +21,7 @@ pub struct WarpSynthesisArgs {
     /// direct (each subpixel warps its own view straight into the spatial image) or per-view
     /// (N view images first, then the mask compositing).
     #[arg(long, value_enum)]
-    pub warp_path: Option<WarpPathArg>,
+    pub warp_path: Option<WarpPath>,
     /// Also write the hole mask (255 on subpixels that were filled rather than seen) as PNG
     /// and report its share (--method warp reports the share without it too).
     #[arg(long, value_name = "F.png")]
@@ -68,11 +50,7 @@ impl WarpSynthesisArgs {
     pub fn apply(&self, options: WarpOptions) -> WarpOptions {
         WarpOptions {
             hole_gap: self.hole_gap.unwrap_or(options.hole_gap),
-            path: match self.warp_path {
-                Some(WarpPathArg::PerView) => WarpPath::PerView,
-                Some(WarpPathArg::Direct) => WarpPath::Direct,
-                None => options.path,
-            },
+            path: self.warp_path.unwrap_or(options.path),
             ..options
         }
     }
@@ -165,7 +143,7 @@ pub fn hole_report<S: ?Sized>(
 
     Ok(serde_json::json!({
         "references": options.warp.references,
-        "warp_path": WarpPathArg::of(options.warp.path),
+        "warp_path": options.warp.path.name(),
         "warp": warp.describe(),
         "hole_share": hole_share(&mask),
     }))

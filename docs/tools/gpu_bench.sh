@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The benchmarks that mean something only on a real GPU, in one short run: the quick bench
-# (every primitive and method at 256², N = 2, 8, 64) and the volume table (`bench --volumes`:
+# (every primitive and method at 256², N = 2, 8, 64) and the volume table (`autostereo-bench --volumes`:
 # the head and brainsmall at 512², N = 8 and 64, every method, the approximations' curves), on
 # whatever adapter wgpu picks (WGPU_BACKEND / WGPU_ADAPTER_NAME choose another). About 3–8
 # minutes on a discrete GPU; on lavapipe ≈ 20 minutes.
@@ -19,13 +19,15 @@ out="${1:-gpu_bench}"
 mkdir -p "$out"
 
 bin="${AUTOSTEREO_BIN:-target/release/autostereo}"
-if [ ! -x "$bin" ]; then
+bench="${AUTOSTEREO_BENCH_BIN:-target/release/autostereo-bench}"
+if [ ! -x "$bin" ] || [ ! -x "$bench" ]; then
   if command -v cargo >/dev/null 2>&1; then
-    echo "building target/release/autostereo (cargo build --release)"
-    cargo build --release --quiet
+    echo "building target/release/autostereo and autostereo-bench (cargo build --release --workspace)"
+    cargo build --release --workspace --quiet
   else
-    echo "gpu_bench.sh: no autostereo binary ($bin) and no cargo on the PATH: build it elsewhere" >&2
-    echo "  (cargo build --release) and bring target/release/autostereo, or install Rust" >&2
+    echo "gpu_bench.sh: no autostereo binaries ($bin, $bench) and no cargo on the PATH: build them" >&2
+    echo "  elsewhere (cargo build --release --workspace) and bring target/release/autostereo and" >&2
+    echo "  target/release/autostereo-bench, or install Rust" >&2
     exit 1
   fi
 fi
@@ -38,8 +40,8 @@ rm -f "$out/probe.png"
 echo "${adapter:-adapter: unknown (the probe render failed; see below)}"
 
 start=$(date +%s)
-"$bin" bench --quick --report "$out/quick"
-"$bin" bench --volumes --frames 10 --report "$out/volumes"
+"$bench" --quick --report "$out/quick"
+"$bench" --volumes --frames 10 --report "$out/volumes"
 seconds=$(( $(date +%s) - start ))
 
 {
@@ -50,11 +52,11 @@ seconds=$(( $(date +%s) - start ))
   echo
   echo "Absolute times mean something here, unlike on the software rasterisers of CI."
   echo
-  echo "## Volumes (\`bench --volumes --frames 10\`)"
+  echo "## Volumes (\`autostereo-bench --volumes --frames 10\`)"
   echo
   sed -e '1,/^## /{/^## /!d}' -e 's/^#/##/' "$out/volumes/BENCHMARKS.md" | sed 's#(images/#(gpu/volumes/images/#g'
   echo
-  echo "## Quick run (\`bench --quick\`)"
+  echo "## Quick run (\`autostereo-bench --quick\`)"
   echo
   sed -e '1,/^## /{/^## /!d}' -e 's/^#/##/' "$out/quick/BENCHMARKS.md" | sed 's#(images/#(gpu/quick/images/#g'
 } > "$out/GPU.md"

@@ -33,6 +33,7 @@ pub use scene::SceneWarp;
 
 /// Where a warp writes.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum WarpPath {
     /// Straight into the spatial image: each subpixel warps its own view (no per-view
     /// images).
@@ -41,4 +42,14 @@ pub enum WarpPath {
     /// Beck's way: every view warped into its own image, then the mask compositing (the
     /// N-pass harness). The same values; N full images of work and memory.
     PerView,
+}
+
+impl WarpPath {
+    /// Its name as a command line writes it (`direct`, `per-view`) and reports give it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Direct => "direct",
+            Self::PerView => "per-view",
+        }
+    }
 }

@@ -360,7 +360,6 @@ fn cli_reports_bad_input_without_panicking() {
         ),
         (vec!["mesh", "--frames", "0"], "1..=100000"),
         (vec!["volume", "--frames", "4294967295"], "1..=100000"),
-        (vec!["bench", "--frames", "0"], "1..=100000"),
         (
             vec!["mask", "--size", "100000x100000", "--out", out],
             "more than 268435456",

@@ -3,8 +3,6 @@
 //! or refused, never doubled; `mask` takes a calibration's panel size; `bench --json` names
 //! the report's files.
 
-use std::path::PathBuf;
-
 use super::numbers::{out, volume};
 use crate::common;
 
@@ -167,32 +165,4 @@ fn mask_takes_the_calibrations_panel_size() {
         input < grid && (options < input || grid < options),
         "{help}"
     );
-}
-
-/// `bench --json` names the files `--report` wrote (before: no `written`).
-#[test]
-fn bench_json_names_the_report_files() {
-    let dir = out("vocabulary_bench_report");
-    let saved = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../docs/bench_quick.json");
-    let json = common::cli_json(&[
-        "bench",
-        "--report",
-        dir.to_str().unwrap(),
-        "--from-json",
-        saved.to_str().unwrap(),
-        "--json",
-    ]);
-    let written: Vec<&str> = json["written"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|w| w.as_str().unwrap())
-        .collect();
-    assert!(
-        written.iter().any(|w| w.ends_with("BENCHMARKS.md")),
-        "{json}"
-    );
-    for file in &written {
-        assert!(std::path::Path::new(file).is_file(), "{file}");
-    }
 }

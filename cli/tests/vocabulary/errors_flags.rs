@@ -242,23 +242,6 @@ fn a_slant_too_large_is_said_plainly() {
 }
 
 #[test]
-fn a_report_path_that_is_a_file_names_report_and_the_path() {
-    // Said "Not a directory (os error 20)", no flag, no path.
-    let dir = out("vocabulary_errors_report");
-    std::fs::create_dir_all(&dir).unwrap();
-    let file = dir.join("BENCHMARKS.md");
-    std::fs::write(&file, "# Benchmarks\n").unwrap();
-    let (ok, stderr) = cli(&["bench", "--report", file.to_str().unwrap()]);
-    assert!(!ok);
-    let text = error_text(&stderr);
-    assert!(
-        text.starts_with("error: --report ") && text.contains(file.to_str().unwrap()),
-        "{text}"
-    );
-    assert!(text.contains("takes a folder"), "{text}");
-}
-
-#[test]
 fn a_raw_file_longer_than_described_suggests_raw_header() {
     // Said "126 bytes, but 4x4x4 u8 samples after a 0-byte header need 64": no fix.
     let raw = write("vocabulary_errors_long.raw", &[0u8; 126]);

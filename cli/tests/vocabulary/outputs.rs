@@ -242,7 +242,6 @@ fn help_is_grouped_with_examples_and_commands_come_in_order() {
         "view",
         "views",
         "mask",
-        "bench",
     ];
     for pair in order.windows(2) {
         assert!(at(pair[0]) < at(pair[1]), "{pair:?}: {stdout}");

@@ -167,18 +167,3 @@ fn gaussian_splats_have_no_warp_flags() {
     let stderr = cli_refused(&["interleave", "--references", "2"], &["--references"]);
     assert!(!stderr.contains("`autostereo gaussians`"), "{stderr}");
 }
-
-#[test]
-fn bench_from_json_takes_no_measuring_flags() {
-    let saved = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../docs/bench_quick.json");
-    let dir = out("names_bench");
-    for flag in [
-        &["--frames", "3"][..],
-        &["--gaussians"][..],
-        &["--quick"][..],
-    ] {
-        let mut args = vec!["bench", "--report", s(&dir), "--from-json", s(&saved)];
-        args.extend_from_slice(flag);
-        cli_refused(&args, &[flag[0]]);
-    }
-}

@@ -3,7 +3,7 @@
 //! axis, which changes no eye depth). On the GPU: keys from `wgsl/gaussians/sort_keys.wgsl`,
 //! then a bitonic sort (`wgsl/gaussians/sort_step.wgsl`, one dispatch per step); on the CPU:
 //! the same keys sorted by the standard library and uploaded with the frame (measured against
-//! each other by `autostereo bench`).
+//! each other by `autostereo-bench`).
 
 use bytemuck::{Pod, Zeroable};
 
@@ -19,12 +19,23 @@ const WORKGROUP: u32 = 256;
 
 /// Where the depth sort runs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum SortOn {
     /// Keys and a bitonic sort in compute passes: nothing leaves the GPU.
     #[default]
     Gpu,
     /// The keys sorted on the CPU each frame and uploaded with it.
     Cpu,
+}
+
+impl SortOn {
+    /// Lower-case name (CLI, reports).
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Gpu => "gpu",
+            Self::Cpu => "cpu",
+        }
+    }
 }
 
 /// One bitonic step. Keep in sync with `struct SortStep` in `wgsl/gaussians/sort_step.wgsl`.

@@ -39,6 +39,7 @@ use crate::target::SpatialTarget;
 
 /// Depth kept per group image by the single pass on subpixel (K = 3) displays.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum SplatDepth {
     /// The paper's: one depth per pixel, the mean of its subpixels' hit depths.
     Paper,

@@ -17,6 +17,7 @@ use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 
 /// How a copy is kept inside its tile.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum TileClip {
     /// Clip distances where the adapter has them, else [`TileClip::Discard`].
     #[default]

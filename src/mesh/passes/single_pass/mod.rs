@@ -86,6 +86,7 @@ impl Visibility {
 
 /// Horizontal extent of the covering rectangles.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum CoverBounds {
     /// docs/DESIGN.md §3: `x ± vd·|1 − fd/d|` per vertex. Always covers.
     #[default]

@@ -1,4 +1,4 @@
-//! `bench --warp`: the warp's accuracy against the N-pass oracle for R = 1, 2, 3 and N/2
+//! `autostereo-bench --warp`: the warp's accuracy against the N-pass oracle for R = 1, 2, 3 and N/2
 //! reference views at N = 8 and 45 (the run's displays), with its time and the share of
 //! subpixels it filled rather than saw.
 

@@ -104,7 +104,7 @@ pub(super) fn targets(md: &mut String, r: &Results) -> Result<()> {
          SP ≈ 3 × SV and N-pass / SP ≈ N / 3 (the paper expects the same ≈ 1/K of single-view \
          speed). The approximations that trade accuracy for speed (`--empty-stride`, \
          `--thin-alpha`, `--step`, `--share-samples`) and the targets at the fastest setting \
-         ≥ 40 dB: `bench --volumes`, its report docs/volumes/BENCHMARKS.md. Profile and details: [VOLUMES.md](VOLUMES.md). Single measurements on lavapipe vary by 10–15 % \
+         ≥ 40 dB: `autostereo-bench --volumes`, its report docs/volumes/BENCHMARKS.md. Profile and details: [VOLUMES.md](VOLUMES.md). Single measurements on lavapipe vary by 10–15 % \
          between runs, which decides the flatness targets near 1.1: [POINTS.md](POINTS.md) and \
          [VOLUMES.md](VOLUMES.md) have repeated, back-to-back measurements.\n"
     )?;

@@ -1,4 +1,4 @@
-//! `autostereo bench --gaussians`: 3D Gaussian splats, every method side by side on a generated
+//! `autostereo-bench --gaussians`: 3D Gaussian splats, every method side by side on a generated
 //! capture-like scene of ≥ 100k Gaussians (`Gaussians::generated`): N = 8, 45 and 100 at 512²
 //! and a 16" panel (3840×2160, 45 views); time, GPU memory, the single pass's accuracy against
 //! the N-pass, the depth sort alone (GPU bitonic against the CPU's), and issue 30's target
@@ -18,7 +18,7 @@ use serde::Serialize;
 
 use super::scenes::{frame, BenchScene};
 use super::{sweep_display, BenchArgs};
-use crate::args::gpu;
+use crate::gpu;
 
 /// Gaussians in the bench scene (issue 30: ≥ 100k).
 const COUNT: usize = 131_072;

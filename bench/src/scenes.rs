@@ -39,7 +39,7 @@ pub enum Kind {
     SingleView,
     /// Per-view duplication in one draw (tiled, layered, MRT): the competition.
     Duplication,
-    /// Depth-image warping of R reference views (approximate; accuracy in `bench --warp`).
+    /// Depth-image warping of R reference views (approximate; accuracy in `autostereo-bench --warp`).
     Warp,
 }
 

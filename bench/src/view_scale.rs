@@ -1,4 +1,4 @@
-//! `bench --view-scale`: per-view resolution (`Frame::view_scale`) of the methods that render
+//! `autostereo-bench --view-scale`: per-view resolution (`Frame::view_scale`) of the methods that render
 //! view images, against the full-size N-pass: time and accuracy at S = 1, ¾, ½, ⅓, ¼ on the
 //! paper's display, beside the single pass of the same run.
 

@@ -1,4 +1,4 @@
-//! `bench --volumes`: the volume march's approximations, each against the exact path of the
+//! `autostereo-bench --volumes`: the volume march's approximations, each against the exact path of the
 //! same run: sample sharing among a pixel's K rays (`--share-samples TAU`, single pass only)
 //! and the probes through transparent material (`--empty-stride P`), also through thin
 //! material (`--thin-alpha A`), at the scene's sampling distance and at coarser ones (`--step

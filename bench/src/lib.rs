@@ -1,4 +1,4 @@
-//! `autostereo bench`: single pass (every path and mode), N-pass, single view and the per-view
+//! `autostereo-bench`: single pass (every path and mode), N-pass, single view and the per-view
 //! duplication methods (tiled, layered, MRT) side by side in one process on one adapter, for volumes, point splats and meshes; speed/accuracy trade-offs
 //! against the N-pass high-quality render; what a scene that skips a feature saves. `--report
 //! DIR` writes DIR/BENCHMARKS.md (+ PNG plots with the `plots` feature).
@@ -25,11 +25,27 @@ use autostereo::timing::{median, FrameTimer};
 use schedule::{count_measurements, estimate_seconds, measured};
 use serde::{Deserialize, Serialize};
 
-use crate::args::gpu;
+/// The CLI's progress bars (one file for both tools).
+#[path = "../../cli/src/progress.rs"]
+mod progress;
+
+/// Most timed frames per measurement (`--frames`), as the CLI's commands take.
+pub const MAX_FRAMES: u32 = 100_000;
+
+/// The GPU the bench measures on (`WGPU_BACKEND` / `WGPU_ADAPTER_NAME` pick it).
+fn gpu() -> Result<autostereo::gpu::GpuContext> {
+    autostereo::gpu::GpuContext::new(&Default::default()).context("setting up the GPU")
+}
 use plan::run_name;
 pub use plan::Plan;
 use scenes::{BenchScene, Kind, MethodEntry};
 
+/// What `--help` shows after the flags.
+pub const EXAMPLES: &str = "Examples:
+  autostereo-bench --quick
+  autostereo-bench --gaussians --frames 1 --report docs/gaussians";
+
+/// What to measure and where to write it.
 #[derive(clap::Args)]
 pub struct BenchArgs {
     /// A smaller matrix (256², N = 2, 8, 64, the smaller data sets) that finishes in minutes.
@@ -82,7 +98,7 @@ pub struct BenchArgs {
     #[arg(long, conflicts_with_all = ["quick", "duplication", "sweep", "warp", "view_scale", "volumes"])]
     gaussians: bool,
     /// Timed frames per measurement (after 2 warm-up frames).
-    #[arg(long, default_value_t = 20, value_parser = crate::args::frames_parser())]
+    #[arg(long, default_value_t = 20, value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_FRAMES)))]
     frames: u32,
     /// Where `data/fetch` put the real data sets (brainsmall.den, the dragon, the bunny); the
     /// bench uses generated stand-ins for those it does not find there and says so.
@@ -220,7 +236,7 @@ fn plots_note() {
     if !cfg!(feature = "plots") {
         eprintln!(
             "note: built without the `plots` feature, so the report has its tables but no charts \
-             (cargo run --release --features autostereo-cli/plots -- bench …)"
+             (cargo run --release -p autostereo-bench --features plots -- …)"
         );
     }
 }
@@ -267,8 +283,12 @@ pub fn run(args: BenchArgs) -> Result<()> {
         if let Some(json) = &args.from_json {
             let text = std::fs::read_to_string(json)
                 .with_context(|| format!("reading {}", json.display()))?;
-            let results: Results = serde_json::from_str(&text)
-                .with_context(|| format!("{} is not a `bench --json` output", json.display()))?;
+            let results: Results = serde_json::from_str(&text).with_context(|| {
+                format!(
+                    "{} is not a `autostereo-bench --json` output",
+                    json.display()
+                )
+            })?;
             report::write(dir, &results)?;
             eprintln!("wrote {}", dir.join("BENCHMARKS.md").display());
             plots_note();

@@ -49,10 +49,10 @@ pub fn write(dir: &Path, r: &Results) -> Result<()> {
     writeln!(md, "# Benchmarks\n")?;
     writeln!(
         md,
-        "Produced by `cargo run --release --features autostereo-cli/plots -- {}` in {:.1} min (the full run \
+        "Produced by `cargo run --release --features autostereo-bench/plots -- {}` in {:.1} min (the full run \
          states its expected duration when it starts; without the `plots` feature the report has \
          its tables but no plots). The numbers are saved next to this file as `bench_{}.json`; \
-         `bench --report DIR --from-json FILE` re-plots them.\n",
+         `autostereo-bench --report DIR --from-json FILE` re-plots them.\n",
         r.command
             .split_whitespace()
             .skip(1)
@@ -241,15 +241,15 @@ pub fn write(dir: &Path, r: &Results) -> Result<()> {
             md,
             "## Runs of their own\n\n\
              - every method against per-view duplication, 512² and 1920×1080: \
-             [duplication/BENCHMARKS.md](duplication/BENCHMARKS.md) (`bench --duplication`)\n\
-             - time against N = 1…64: [sweep/BENCHMARKS.md](sweep/BENCHMARKS.md) (`bench --sweep`)\n\
-             - depth-image warping: [warp/BENCHMARKS.md](warp/BENCHMARKS.md) (`bench --warp`)\n\
+             [duplication/BENCHMARKS.md](duplication/BENCHMARKS.md) (`autostereo-bench --duplication`)\n\
+             - time against N = 1…64: [sweep/BENCHMARKS.md](sweep/BENCHMARKS.md) (`autostereo-bench --sweep`)\n\
+             - depth-image warping: [warp/BENCHMARKS.md](warp/BENCHMARKS.md) (`autostereo-bench --warp`)\n\
              - per-view resolution (`--view-scale`), time and PSNR per scale: \
-             [view_scale/BENCHMARKS.md](view_scale/BENCHMARKS.md) (`bench --view-scale`)\n\
+             [view_scale/BENCHMARKS.md](view_scale/BENCHMARKS.md) (`autostereo-bench --view-scale`)\n\
              - volumes at N = 8 and 64 with the volume march's approximations \
              (`--empty-stride`, `--thin-alpha`, `--step`, `--share-samples`) and the volume targets at a \
              setting ≥ 40 dB: [volumes/BENCHMARKS.md](volumes/BENCHMARKS.md) \
-             (`bench --volumes`)\n\
+             (`autostereo-bench --volumes`)\n\
              - the full matrix: [full/BENCHMARKS.md](full/BENCHMARKS.md) (`bench`)\n"
         )?;
     }
