@@ -16,7 +16,7 @@ use autostereo::gpu::GpuContext;
 use autostereo::render::{Method, Renderer};
 use autostereo::target::SpatialTarget;
 use autostereo::timing::FrameTimer;
-use autostereo::volume::{load, phantom, TransferFunction, Volume};
+use autostereo::volume::{generate, load, TransferFunction, Volume};
 use autostereo::volume::{AlphaMode, VolumeScene};
 use criterion::{criterion_group, criterion_main, Criterion};
 use glam::Mat4;
@@ -31,7 +31,7 @@ fn data_sets() -> Vec<(&'static str, Volume, &'static str)> {
         .unwrap_or_else(|e| panic!("{e}\nrun data/fetch first to get brainsmall.den"));
     let brain = Volume::new(brain.dims, [1.0, 1.0, 1.5], brain.data).unwrap();
     vec![
-        ("head", phantom::ct_head(96).unwrap(), "ct-skin"),
+        ("head", generate::ct_head(96).unwrap(), "ct-skin"),
         ("brainsmall", brain, "mri"),
     ]
 }

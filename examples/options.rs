@@ -16,7 +16,7 @@ use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::{Method, Renderer};
 use autostereo::target::SpatialTarget;
 use autostereo::volume::VolumeScene;
-use autostereo::volume::{phantom, TransferFunction, VolumeSettings};
+use autostereo::volume::{generate, TransferFunction, VolumeSettings};
 use autostereo::{AnyRenderer, AnyScene, MeshOptions, RendererOptions, VolumeOptions};
 use glam::Mat4;
 
@@ -45,7 +45,7 @@ fn main() -> Result<()> {
     let ctx = GpuContext::new(&Default::default())?;
     println!("adapter: {}", ctx.adapter_label());
 
-    let head = phantom::ct_head(96)?;
+    let head = generate::ct_head(96)?;
     let rotation = Mat4::from_rotation_x(-90f32.to_radians());
     let tf = TransferFunction::preset("ct-skin")?;
     let volume = VolumeScene::new(&ctx.device, &ctx.queue, &head, tf, rotation)?;

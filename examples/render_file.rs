@@ -12,7 +12,7 @@ use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::image_io::compare;
 use autostereo::render::Method;
-use autostereo::volume::phantom;
+use autostereo::volume::generate;
 use autostereo::{AnyData, AnyRenderer, AnyScene, LoadOptions, Renderer, RendererOptions};
 use autostereo::{VolumeData, VolumeLoad};
 use glam::Mat4;
@@ -36,7 +36,7 @@ fn main() -> Result<()> {
             autostereo::load(path.as_ref(), &options)?
         }
         None => AnyData::Volume(Box::new(VolumeData::with_preset(
-            phantom::ct_head(96)?,
+            generate::ct_head(96)?,
             "ct-skin",
             rotation,
         )?)),

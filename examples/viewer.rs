@@ -15,7 +15,7 @@ use autostereo::gpu::GpuContext;
 use autostereo::render::{Method, OutputBlit, Renderer};
 use autostereo::target::SpatialTarget;
 use autostereo::volume::VolumeSettings;
-use autostereo::volume::{phantom, TransferFunction};
+use autostereo::volume::{generate, TransferFunction};
 use autostereo::volume::{VolumeRaycaster, VolumeScene};
 use glam::Mat4;
 use winit::application::ApplicationHandler;
@@ -57,7 +57,7 @@ impl Viewer {
             .find(|f| autostereo::render::OUTPUT_FORMATS.contains(f))
             .context("no 8-bit surface format")?;
         surface.configure(&ctx.device, &config);
-        let volume = phantom::ct_head(64)?;
+        let volume = generate::ct_head(64)?;
         let transfer = TransferFunction::preset("ct-skin")?;
         let scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, transfer, Mat4::IDENTITY)?;
         Ok(Self {

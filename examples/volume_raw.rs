@@ -8,7 +8,7 @@
 
 use anyhow::{bail, Context, Result};
 use autostereo::camera::MultiViewCamera;
-use autostereo::volume::{load, phantom};
+use autostereo::volume::{generate, load};
 
 fn main() -> Result<()> {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -24,7 +24,7 @@ fn main() -> Result<()> {
         .collect::<Result<_, _>>()
         .context("WxH")?;
     let volume = if input == "--builtin" {
-        phantom::ct_head(96)?
+        generate::ct_head(96)?
     } else {
         load::load_any(input.as_ref())?
     };

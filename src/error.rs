@@ -41,6 +41,9 @@ pub enum Error {
         value: u64,
         /// The adapter's limit.
         limit: u64,
+        /// The parameter that sets the quantity, where the caller sets it directly (views,
+        /// groups, the image size): the most it may be is then `limit`.
+        param: Option<Param>,
     },
     /// A frame too wide for a mode that renders one column per subpixel: the adapter's
     /// texture width limit divided by the columns per pixel is the widest frame it renders.

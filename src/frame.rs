@@ -290,7 +290,7 @@ pub fn frame_bind_group_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
 /// A uniform buffer holding a [`FrameUniform`] and its group-0 bind group. Each
 /// [`FrameBinding::write`] makes a new buffer with the frame's constants instead of a queue
 /// write, so frames encoded one after the other before one submit each keep their own
-/// (`src/render/pass_params.rs`).
+/// (`src/gpu/pass_params.rs`).
 pub struct FrameBinding {
     layout: wgpu::BindGroupLayout,
     /// Bind group for group 0.
@@ -312,7 +312,7 @@ impl FrameBinding {
         layout: &wgpu::BindGroupLayout,
         uniform: &FrameUniform,
     ) -> wgpu::BindGroup {
-        let buffer = crate::render::pass_params::constants_buffer(
+        let buffer = crate::gpu::pass_params::constants_buffer(
             device,
             "frame uniform",
             wgpu::BufferUsages::UNIFORM,

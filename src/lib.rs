@@ -44,10 +44,14 @@ pub mod warp;
 pub use any::{AnyRenderer, AnyScene};
 pub use data_kind::DataKind;
 pub use error::{Error, Result};
+pub use gaussians::GaussianOptions;
 pub use load::{
     complete, default_preset, load, resampled, AnyData, LoadOptions, MeshLoad, PointData,
     PointLoad, VolumeData, VolumeLoad,
 };
-pub use options::{MeshOptions, PointOptions, RendererOptions, VolumeOptions, VolumePath};
+pub use mesh::MeshOptions;
+pub use options::RendererOptions;
 pub use param::Param;
+pub use points::PointOptions;
 pub use render::Renderer;
+pub use volume::{VolumeOptions, VolumePath};

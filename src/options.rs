@@ -1,21 +1,19 @@
 //! The one decision "method + options → renderer", for every primitive: [`RendererOptions`]
-//! holds the method and each primitive's settings; its constructors build the renderer.
+//! holds the method and each primitive's settings (each primitive's own `options.rs`); its
+//! constructors build the renderer.
 //! The command line, the viewer, the bench and the tests all build renderers here.
 
 use crate::error::{Error, Result};
 use crate::gaussians::{GaussianOptions, GaussianScene, GaussianSplatter};
-use crate::mesh::MeshBuffers;
+use crate::mesh::{MeshBuffers, MeshOptions};
 use crate::mesh::{
-    CoverBounds, MeshLayered, MeshMrt, MeshNPass, MeshSinglePass, MeshSinglePassOptions, MeshTiled,
-    TileClip, Visibility,
+    MeshLayered, MeshMrt, MeshNPass, MeshSinglePass, MeshSinglePassOptions, MeshTiled, Visibility,
 };
 use crate::param::Param;
-use crate::points::SplatScene;
-use crate::points::{PointSplatter, SplatDepth, SplatOptions, DEFAULT_EPSILON_FRACTION};
+use crate::points::{PointOptions, PointSplatter, SplatScene};
 use crate::render::{Banded, Method, Renderer};
 use crate::rgbd::RgbdScene;
-use crate::volume::{AlphaMode, VolumeRaycaster, VolumeSlicer};
-use crate::volume::{VolumeScene, VolumeSettings};
+use crate::volume::{VolumeOptions, VolumePath, VolumeRaycaster, VolumeScene, VolumeSlicer};
 use crate::warp::{ReferenceRenderer, RgbdWarp, SceneWarp, WarpOptions};
 
 /// How frames are made: the method, and each primitive's settings (a primitive reads only its
@@ -38,65 +36,6 @@ pub struct RendererOptions {
     /// Render every frame in bands of at most this many pixels ([`crate::render::Banded`]);
     /// `None`: whole, falling back to bands only where a frame is too large for the adapter.
     pub max_band_pixels: Option<u64>,
-}
-
-/// Mesh settings.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct MeshOptions {
-    /// Single-pass visibility; `None`: the fastest exact mode the adapter has
-    /// ([`Visibility::best_exact`]).
-    pub visibility: Option<Visibility>,
-    /// Single-pass covering-quad bounds.
-    pub bounds: CoverBounds,
-    /// Tiled method: how each view's copy is kept inside its tile.
-    pub tile_clip: TileClip,
-}
-
-/// Point-splat settings (every method splats the same way, so the baselines compare).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PointOptions {
-    /// Single-pass depth per group image (K = 3 displays).
-    pub depth: SplatDepth,
-    /// ε of the ε-z compositing as a share of the scene's bounding diameter.
-    pub epsilon_fraction: f32,
-}
-
-impl Default for PointOptions {
-    fn default() -> Self {
-        Self {
-            depth: SplatDepth::Exact,
-            epsilon_fraction: DEFAULT_EPSILON_FRACTION,
-        }
-    }
-}
-
-impl PointOptions {
-    /// The splatter's options for `scene` (ε in its units).
-    pub fn for_scene(&self, scene: &SplatScene) -> SplatOptions {
-        SplatOptions {
-            depth: self.depth,
-            epsilon: SplatOptions::epsilon_for(scene, self.epsilon_fraction),
-        }
-    }
-}
-
-/// Volume settings: the single pass's path and how every method samples.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct VolumeOptions {
-    /// The single pass's path (the other methods always ray-march).
-    pub path: VolumePath,
-    /// Sampling, shading and the measured approximations.
-    pub settings: VolumeSettings,
-}
-
-/// How the volume single pass runs.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum VolumePath {
-    /// Ray marching in a compute pass, exact per channel.
-    #[default]
-    RayMarch,
-    /// The paper's proxy slices (needs dual-source blending).
-    Slices(AlphaMode),
 }
 
 impl RendererOptions {

@@ -20,6 +20,7 @@ pub fn read_texture_rgba8(
             what: "read-back buffer bytes".into(),
             value: size,
             limit: device.limits().max_buffer_size,
+            param: None,
         });
     }
     let buffer = device.create_buffer(&wgpu::BufferDescriptor {

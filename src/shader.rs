@@ -66,7 +66,7 @@ pub const STAGES: &[(&str, &str)] = &[
     wgsl!("render/depth_readback.wgsl"),
     wgsl!("render/output.wgsl"),
     wgsl!("render/stereo.wgsl"),
-    wgsl!("render/storage_fence.wgsl"),
+    wgsl!("gpu/storage_fence.wgsl"),
     wgsl!("mesh/single_pass_cover.wgsl"),
     wgsl!("mesh/single_pass_fast.wgsl"),
     wgsl!("mesh/single_pass_exact.wgsl"),

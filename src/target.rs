@@ -2,10 +2,10 @@
 
 use crate::error::Result;
 use crate::gpu::check_size_2d;
+use crate::gpu::texture::{texture_2d, Texture2d};
 use crate::image_io::RgbImage;
 use crate::param::Param;
 use crate::readback::read_texture_rgba8;
-use crate::render::texture::{texture_2d, Texture2d};
 
 /// Format of every spatial image and per-view layer: plain (linear) 8-bit RGBA.
 pub const SPATIAL_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;

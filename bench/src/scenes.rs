@@ -13,7 +13,7 @@ use autostereo::points::{GroupCount, PointCloud, SplatScene};
 use autostereo::render::Method;
 use autostereo::volume::AlphaMode;
 use autostereo::volume::VolumeScene;
-use autostereo::volume::{load, phantom, TransferFunction, Volume};
+use autostereo::volume::{generate, load, TransferFunction, Volume};
 use autostereo::warp::{WarpOptions, WarpPath};
 use autostereo::{AnyRenderer, AnyScene, MeshOptions, PointOptions, RendererOptions};
 use autostereo::{VolumeOptions, VolumePath};
@@ -58,7 +58,7 @@ pub fn scenes(ctx: &autostereo::gpu::GpuContext, plan: &super::Plan) -> Result<V
     let rotation = Mat4::from_rotation_x(-90f32.to_radians());
     let mut volumes = vec![(
         "head (built-in)".to_string(),
-        phantom::ct_head(if quick { 48 } else { 96 })?,
+        generate::ct_head(if quick { 48 } else { 96 })?,
         "ct-skin",
     )];
     let brain = fetched("brainsmall.den");

@@ -169,32 +169,23 @@ pub fn gpu() -> Result<autostereo::gpu::GpuContext> {
     Ok(ctx)
 }
 
-/// The values a flag group has when none of its flags is given (to tell a flag the user gave
-/// from its default).
-pub fn defaults_of<T: clap::Args + clap::FromArgMatches>() -> T {
-    let command = T::augment_args(clap::Command::new("defaults").no_binary_name(true));
-    let matches = command
-        .try_get_matches_from(std::iter::empty::<&str>())
-        .expect("a flag group parses without flags");
-    T::from_arg_matches(&matches).expect("a flag group's defaults are values")
-}
-
-/// The long flags of the group `T` that this process's command line gives (`--tf`, `--tf=x`),
-/// in their order there: to name the flag a refusal is about.
-pub fn flags_given_of<T: clap::Args>() -> Vec<String> {
-    let command = T::augment_args(clap::Command::new("flags"));
-    let longs: Vec<String> = command
+/// The long flags of the group `T` that the command line gave (clap's value source: not a
+/// default), in their order there: to name the flag a refusal is about. `matches`: those of
+/// the subcommand `T` is flattened into.
+pub fn flags_given<T: clap::Args>(matches: &clap::ArgMatches) -> Vec<String> {
+    use clap::parser::ValueSource;
+    let group = T::augment_args(clap::Command::new("group"));
+    let mut given: Vec<(usize, String)> = group
         .get_arguments()
-        .filter_map(|a| a.get_long().map(|l| format!("--{l}")))
-        .collect();
-    // args_os: a file name that is not UTF-8 must not panic here (main.rs parses it so too).
-    std::env::args_os()
-        .filter_map(|a| {
-            let a = a.to_string_lossy();
-            let flag = a.split('=').next().unwrap_or_default().to_string();
-            longs.contains(&flag).then_some(flag)
+        .filter_map(|arg| {
+            let id = arg.get_id().as_str();
+            let typed = matches.value_source(id) == Some(ValueSource::CommandLine);
+            let at = matches.index_of(id).unwrap_or(usize::MAX);
+            typed.then(|| Some((at, format!("--{}", arg.get_long()?))))?
         })
-        .collect()
+        .collect();
+    given.sort();
+    given.into_iter().map(|(_, flag)| flag).collect()
 }
 
 /// Refuse two outputs of one run at the same path (the second would overwrite the first).
@@ -247,6 +238,20 @@ pub fn check_output(path: &std::path::Path) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// A flag's value: one of the library's `T`, or `auto` (`None`: the library picks).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct OrAuto<T>(pub Option<T>);
+
+impl<T: clap::ValueEnum + Clone + Send + Sync + 'static> OrAuto<T> {
+    /// The parser of `auto` (which means `auto_help`) and of `T`'s values.
+    pub fn parser(auto_help: &'static str) -> impl TypedValueParser<Value = Self> {
+        let values = std::iter::once(clap::builder::PossibleValue::new("auto").help(auto_help))
+            .chain(T::value_variants().iter().filter_map(T::to_possible_value));
+        clap::builder::PossibleValuesParser::new(values)
+            .map(|name| OrAuto(T::from_str(&name, false).ok()))
+    }
 }
 
 /// `--method NAME`: one of the library's [`Method`] names.

@@ -77,15 +77,6 @@ pub fn flag_of(param: Param) -> Option<&'static str> {
     })
 }
 
-/// The flag that sets a count the adapter limits (`Error::LimitExceeded`'s quantity).
-fn flag_of_limit(what: &str) -> Option<&'static str> {
-    match what {
-        "views" => Some("--views"),
-        "groups" | "splat groups" => Some("--groups"),
-        _ => None,
-    }
-}
-
 /// (library term in an error's advice, the command line's words for it).
 const TERMS: &[(&str, &str)] = &[
     ("Visibility::Exact", "--visibility exact"),
@@ -151,14 +142,18 @@ pub fn describe(error: &anyhow::Error) -> String {
             Some(autostereo::Error::SubpixelWidth { size: [w, h], .. }) => {
                 format!("--size {w}x{h}: {cause}")
             }
-            Some(autostereo::Error::LimitExceeded { what, limit, .. })
-                if what == "image width" || what == "image height" =>
-            {
-                format!("{cause} (--size: at most {limit} pixels a side on this adapter)")
-            }
+            // The frame is as large as `--size` asked for.
+            Some(autostereo::Error::LimitExceeded {
+                param: Some(Param::ImageSize),
+                limit,
+                ..
+            }) => format!("{cause} (--size: at most {limit} pixels a side on this adapter)"),
             // A count a flag sets, over what the adapter takes: the flag and the most it takes.
-            Some(autostereo::Error::LimitExceeded { what, limit, .. }) => match flag_of_limit(what)
-            {
+            Some(autostereo::Error::LimitExceeded {
+                param: Some(param),
+                limit,
+                ..
+            }) => match flag_of(*param) {
                 Some(flag) => format!("{flag}: {cause} (at most {flag} {limit} on this adapter)"),
                 None => cause.to_string(),
             },

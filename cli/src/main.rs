@@ -25,7 +25,7 @@ mod volume_cmd;
 mod volume_render_args;
 mod warp_cmd;
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 
 #[derive(Parser)]
 #[command(
@@ -104,8 +104,11 @@ fn main() -> std::process::ExitCode {
     .init();
     // args_os: a file name that is not UTF-8 must reach the parser, not panic here.
     let args: Vec<std::ffi::OsString> = std::env::args_os().collect();
-    let cli = match Cli::try_parse_from(&args) {
-        Ok(cli) => cli,
+    let parsed = Cli::command()
+        .try_get_matches_from(&args)
+        .and_then(|matches| Ok((Cli::from_arg_matches(&matches)?, matches)));
+    let (cli, matches) = match parsed {
+        Ok(parsed) => parsed,
         Err(e) => match parse_errors::explain(
             &e,
             &args
@@ -127,7 +130,12 @@ fn main() -> std::process::ExitCode {
         Command::Interleave(a) => interleave_cmd::run(a),
         Command::Points(a) => points_cmd::run(a),
         Command::Rgbd(a) => rgbd_cmd::run(a),
-        Command::View(a) => view::run(a),
+        Command::View(a) => view::run(
+            a,
+            matches
+                .subcommand_matches("view")
+                .expect("the view command's matches"),
+        ),
         Command::Views(a) => views_cmd::run(a),
         Command::Volume(a) => volume_cmd::run(a),
     };

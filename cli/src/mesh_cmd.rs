@@ -8,22 +8,8 @@ use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::Method;
 use autostereo::{MeshOptions, RendererOptions};
 
-use crate::args::{gpu, RenderArgs};
+use crate::args::{gpu, OrAuto, RenderArgs};
 use crate::run::{render_and_save, report, run_summary, Rendered};
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum VisibilityArg {
-    /// The fastest exact mode the adapter supports (compute, else exact).
-    Auto,
-    /// Per-subpixel depth by subpixel-resolution rasterisation (any adapter).
-    Exact,
-    /// Per-subpixel depth with 64-bit atomics.
-    Atomic,
-    /// Software (compute-pass) rasterisation of the covering rectangles, 64-bit atomics.
-    Compute,
-    /// The paper's one depth per pixel (approximate).
-    Fast,
-}
 
 #[derive(clap::Args)]
 pub struct MeshArgs {
@@ -41,8 +27,10 @@ pub struct MeshArgs {
 pub struct MeshFlags {
     /// Single-pass visibility: auto | compute | atomic | exact (per-subpixel depth) | fast (the
     /// paper's one depth per pixel); auto = compute where 64-bit atomics exist, else exact.
-    #[arg(long, value_enum, default_value = "auto")]
-    visibility: VisibilityArg,
+    #[arg(long, default_value = "auto", value_parser = OrAuto::<Visibility>::parser(
+        "The fastest exact mode the adapter supports (compute, else exact)"
+    ))]
+    visibility: OrAuto<Visibility>,
     /// Single-pass covering-quad bounds: exact (vd·|1 − fd/d| per vertex) or the paper's printed
     /// formula.
     #[arg(long, value_enum, default_value = "exact")]
@@ -59,7 +47,7 @@ impl MeshFlags {
     /// Refuse a setting the chosen method would ignore, naming the method that uses it.
     pub fn check(&self, method: Method) -> Result<()> {
         let single_pass_only = [
-            ("--visibility", self.visibility != VisibilityArg::Auto),
+            ("--visibility", self.visibility.0.is_some()),
             ("--bounds", self.bounds != CoverBounds::Exact),
         ];
         for (flag, set) in single_pass_only {
@@ -101,13 +89,7 @@ impl MeshFlags {
     /// The mesh options the flags say.
     pub fn options(&self) -> MeshOptions {
         MeshOptions {
-            visibility: match self.visibility {
-                VisibilityArg::Auto => None,
-                VisibilityArg::Exact => Some(Visibility::Exact),
-                VisibilityArg::Atomic => Some(Visibility::Atomic),
-                VisibilityArg::Compute => Some(Visibility::Compute),
-                VisibilityArg::Fast => Some(Visibility::Fast),
-            },
+            visibility: self.visibility.0,
             bounds: self.bounds,
             tile_clip: self.tile_clip,
         }

@@ -6,7 +6,7 @@ use anyhow::{bail, Context, Result};
 use autostereo::render::Method;
 use autostereo::volume::load::{RawSpec, SampleType};
 use autostereo::volume::VolumeScene;
-use autostereo::volume::{phantom, TransferFunction, Volume};
+use autostereo::volume::{generate, TransferFunction, Volume};
 use autostereo::{AnyData, DataKind, LoadOptions, VolumeData, VolumeLoad};
 use glam::Mat4;
 
@@ -45,12 +45,12 @@ pub struct VolumeArgs {
 /// How a volume is loaded and placed: the flags `volume` and `view` share.
 #[derive(clap::Args, Clone, Debug, PartialEq)]
 pub struct VolumeDataArgs {
-    /// Built-in data set used when no file is given.
-    #[arg(long, value_enum, default_value = "head")]
-    builtin: Builtin,
-    /// Voxels per axis of the built-in data set (4 to 1024).
-    #[arg(long, default_value_t = 96, value_parser = clap::value_parser!(u32).range(4..=1024))]
-    builtin_size: u32,
+    /// Built-in data set used when no file is given [default: head].
+    #[arg(long, value_enum)]
+    builtin: Option<Builtin>,
+    /// Voxels per axis of the built-in data set (4 to 1024) [default: 96].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(4..=1024))]
+    builtin_size: Option<u32>,
     /// Transfer function: a preset (ct-skin, ct-bone, mri, ml) or a file of `s r g b a` lines.
     #[arg(long)]
     tf: Option<String>,
@@ -145,9 +145,10 @@ impl VolumeDataArgs {
                      FILE, and none is given"
                 );
             }
-            let (volume, preset) = match self.builtin {
-                Builtin::Head => (phantom::ct_head(self.builtin_size)?, "ct-skin"),
-                Builtin::Ml => (phantom::marschner_lobb(self.builtin_size)?, "ml"),
+            let size = self.builtin_size.unwrap_or(96);
+            let (volume, preset) = match self.builtin.unwrap_or(Builtin::Head) {
+                Builtin::Head => (generate::ct_head(size)?, "ct-skin"),
+                Builtin::Ml => (generate::marschner_lobb(size)?, "ml"),
             };
             let volume = match self.spacing {
                 Some(spacing) => Volume::new(volume.dims, spacing, volume.data)?,
@@ -161,8 +162,7 @@ impl VolumeDataArgs {
             }
             return Ok(data);
         };
-        let defaults = crate::args::defaults_of::<Self>();
-        if self.builtin != defaults.builtin || self.builtin_size != defaults.builtin_size {
+        if self.builtin.is_some() || self.builtin_size.is_some() {
             bail!(
                 "--builtin and --builtin-size choose the data set used without a FILE, and {} is \
                  given",
@@ -262,7 +262,7 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     let frame = args.common.frame(bounds)?;
     let ctx = gpu()?;
     let scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, transfer, model)?;
-    // The settings are checked where the renderer is built (src/volume/settings.rs, the
+    // The settings are checked where the renderer is built (src/volume/options.rs, the
     // renderers' constructors); cli/src/flags.rs names the flags in their errors.
     let options = RendererOptions {
         volume: args.render.options(step),

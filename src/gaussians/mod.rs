@@ -8,11 +8,13 @@
 
 mod generate;
 pub mod load;
+mod options;
 pub(crate) mod passes;
 pub mod scene;
 pub mod sh;
 
-pub use passes::{cpu_order, GaussianOptions, GaussianSplatter, SortOn};
+pub use options::GaussianOptions;
+pub use passes::{cpu_order, GaussianSplatter, SortOn};
 pub use scene::GaussianScene;
 
 use std::path::Path;

@@ -9,8 +9,8 @@ use wgpu::util::DeviceExt;
 use super::Gaussians;
 use crate::camera::Bounds;
 use crate::error::Result;
+use crate::gpu::gpu_buffer::check_storage_bytes;
 use crate::param::Param;
-use crate::render::gpu_buffer::check_storage_bytes;
 
 /// One Gaussian. Keep in sync with `struct Gaussian` in `wgsl/gaussians/shared/gaussian.wgsl`.
 #[repr(C)]

@@ -6,7 +6,7 @@ use wgpu::util::DeviceExt;
 
 use super::Mesh;
 use crate::error::Result;
-use crate::render::gpu_buffer::check_storage_bytes;
+use crate::gpu::gpu_buffer::check_storage_bytes;
 
 /// One vertex. Keep in sync with `VertexIn` in `wgsl/mesh/npass.wgsl`.
 #[repr(C)]

@@ -11,8 +11,8 @@ use super::groups::{self, GroupCount, Grouping};
 use super::Splats;
 use crate::camera::Bounds;
 use crate::error::{Error, Result};
+use crate::gpu::gpu_buffer::check_storage_bytes;
 use crate::param::Param;
-use crate::render::gpu_buffer::check_storage_bytes;
 
 /// One splat. Keep in sync with `struct Splat` in `wgsl/points/shared/splat.wgsl`.
 #[repr(C)]
@@ -66,18 +66,13 @@ impl SplatScene {
                 return Err(Error::invalid(Param::Groups, "0: need at least one group"));
             }
             // With the spare layer a square group image may need (array_layers_for).
-            let layers = crate::render::view_layers::array_layers_for([1, 1], k);
-            if layers > limit {
-                // The most groups whose layers (a spare included) fit the adapter's limit:
-                // the limit reported is that count, the one the caller can give.
-                let most = (1..=limit)
-                    .rev()
-                    .find(|&g| crate::render::view_layers::array_layers_for([1, 1], g) <= limit)
-                    .unwrap_or(0);
+            let most = crate::render::view_layers::most_layers([1, 1], limit);
+            if k > most {
                 return Err(Error::LimitExceeded {
                     what: "splat groups".into(),
                     value: k.into(),
                     limit: most.into(),
+                    param: Some(Param::Groups),
                 });
             }
         }

@@ -2,10 +2,10 @@
 //! an RGBA8 image: the passes that blend hundreds of layers in float (the volume slices, the
 //! Gaussians) end with it (`wgsl/render/accumulation_resolve.wgsl`).
 
-use super::pipeline::{bind_group_layout, draw_fullscreen, fullscreen_pipeline};
-use super::texture::texture_2d_layout_entry;
 use crate::error::Result;
 use crate::frame::FrameBinding;
+use crate::gpu::pipeline::{bind_group_layout, draw_fullscreen, fullscreen_pipeline};
+use crate::gpu::texture::texture_2d_layout_entry;
 use crate::target::SPATIAL_FORMAT;
 
 /// The resolve pipeline and its layout.

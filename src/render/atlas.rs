@@ -2,12 +2,14 @@
 //! method's render target (with its one depth buffer), a quilt read from a file, and the
 //! compositing from either into the spatial image (`wgsl/render/composite_atlas.wgsl`).
 
-use super::pipeline::{bind_group_layout, draw_fullscreen, fullscreen_pipeline, uniform_entry};
 use super::quilt::QuiltLayout;
-use super::texture::{texture_2d, texture_2d_layout_entry, Texture2d};
 use super::view_layers::DEPTH_FORMAT;
 use crate::error::{Error, Result};
 use crate::frame::FrameBinding;
+use crate::gpu::pipeline::{
+    bind_group_layout, draw_fullscreen, fullscreen_pipeline, uniform_entry,
+};
+use crate::gpu::texture::{texture_2d, texture_2d_layout_entry, Texture2d};
 use crate::image_io::RgbImage;
 use crate::param::Param;
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
@@ -36,6 +38,7 @@ impl Atlas {
                 ),
                 value: size[0].max(size[1]).into(),
                 limit: limit.into(),
+                param: None,
             });
         }
         let usage = wgpu::TextureUsages::RENDER_ATTACHMENT

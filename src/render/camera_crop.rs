@@ -4,10 +4,10 @@
 //! (`wgsl/render/camera_crop.wgsl`). One fullscreen pass with constant blending; nothing for
 //! the other models or when the views coincide.
 
-use super::pipeline::{begin_pass, fullscreen_pipeline_to, kept};
 use crate::camera::CameraModel;
 use crate::error::Result;
 use crate::frame::{Frame, FrameBinding};
+use crate::gpu::pipeline::{begin_pass, fullscreen_pipeline_to, kept};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 
 /// The crop pass of the parallel model.

@@ -4,9 +4,9 @@
 
 use bytemuck::{Pod, Zeroable};
 
-use super::pipeline::{draw_fullscreen, fullscreen_pipeline, fullscreen_pipeline_to};
 use crate::error::Result;
 use crate::frame::FrameBinding;
+use crate::gpu::pipeline::{draw_fullscreen, fullscreen_pipeline, fullscreen_pipeline_to};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 
 /// Keep in sync with `struct Composite` in `wgsl/render/composite.wgsl`.
@@ -45,7 +45,7 @@ impl Compositor {
                     },
                     count: None,
                 },
-                super::pipeline::uniform_entry(1, wgpu::ShaderStages::FRAGMENT),
+                crate::gpu::pipeline::uniform_entry(1, wgpu::ShaderStages::FRAGMENT),
             ],
         });
         let module = crate::shader::module(device, "render/composite.wgsl")?;
@@ -81,7 +81,7 @@ impl Compositor {
             panel: target.size(),
             _pad: [0; 2],
         };
-        let constants = super::pass_params::constants_buffer(
+        let constants = crate::gpu::pass_params::constants_buffer(
             device,
             "composite",
             wgpu::BufferUsages::UNIFORM,

@@ -2,9 +2,9 @@
 //! (`wgsl/render/depth_readback.wgsl`): GL has no depth-to-buffer copies, so every adapter
 //! takes this one path.
 
-use super::pipeline::{bind_group_layout, draw_fullscreen, fullscreen_pipeline};
-use super::texture::texture_2d;
 use crate::error::Result;
+use crate::gpu::pipeline::{bind_group_layout, draw_fullscreen, fullscreen_pipeline};
+use crate::gpu::texture::texture_2d;
 
 /// The `Depth32Float` `texture` (with `TEXTURE_BINDING` usage) as f32 texels, rows top-down.
 pub fn read_depth(

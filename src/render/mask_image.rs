@@ -1,11 +1,11 @@
 //! The display mask evaluated by the GPU (WGSL) into a view-index image.
 
-use super::pipeline::{draw_fullscreen, fullscreen_pipeline};
-use super::texture::{texture_2d, Texture2d};
 use crate::display::Display;
 use crate::error::{Error, Result};
 use crate::frame::{frame_bind_group_layout, FrameBinding, FrameUniform};
 use crate::gpu::check_size_2d;
+use crate::gpu::pipeline::{draw_fullscreen, fullscreen_pipeline};
+use crate::gpu::texture::{texture_2d, Texture2d};
 use crate::image_io::RgbImage;
 use crate::param::Param;
 use crate::readback::read_texture_rgba8;

@@ -11,9 +11,8 @@
 //! - [`quilt`], [`atlas`]: the Looking Glass quilt layout, the atlas the tiled methods render
 //!   into (and quilt files are read into), and its compositing.
 //! - [`ViewLayers`]: the per-view (or per-group) layers those passes render into.
-//! - crate-internal: `gpu_buffer` (the one resizable GPU buffer type and the storage-binding
-//!   limit check), `dispatch` (the one compute dispatch splitter), pipeline, texture,
-//!   pass-parameter and specialisation helpers.
+//! - crate-internal: the pipeline cache and specialisation constants the passes build with
+//!   (the low-level GPU helpers below them are [`crate::gpu`]'s).
 //!
 //! The renderers themselves live with their primitive ([`crate::mesh`], [`crate::points`],
 //! [`crate::volume`], [`crate::rgbd`], [`crate::warp`]); [`crate::RendererOptions`] builds any
@@ -26,21 +25,15 @@ pub mod batches;
 pub(crate) mod camera_crop;
 pub(crate) mod composite;
 pub(crate) mod depth_readback;
-pub(crate) mod dispatch;
-pub(crate) mod gpu_buffer;
 pub(crate) mod mask_image;
 mod method;
 pub(crate) mod npass;
 pub(crate) mod output;
-pub(crate) mod pass_params;
-pub(crate) mod pipeline;
 pub(crate) mod pipeline_cache;
 pub mod quilt;
 mod renderer;
 pub(crate) mod specialize;
 pub(crate) mod stereo;
-pub(crate) mod storage_fence;
-pub(crate) mod texture;
 pub(crate) mod view_layers;
 
 pub use bands::Banded;

@@ -6,9 +6,9 @@
 //! values must reach the panel unchanged, so the copy samples nothing (no filtering) and, for
 //! sRGB formats, decodes before the hardware re-encodes.
 
-use super::pipeline::{draw_fullscreen, fullscreen_pipeline_with};
-use super::texture::texture_2d_layout_entry;
 use crate::error::{Error, Result};
+use crate::gpu::pipeline::{draw_fullscreen, fullscreen_pipeline_with};
+use crate::gpu::texture::texture_2d_layout_entry;
 use crate::param::Param;
 use crate::target::SpatialTarget;
 

@@ -175,7 +175,7 @@ impl QuiltLayout {
         device: &wgpu::Device,
         uniform: QuiltUniform,
     ) -> wgpu::Buffer {
-        crate::render::pass_params::constants_buffer(
+        crate::gpu::pass_params::constants_buffer(
             device,
             "quilt layout",
             wgpu::BufferUsages::UNIFORM,

@@ -5,10 +5,12 @@
 
 use bytemuck::{Pod, Zeroable};
 
-use super::pass_params::constants_buffer;
-use super::pipeline::{bind_group_layout, draw_fullscreen, fullscreen_pipeline, uniform_entry};
-use super::texture::texture_2d_layout_entry;
 use crate::error::{Error, Result};
+use crate::gpu::pass_params::constants_buffer;
+use crate::gpu::pipeline::{
+    bind_group_layout, draw_fullscreen, fullscreen_pipeline, uniform_entry,
+};
+use crate::gpu::texture::texture_2d_layout_entry;
 use crate::param::Param;
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 

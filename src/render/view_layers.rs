@@ -2,6 +2,7 @@
 
 use crate::error::{Error, Result};
 use crate::gpu::check_size_2d;
+use crate::param::Param;
 use crate::target::SPATIAL_FORMAT;
 
 /// One RGBA8 layer per view, plus a shared depth buffer.
@@ -38,7 +39,7 @@ impl ViewLayers {
     pub fn new(device: &wgpu::Device, size: [u32; 2], views: u32) -> Result<Self> {
         Self::with_format(
             device,
-            "view layers",
+            ("view layers", Param::Views),
             size,
             views,
             SPATIAL_FORMAT,
@@ -47,24 +48,25 @@ impl ViewLayers {
     }
 
     /// `layers` render-attachment layers of `format` (also sampled, plus `usage`) named
-    /// `what` in errors, and a depth buffer, after checking the limits.
+    /// `what` in errors (the layers' name, and the parameter that counts them), and a depth
+    /// buffer, after checking the limits.
     pub fn with_format(
         device: &wgpu::Device,
-        what: &str,
+        (what, counted_by): (&str, Param),
         size: [u32; 2],
         layers: u32,
         format: wgpu::TextureFormat,
         usage: wgpu::TextureUsages,
     ) -> Result<Self> {
-        let views = layers;
         check_size_2d(device, size[0], size[1])?;
-        let allocated = array_layers_for(size, views);
-        let limit = device.limits().max_texture_array_layers;
-        if allocated > limit {
+        let allocated = array_layers_for(size, layers);
+        let most = most_layers(size, device.limits().max_texture_array_layers);
+        if layers > most {
             return Err(Error::LimitExceeded {
                 what: format!("{what} (texture array layers)"),
-                value: allocated.into(),
-                limit: limit.into(),
+                value: layers.into(),
+                limit: most.into(),
+                param: Some(counted_by),
             });
         }
         let texel = crate::budget::texel_bytes(format);
@@ -108,17 +110,17 @@ impl ViewLayers {
         });
         if let Some(e) = pollster::block_on(scope.pop()) {
             return Err(Error::Gpu {
-                operation: format!("allocating {views} {what} of {}x{}", size[0], size[1]),
+                operation: format!("allocating {layers} {what} of {}x{}", size[0], size[1]),
                 message: e.to_string(),
             });
         }
         let array_view = texture.create_view(&wgpu::TextureViewDescriptor {
             label: Some("view layers"),
             dimension: Some(wgpu::TextureViewDimension::D2Array),
-            array_layer_count: Some(views),
+            array_layer_count: Some(layers),
             ..Default::default()
         });
-        let layer_views = (0..views)
+        let layer_views = (0..layers)
             .map(|i| {
                 texture.create_view(&wgpu::TextureViewDescriptor {
                     label: Some("view layer"),
@@ -224,6 +226,15 @@ pub(crate) fn array_layers_for(size: [u32; 2], layers: u32) -> u32 {
     } else {
         layers
     }
+}
+
+/// The most usable layers of `size` whose array (a spare included: [`array_layers_for`]) fits
+/// an adapter's `limit` of array layers: the count a caller may ask for.
+pub(crate) fn most_layers(size: [u32; 2], limit: u32) -> u32 {
+    (1..=limit)
+        .rev()
+        .find(|&n| array_layers_for(size, n) <= limit)
+        .unwrap_or(0)
 }
 
 #[cfg(test)]

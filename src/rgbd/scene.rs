@@ -3,8 +3,8 @@
 
 use super::RgbdImage;
 use crate::error::{Error, Result};
+use crate::gpu::texture::{texture_2d, Texture2d};
 use crate::param::Param;
-use crate::render::texture::{texture_2d, Texture2d};
 use crate::target::SPATIAL_FORMAT;
 
 /// Format of the nearness texture (0 = far … 1 = near).

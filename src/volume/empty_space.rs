@@ -241,7 +241,7 @@ impl TransparentEntries {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::volume::{phantom, PreintegrationTable};
+    use crate::volume::{generate, PreintegrationTable};
 
     /// Trilinear interpolation of the f16 scalars at texel-space `p`, clamped at the edges as
     /// the GPU sampler does.
@@ -269,7 +269,7 @@ mod tests {
 
     #[test]
     fn every_sample_reads_only_its_cells_entries() {
-        let v = phantom::ct_head(21).unwrap();
+        let v = generate::ct_head(21).unwrap();
         let cells = CellRanges::new(&v);
         assert_eq!(cells.grid, [20, 20, 16]);
         let mut state = 12345u32;
@@ -328,7 +328,7 @@ mod tests {
 
     #[test]
     fn transparent_cells_have_only_zero_table_entries() {
-        let v = phantom::ct_head(48).unwrap();
+        let v = generate::ct_head(48).unwrap();
         let cells = CellRanges::new(&v);
         for name in crate::volume::transfer::PRESETS {
             let tf = TransferFunction::preset(name).unwrap();
@@ -352,7 +352,7 @@ mod tests {
 
     #[test]
     fn an_opaque_or_constant_transfer_function() {
-        let v = phantom::ct_head(16).unwrap();
+        let v = generate::ct_head(16).unwrap();
         let cells = CellRanges::new(&v);
         let opaque = TransferFunction::new(vec![(0.0, [1.0, 1.0, 1.0, 0.01])]).unwrap();
         assert!(cells.distances(&opaque).iter().all(|&d| d == 0));

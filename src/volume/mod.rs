@@ -3,22 +3,22 @@
 //! gradients, transfer functions with pre-integration, and their GPU textures.
 
 pub(crate) mod empty_space;
+pub mod generate;
 mod gradient;
 pub mod load;
+mod options;
 pub mod orientation;
 pub(crate) mod passes;
-pub mod phantom;
 mod scene;
-mod settings;
 pub(crate) mod transfer;
 
 pub use empty_space::{CellRanges, MAX_DISTANCE};
+pub use options::{VolumeOptions, VolumePath, VolumeSettings};
 pub use passes::{AlphaMode, VolumeRaycaster, VolumeSlicer};
 pub use scene::{
     EmptyDistanceTexture, PreintegrationTexture, VolumeScene, VolumeTexture, MAX_EMPTY_STRIDE,
     MAX_SAMPLES_PER_RAY, SUGGESTED_EMPTY_STRIDE, SUGGESTED_SHARE_SAMPLES,
 };
-pub use settings::VolumeSettings;
 pub use transfer::{PreintegrationTable, TransferFunction, PRESETS};
 
 use glam::{Mat3, Vec3};

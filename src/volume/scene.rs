@@ -50,6 +50,7 @@ impl VolumeTexture {
                 ),
                 value: d.into(),
                 limit: limit.into(),
+                param: None,
             });
         }
         let voxels: u64 = volume.dims.iter().map(|&d| u64::from(d)).product();

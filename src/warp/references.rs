@@ -59,7 +59,7 @@ impl ReferenceImages {
         Ok(Self {
             color: ViewLayers::with_format(
                 device,
-                "reference views",
+                ("reference views", Param::References),
                 size,
                 references,
                 SPATIAL_FORMAT,
@@ -67,7 +67,7 @@ impl ReferenceImages {
             )?,
             nearness: ViewLayers::with_format(
                 device,
-                "reference nearness",
+                ("reference nearness", Param::References),
                 size,
                 references,
                 REFERENCE_NEARNESS_FORMAT,

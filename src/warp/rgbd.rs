@@ -7,13 +7,13 @@ use super::uniform::WarpUniform;
 use super::{WarpOptions, WarpPath};
 use crate::error::Result;
 use crate::frame::{Frame, FrameBinding};
-use crate::param::Param;
-use crate::render::npass::NPassHarness;
-use crate::render::pass_params::constants_buffer;
-use crate::render::pipeline::{
+use crate::gpu::pass_params::constants_buffer;
+use crate::gpu::pipeline::{
     bind_group_layout, draw_fullscreen, fullscreen_pipeline, uniform_entry,
 };
-use crate::render::texture::texture_2d_layout_entry;
+use crate::gpu::texture::texture_2d_layout_entry;
+use crate::param::Param;
+use crate::render::npass::NPassHarness;
 use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
 use crate::rgbd::RgbdScene;
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};

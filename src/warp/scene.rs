@@ -8,14 +8,14 @@ use super::uniform::WarpUniform;
 use super::{WarpOptions, WarpPath};
 use crate::error::{Error, Result};
 use crate::frame::{Frame, FrameBinding};
-use crate::param::Param;
-use crate::render::gpu_buffer::GpuBuffer;
-use crate::render::npass::NPassHarness;
-use crate::render::pass_params::constants_buffer;
-use crate::render::pipeline::{
+use crate::gpu::gpu_buffer::GpuBuffer;
+use crate::gpu::pass_params::constants_buffer;
+use crate::gpu::pipeline::{
     bind_group_layout, compilation, draw_fullscreen, fullscreen_pipeline, pipeline_layout,
     storage_entry, uniform_entry,
 };
+use crate::param::Param;
+use crate::render::npass::NPassHarness;
 use crate::render::{begin_prepare, check_target, prepared_state, PreparedState, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 

@@ -33,6 +33,11 @@ pub fn out_dir() -> PathBuf {
     dir
 }
 
+/// `name` in [`out_dir`].
+pub fn out(name: &str) -> PathBuf {
+    out_dir().join(name)
+}
+
 /// Save `image` and an amplified |a − b| diff image under `name` for inspection on failure.
 pub fn save_diff(name: &str, a: &RgbImage, b: &RgbImage) -> PathBuf {
     let dir = out_dir();
@@ -113,7 +118,7 @@ pub fn assert_missing_feature(device: &wgpu::Device, error: &autostereo::Error, 
 /// tests compare on.
 pub fn head_scene() -> (autostereo::volume::VolumeScene, autostereo::camera::Bounds) {
     let ctx = gpu();
-    let head = autostereo::volume::phantom::ct_head(24).unwrap();
+    let head = autostereo::volume::generate::ct_head(24).unwrap();
     let tf = autostereo::volume::TransferFunction::preset("ct-skin").unwrap();
     let scene = autostereo::volume::VolumeScene::new(
         &ctx.device,

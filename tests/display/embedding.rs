@@ -15,7 +15,7 @@ use autostereo::readback::read_texture_rgba8;
 use autostereo::render::{Method, OutputBlit, Renderer};
 use autostereo::target::SpatialTarget;
 use autostereo::volume::VolumeSettings;
-use autostereo::volume::{phantom, TransferFunction};
+use autostereo::volume::{generate, TransferFunction};
 use autostereo::volume::{VolumeRaycaster, VolumeScene};
 use autostereo::Error;
 use autostereo::{AnyRenderer, AnyScene, RendererOptions};
@@ -99,7 +99,7 @@ fn two_frames_with_different_cameras_in_one_encoder_before_one_submit() {
     let mut npass = MeshNPass::new(&common::gpu().device, Method::NPass).unwrap();
     assert_two_frames_in_one_encoder("mesh-n-pass", &mut npass, &buffers, bounds);
 
-    let head = phantom::ct_head(24).unwrap();
+    let head = generate::ct_head(24).unwrap();
     let scene = {
         let ctx = common::gpu();
         let tf = TransferFunction::preset("ct-skin").unwrap();

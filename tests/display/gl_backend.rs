@@ -90,7 +90,7 @@ fn gl_backend_renders_masks_and_meshes() {
 fn gl_backend_runs_the_single_pass_renderers() {
     use autostereo::mesh::{MeshSinglePass, MeshSinglePassOptions, Visibility};
     use autostereo::render::Method;
-    use autostereo::volume::{phantom, TransferFunction};
+    use autostereo::volume::{generate, TransferFunction};
     use autostereo::volume::{AlphaMode, VolumeRaycaster, VolumeScene, VolumeSlicer};
 
     let gl = gl();
@@ -116,7 +116,7 @@ fn gl_backend_runs_the_single_pass_renderers() {
     let diff = compare(&single, &render_npass(&gl, &frame, &mesh)).unwrap();
     assert!(diff.frac_off_2 <= 0.001, "GL mesh single pass: {diff:?}");
 
-    let volume = phantom::ct_head(32).unwrap();
+    let volume = generate::ct_head(32).unwrap();
     let tf = TransferFunction::preset("ct-skin").unwrap();
     let scene =
         VolumeScene::new(device, queue, &volume, tf, glam::Mat4::from_rotation_y(0.5)).unwrap();

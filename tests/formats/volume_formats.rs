@@ -369,7 +369,7 @@ fn broken_headers_are_refused_by_name() {
 fn the_renderers_place_the_voxel_axes() {
     use autostereo::render::Method;
     use autostereo::volume::{TransferFunction, VolumeScene, VolumeSettings};
-    let head = autostereo::volume::phantom::ct_head(24).unwrap();
+    let head = autostereo::volume::generate::ct_head(24).unwrap();
     let [nx, ny, nz] = head.dims;
     // Voxel (i, j, k) of `moved` is voxel (j, i, k) of the head: moved's axis 0 is the head's
     // axis 1 and the other way round.

@@ -17,7 +17,7 @@ use autostereo::points::{GroupCount, PointCloud, SplatScene};
 use autostereo::render::{Method, Renderer};
 use autostereo::target::SpatialTarget;
 use autostereo::volume::VolumeScene;
-use autostereo::volume::{phantom, TransferFunction, Volume};
+use autostereo::volume::{generate, TransferFunction, Volume};
 use autostereo::{AnyRenderer, AnyScene, RendererOptions};
 use glam::{Mat4, Vec3};
 
@@ -76,7 +76,7 @@ fn volume(offset: Vec3, degenerate: bool) -> Primitive {
     let volume = if degenerate {
         Volume::new([1, 1, 1], [1.0; 3], vec![0.9]).unwrap()
     } else {
-        phantom::ct_head(16).unwrap()
+        generate::ct_head(16).unwrap()
     };
     let model = Mat4::from_translation(offset) * Mat4::from_rotation_y(0.5);
     let b = volume.bounds();

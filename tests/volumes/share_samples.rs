@@ -6,7 +6,7 @@ use crate::common;
 
 use autostereo::image_io::compare;
 use autostereo::render::Method;
-use autostereo::volume::phantom;
+use autostereo::volume::generate;
 use autostereo::volume::VolumeRaycaster;
 use autostereo::volume::VolumeSettings;
 
@@ -26,7 +26,7 @@ const DISPLAYS: [&str; 2] = ["hubner8", "slanted:45,7.5,1/6,0.2"];
 
 #[test]
 fn tau_zero_is_the_exact_single_pass_bit_for_bit() {
-    let head = phantom::ct_head(40).unwrap();
+    let head = generate::ct_head(40).unwrap();
     let scene = common::turned_volume(&head, "ct-skin");
     for spec in DISPLAYS {
         let frame = common::frame(head.bounds(), spec, 0.06, 1.0, SIZE);
@@ -55,7 +55,7 @@ fn tau_zero_is_the_exact_single_pass_bit_for_bit() {
 /// the rounding of compositing the shared range in one piece.
 #[test]
 fn coinciding_rays_share_everything_and_change_nothing_visible() {
-    let head = phantom::ct_head(40).unwrap();
+    let head = generate::ct_head(40).unwrap();
     let scene = common::turned_volume(&head, "ct-skin");
     let frame = common::frame(head.bounds(), "hubner8", 0.0, 1.0, SIZE);
     let exact = common::render_volume(&scene, &frame, Method::SinglePass, sharing(0.0, true));
@@ -70,8 +70,8 @@ fn coinciding_rays_share_everything_and_change_nothing_visible() {
 /// grows with the tolerance (TAU = 2: 40.2 and 35.8 dB).
 #[test]
 fn the_error_at_the_default_tolerance_stays_within_its_measured_bound() {
-    let head = phantom::ct_head(48).unwrap();
-    let ml = phantom::marschner_lobb(40).unwrap();
+    let head = generate::ct_head(48).unwrap();
+    let ml = generate::marschner_lobb(40).unwrap();
     for (name, volume, tf, min_db, max_off) in [
         ("head", &head, "ct-skin", 43.5, 0.04),
         ("ml", &ml, "ml", 39.5, 0.06),

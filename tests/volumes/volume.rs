@@ -9,7 +9,7 @@ use autostereo::image_io::{compare, RgbImage};
 use autostereo::render::{Method, Renderer};
 use autostereo::target::SpatialTarget;
 use autostereo::volume::VolumeSettings;
-use autostereo::volume::{phantom, TransferFunction, Volume};
+use autostereo::volume::{generate, TransferFunction, Volume};
 use autostereo::volume::{AlphaMode, VolumeRaycaster, VolumeScene, VolumeSlicer};
 use glam::Mat4;
 
@@ -66,8 +66,8 @@ fn lit(image: &RgbImage) -> usize {
 
 #[test]
 fn single_pass_matches_npass_rotated_with_focal_plane_in_front_inside_and_behind() {
-    let head = phantom::ct_head(40).unwrap();
-    let ml = phantom::marschner_lobb(32).unwrap();
+    let head = generate::ct_head(40).unwrap();
+    let ml = generate::marschner_lobb(32).unwrap();
     let rotate = Mat4::from_rotation_y(0.6) * Mat4::from_rotation_x(0.35);
     for (name, volume, tf) in [("head", &head, "ct-skin"), ("ml", &ml, "ml")] {
         let scene = scene(volume, tf, rotate);
@@ -106,8 +106,8 @@ fn single_pass_matches_npass_rotated_with_focal_plane_in_front_inside_and_behind
 /// steps from 0 to 0.9 (so a wrongly skipped segment cannot hide below 8-bit rounding).
 #[test]
 fn empty_space_skipping_changes_no_pixel() {
-    let head = phantom::ct_head(41).unwrap(); // 41×41×33: odd sizes
-    let ml = phantom::marschner_lobb(32).unwrap();
+    let head = generate::ct_head(41).unwrap(); // 41×41×33: odd sizes
+    let ml = generate::marschner_lobb(32).unwrap();
     let blob = blob_volume([47, 39, 35], [30.0, 14.0, 20.0], 40.0);
     // One and two voxels thin along an axis: a single cell across it.
     let flat = blob_volume([30, 26, 2], [20.0, 9.0, 0.5], 30.0);
@@ -199,7 +199,7 @@ fn blob_volume(dims: [u32; 3], centre: [f32; 3], radius2: f32) -> Volume {
 
 #[test]
 fn zero_separation_equals_single_view() {
-    let head = phantom::ct_head(32).unwrap();
+    let head = generate::ct_head(32).unwrap();
     let scene = scene(&head, "ct-skin", Mat4::from_rotation_z(0.3));
     let frame = frame(&head, "hubner8", 0.0, 1.0);
     let single = render(&scene, &frame, Method::SinglePass);
@@ -235,8 +235,8 @@ fn tiny_and_flat_volumes_render_without_garbage() {
 /// and bounded.
 #[test]
 fn slice_path_matches_npass_with_exact_alpha_and_bounds_the_paper_alpha() {
-    let head = phantom::ct_head(40).unwrap();
-    let ml = phantom::marschner_lobb(32).unwrap();
+    let head = generate::ct_head(40).unwrap();
+    let ml = generate::marschner_lobb(32).unwrap();
     let rotate = Mat4::from_rotation_y(-0.5) * Mat4::from_rotation_x(0.3);
     for (name, volume, tf) in [("head", &head, "ct-skin"), ("ml", &ml, "ml")] {
         let scene = scene(volume, tf, rotate);

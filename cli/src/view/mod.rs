@@ -13,8 +13,6 @@ use autostereo::render::Method;
 
 use crate::args::{check_output, parse_size, CameraArgs, DisplayArgs};
 
-pub use scene::KindArg;
-
 /// What `--exercise` switches.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum Switch {
@@ -71,7 +69,7 @@ pub struct ViewArgs {
     file: Option<PathBuf>,
     /// What the file holds, where its extension does not say.
     #[arg(long, value_enum, help_heading = "Input")]
-    kind: Option<KindArg>,
+    kind: Option<autostereo::DataKind>,
     #[command(flatten)]
     display: DisplayArgs,
     #[command(flatten)]
@@ -178,7 +176,8 @@ impl ViewArgs {
     }
 }
 
-pub fn run(args: ViewArgs) -> Result<()> {
+/// `given`: the `view` command's matches (which flags were typed, not defaulted).
+pub fn run(args: ViewArgs, given: &clap::ArgMatches) -> Result<()> {
     if let Some(path) = &args.screenshot {
         check_output(path)?;
     }
@@ -188,6 +187,6 @@ pub fn run(args: ViewArgs) -> Result<()> {
     args.memory.apply();
     // Fail on a bad display or flags of another primitive before opening a window.
     args.display.display()?;
-    args.scene_flags().check()?;
+    args.scene_flags().check(given)?;
     app::run(args)
 }

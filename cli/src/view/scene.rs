@@ -14,63 +14,15 @@ use crate::mesh_cmd::MeshFlags;
 use crate::points_cmd::PointFlags;
 use crate::volume_cmd::{VolumeDataArgs, VolumeRenderArgs};
 
-/// What a file holds.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum KindArg {
-    /// Triangles (OBJ, PLY with faces, STL, glTF).
-    Mesh,
-    /// Splats (PLY, LAS/LAZ, or an OBJ's vertices).
-    Points,
-    /// A volume (every format of `autostereo volume`; the built-in head without a file).
-    Volume,
-    /// 3D Gaussian splats (graphdeco PLY, `.splat`, `.spz`).
-    Gaussians,
-}
-
-impl KindArg {
-    /// Its name in messages and `--kind`.
-    pub fn name(self) -> &'static str {
-        match self {
-            KindArg::Mesh => "mesh",
-            KindArg::Points => "points",
-            KindArg::Volume => "volume",
-            KindArg::Gaussians => "gaussians",
-        }
-    }
-
-    /// The library's kind.
-    pub fn data_kind(self) -> DataKind {
-        match self {
-            KindArg::Mesh => DataKind::Mesh,
-            KindArg::Points => DataKind::Points,
-            KindArg::Volume => DataKind::Volume,
-            KindArg::Gaussians => DataKind::Gaussians,
-        }
-    }
-
-    /// What a scene of this kind is, in a sentence.
-    fn noun(self) -> &'static str {
-        match self {
-            KindArg::Mesh => "a mesh",
-            KindArg::Points => "a point cloud",
-            KindArg::Volume => "a volume",
-            KindArg::Gaussians => "Gaussian splats",
-        }
-    }
-
-    /// The kind of data the file holds (autostereo::formats::kind: its first bytes, else
-    /// its extension; a PLY with faces is a mesh).
-    pub fn of(path: &Path) -> Result<Self> {
-        Ok(match autostereo::formats::kind(path)? {
-            (_, DataKind::Mesh) => KindArg::Mesh,
-            (_, DataKind::Points) => KindArg::Points,
-            (_, DataKind::Volume) => KindArg::Volume,
-            (format, DataKind::Image) => bail!(
-                "{}: {format} is an image; `autostereo rgbd` or `autostereo interleave` reads it",
-                path.display()
-            ),
-            (_, DataKind::Gaussians) => KindArg::Gaussians,
-        })
+/// The kind of scene `path` holds (autostereo::formats::kind: its first bytes, else its
+/// extension; a PLY with faces is a mesh); an image is no scene.
+fn kind_of(path: &Path) -> Result<DataKind> {
+    match autostereo::formats::kind(path)? {
+        (format, DataKind::Image) => bail!(
+            "{}: {format} is an image; `autostereo rgbd` or `autostereo interleave` reads it",
+            path.display()
+        ),
+        (_, kind) => Ok(kind),
     }
 }
 
@@ -98,7 +50,7 @@ impl ViewScene {
 /// definitions: cli/src/{mesh,points,volume,gaussians}_cmd.rs).
 pub struct SceneFlags<'a> {
     pub file: Option<&'a Path>,
-    pub kind: Option<KindArg>,
+    pub kind: Option<DataKind>,
     pub mesh: &'a MeshFlags,
     pub points: &'a PointFlags,
     pub volume_data: &'a VolumeDataArgs,
@@ -108,67 +60,47 @@ pub struct SceneFlags<'a> {
 
 impl SceneFlags<'_> {
     /// The kind of scene these flags load.
-    pub fn kind(&self) -> Result<KindArg> {
+    pub fn kind(&self) -> Result<DataKind> {
         Ok(match (self.file, self.kind) {
             (_, Some(k)) => k,
-            (Some(path), None) => KindArg::of(path)?,
-            (None, None) => KindArg::Volume,
+            (Some(path), None) => kind_of(path)?,
+            (None, None) => DataKind::Volume,
         })
     }
 
     /// Refuse flags of a primitive the scene is not (they would be ignored silently).
-    pub fn check(&self) -> Result<()> {
+    /// `given`: the `view` command's matches, which tell a flag typed from its default.
+    pub fn check(&self, given: &clap::ArgMatches) -> Result<()> {
+        use crate::args::flags_given;
         let kind = self.kind()?;
-        use crate::args::{defaults_of, flags_given_of};
-        // The flags' names are looked up only for the refusal.
-        fn volume_flags() -> Vec<String> {
-            [
-                flags_given_of::<VolumeDataArgs>(),
-                flags_given_of::<VolumeRenderArgs>(),
-            ]
-            .concat()
-        }
-        type FlagsGiven = fn() -> Vec<String>;
-        let given: [(KindArg, bool, FlagsGiven); 4] = [
+        let groups = [
+            (DataKind::Mesh, flags_given::<MeshFlags>(given)),
+            (DataKind::Points, flags_given::<PointFlags>(given)),
             (
-                KindArg::Mesh,
-                *self.mesh != defaults_of::<MeshFlags>(),
-                flags_given_of::<MeshFlags>,
+                DataKind::Volume,
+                [
+                    flags_given::<VolumeDataArgs>(given),
+                    flags_given::<VolumeRenderArgs>(given),
+                ]
+                .concat(),
             ),
-            (
-                KindArg::Points,
-                *self.points != defaults_of::<PointFlags>(),
-                flags_given_of::<PointFlags>,
-            ),
-            (
-                KindArg::Volume,
-                *self.volume_data != defaults_of::<VolumeDataArgs>()
-                    || *self.volume_render != defaults_of::<VolumeRenderArgs>(),
-                volume_flags,
-            ),
-            (
-                KindArg::Gaussians,
-                *self.gaussians != defaults_of::<GaussianFlags>(),
-                flags_given_of::<GaussianFlags>,
-            ),
+            (DataKind::Gaussians, flags_given::<GaussianFlags>(given)),
         ];
-        for (other, set, flags) in given {
-            if set && other != kind {
-                let what = self
-                    .file
-                    .map_or_else(|| "the built-in scene".into(), |p| p.display().to_string());
-                let named = match flags().first() {
-                    Some(flag) => format!("{flag} is a flag of `autostereo {}`", other.name()),
-                    None => format!("flags of `autostereo {}` were given", other.name()),
-                };
-                bail!(
-                    "{named}, but {what} is {}: it applies to {} only (`--kind {}` or such a \
-                     file)",
-                    kind.noun(),
-                    other.noun(),
-                    other.name(),
-                );
-            }
+        for (other, flags) in groups {
+            let Some(flag) = flags.first().filter(|_| other != kind) else {
+                continue;
+            };
+            let what = self
+                .file
+                .map_or_else(|| "the built-in scene".into(), |p| p.display().to_string());
+            bail!(
+                "{flag} is a flag of `autostereo {}`, but {what} is {}: it applies to {} only \
+                 (`--kind {}` or such a file)",
+                other.name(),
+                kind.article(),
+                other.article(),
+                other.name(),
+            );
         }
         Ok(())
     }
@@ -176,35 +108,36 @@ impl SceneFlags<'_> {
 
 /// Load the scene the flags say: a file by the library's [`autostereo::load`]; no file: the
 /// built-in volume (or the kind's generated scene).
+/// `flags` are checked (`SceneFlags::check`) before the window opens.
 pub fn load(ctx: &autostereo::gpu::GpuContext, flags: &SceneFlags) -> Result<ViewScene> {
-    flags.check()?;
     let kind = flags.kind()?;
     let file = flags.file;
     let name = file.map_or_else(
         || format!("built-in {}", kind.name()),
         |p| p.display().to_string(),
     );
-    if kind == KindArg::Points {
+    if kind == DataKind::Points {
         flags.points.check_values()?;
     }
     let data = match (file, kind) {
         (Some(path), _) => {
             let options = LoadOptions {
-                kind: Some(kind.data_kind()),
+                kind: Some(kind),
                 mesh: flags.mesh.load_options(),
                 points: flags.points.load_options(),
                 volume: flags.volume_data.volume_load()?,
             };
             autostereo::load(path, &options)?
         }
-        (None, KindArg::Mesh) => AnyData::Mesh(flags.mesh.load(None)?),
-        (None, KindArg::Points) => AnyData::Points(
+        (None, DataKind::Mesh) => AnyData::Mesh(flags.mesh.load(None)?),
+        (None, DataKind::Points) => AnyData::Points(
             flags
                 .points
                 .complete(&autostereo::points::PointCloud::torus_scene())?,
         ),
-        (None, KindArg::Volume) => AnyData::Volume(Box::new(flags.volume_data.load(None)?)),
-        (None, KindArg::Gaussians) => AnyData::Gaussians(flags.gaussians.load(None)?),
+        (None, DataKind::Volume) => AnyData::Volume(Box::new(flags.volume_data.load(None)?)),
+        (None, DataKind::Gaussians) => AnyData::Gaussians(flags.gaussians.load(None)?),
+        (None, DataKind::Image) => bail!("an image is no scene to view (`--kind` offers none)"),
     };
     let Some(bounds) = data.bounds() else {
         bail!("{name}: the mesh has no vertices");

@@ -8,7 +8,7 @@ use crate::common;
 use autostereo::image_io::compare;
 use autostereo::render::Method;
 use autostereo::volume::VolumeSettings;
-use autostereo::volume::{phantom, TransferFunction, Volume, SUGGESTED_EMPTY_STRIDE};
+use autostereo::volume::{generate, TransferFunction, Volume, SUGGESTED_EMPTY_STRIDE};
 use autostereo::volume::{VolumeRaycaster, VolumeScene};
 use glam::Mat4;
 
@@ -96,7 +96,7 @@ fn a_sheet_thinner_than_a_probe_can_be_missed() {
 /// N-pass at every stride, bit for bit, as at the exact stride.
 #[test]
 fn single_pass_equals_the_npass_at_every_stride() {
-    let head = phantom::ct_head(40).unwrap();
+    let head = generate::ct_head(40).unwrap();
     let rotate = Mat4::from_rotation_y(0.5) * Mat4::from_rotation_x(0.3);
     let scene = scene(&head, TransferFunction::preset("ct-skin").unwrap(), rotate);
     for spec in DISPLAYS {
@@ -118,8 +118,8 @@ fn single_pass_equals_the_npass_at_every_stride() {
 /// costs on thin features, not on typical data.
 #[test]
 fn the_error_at_the_suggested_stride_stays_within_its_measured_bound() {
-    let head = phantom::ct_head(48).unwrap();
-    let ml = phantom::marschner_lobb(40).unwrap();
+    let head = generate::ct_head(48).unwrap();
+    let ml = generate::marschner_lobb(40).unwrap();
     let rotate = Mat4::from_rotation_y(0.5) * Mat4::from_rotation_x(0.3);
     for (name, volume, tf, min_db, max_off) in [
         ("head", &head, "ct-skin", 45.5, 0.007),

@@ -9,7 +9,7 @@ use crate::common;
 
 use autostereo::image_io::compare;
 use autostereo::render::Method;
-use autostereo::volume::phantom;
+use autostereo::volume::generate;
 use autostereo::volume::VolumeSettings;
 
 const SIZE: [u32; 2] = [96, 80];
@@ -26,7 +26,7 @@ fn at(step: f32, stride: u32) -> VolumeSettings {
 
 #[test]
 fn single_pass_equals_the_npass_at_every_step() {
-    let head = phantom::ct_head(32).unwrap();
+    let head = generate::ct_head(32).unwrap();
     let scene = common::turned_volume(&head, "ct-skin");
     for spec in DISPLAYS {
         let frame = common::frame(head.bounds(), spec, 0.06, 1.0, SIZE);
@@ -67,8 +67,8 @@ struct Bound {
 /// costs on small features, not on typical data. The error grows with the step.
 #[test]
 fn the_error_of_a_coarser_step_stays_within_its_measured_bound() {
-    let head = phantom::ct_head(48).unwrap();
-    let ml = phantom::marschner_lobb(40).unwrap();
+    let head = generate::ct_head(48).unwrap();
+    let ml = generate::marschner_lobb(40).unwrap();
     let bound = |step, stride, min_db, max_off| Bound {
         step,
         stride,

@@ -2,7 +2,6 @@
 
 use crate::common;
 
-use std::path::PathBuf;
 use std::process::Command;
 
 use autostereo::mesh::Visibility;
@@ -26,11 +25,7 @@ fn run(args: &[&str]) -> String {
     stdout
 }
 
-fn out_path(name: &str) -> PathBuf {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../target/test-output");
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
-}
+use crate::common::out as out_path;
 
 #[test]
 fn mesh_json_reports_the_contract_fields_and_compares_with_npass() {

@@ -16,9 +16,7 @@ use autostereo::image_io::{compare, RgbImage};
 
 const SIZE: &str = "64x48";
 
-fn out(name: &str) -> PathBuf {
-    common::out_dir().join(name)
-}
+use crate::common::out;
 
 /// The test scene as `gaussians_{tag}.ply` (each test its own file: they run in parallel).
 fn scene(tag: &str) -> PathBuf {
@@ -251,7 +249,7 @@ fn methods_cameras_and_flags_without_a_gaussian_path_are_refused() {
         ),
         (
             &["view", "--kind", "gaussians", "--tf", "mri"][..],
-            "--tf is a flag of `autostereo volume`, but the built-in scene is Gaussian splats",
+            "--tf is a flag of `autostereo volume`, but the built-in scene is 3D Gaussian splats",
         ),
         (
             &["view", "--kind", "mesh", "--sort", "cpu"][..],

@@ -2,9 +2,7 @@
 //! Oracles: the CPU mask (each subpixel = its view's tile) and the N-pass's own spatial image
 //! from the same views; bad quilts refused by name.
 
-use crate::common;
-
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 
 use autostereo::display::Display;
@@ -22,9 +20,7 @@ fn run(args: &[&str]) -> (bool, String) {
     )
 }
 
-fn out(name: &str) -> PathBuf {
-    common::out_dir().join(name)
-}
+use crate::common::out;
 
 /// `views` as a quilt of `layout`.
 fn quilt_of(views: &[RgbImage], layout: &QuiltLayout) -> RgbImage {

@@ -6,15 +6,12 @@
 use crate::common;
 
 use common::cli_out as run;
-use std::path::PathBuf;
 
 fn sample(name: &str) -> String {
     format!("{}/../data/{name}", env!("CARGO_MANIFEST_DIR"))
 }
 
-fn out(name: &str) -> PathBuf {
-    common::out_dir().join(name)
-}
+use crate::common::out;
 
 /// The run's JSON line.
 fn json(args: &[&str]) -> serde_json::Value {

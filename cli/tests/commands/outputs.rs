@@ -5,8 +5,6 @@
 
 use crate::common;
 
-use std::path::PathBuf;
-
 use autostereo::image_io::RgbImage;
 use autostereo::render::quilt::QuiltLayout;
 
@@ -15,9 +13,7 @@ const H: u32 = 64;
 /// The outermost views: the most different pair, so a swapped pair cannot pass.
 const EYES: [u32; 2] = [0, 7];
 
-fn out(name: &str) -> PathBuf {
-    common::out_dir().join(name)
-}
+use crate::common::out;
 
 /// Render the built-in mesh scene with `extra` flags and `--out` `name`.
 fn run(name: &str, size: [u32; 2], extra: &[&str]) {

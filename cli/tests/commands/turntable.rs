@@ -13,9 +13,7 @@ use autostereo::render::quilt::QuiltLayout;
 const W: u32 = 96;
 const H: u32 = 64;
 
-fn out(name: &str) -> PathBuf {
-    common::out_dir().join(name)
-}
+use crate::common::out;
 
 /// An axis-aligned box as OBJ text, its vertices numbered from `first`.
 fn cuboid(min: [f32; 3], max: [f32; 3], first: u32) -> String {

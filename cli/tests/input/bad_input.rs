@@ -138,7 +138,7 @@ fn looking_glass_calibration_giving_an_unusable_lens_is_an_error() {
 #[test]
 fn volumes_and_transfer_functions_with_inconsistent_fields_are_errors() {
     use autostereo::volume::VolumeScene;
-    use autostereo::volume::{phantom, PreintegrationTable, TransferFunction};
+    use autostereo::volume::{generate, PreintegrationTable, TransferFunction};
     use glam::Mat4;
     let empty_tf = TransferFunction { points: vec![] };
     assert_eq!(empty_tf.eval(0.5), [0.0; 4]);
@@ -150,12 +150,12 @@ fn volumes_and_transfer_functions_with_inconsistent_fields_are_errors() {
     // Scalars outside 0..1 (the GPU holds them as f16: 1e6 would be inf there).
     let err = autostereo::volume::Volume::new([2, 1, 1], [1.0; 3], vec![0.5, 1e6]).unwrap_err();
     assert!(err.to_string().contains("voxel 1 is 1000000"), "{err}");
-    let mut volume = phantom::ct_head(8).unwrap();
+    let mut volume = generate::ct_head(8).unwrap();
     volume.data.truncate(10);
     assert!(volume.validate().is_err());
     let ctx = common::gpu();
     let ct_skin = TransferFunction::preset("ct-skin").unwrap();
-    let head = phantom::ct_head(8).unwrap();
+    let head = generate::ct_head(8).unwrap();
     for (volume, tf, expect) in [
         (&volume, ct_skin, "values for dimensions"),
         (&head, empty_tf, "control point"),

@@ -11,15 +11,13 @@ mod memory;
 mod presented;
 mod previews;
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use autostereo::image_io::{compare, RgbImage};
 
 use common::xvfb::{headless, xvfb_or_clear_error, Xvfb};
 
-fn out(name: &str) -> PathBuf {
-    common::out_dir().join(name)
-}
+use crate::common::out;
 
 /// ≥ 99.9 % of subpixels within 2/255 of the headless render.
 fn assert_same(name: &str, shot: &Path, headless: &Path) {

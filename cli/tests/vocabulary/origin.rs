@@ -6,15 +6,12 @@
 
 use crate::common;
 
-use std::path::PathBuf;
 use std::process::Command;
 
 use autostereo::image_io::{compare, RgbImage};
 use common::xvfb::{headless, xvfb_or_clear_error};
 
-fn out(name: &str) -> PathBuf {
-    common::out_dir().join(name)
-}
+use crate::common::out;
 
 /// `autostereo mask` of `size` with `extra` flags, read back with the `image` crate.
 fn mask(name: &str, size: &str, extra: &[&str]) -> image::RgbImage {

@@ -13,23 +13,24 @@ pub use sort::{cpu_order, SortOn};
 use bytemuck::{Pod, Zeroable};
 
 use super::scene::GaussianScene;
+use super::GaussianOptions;
 use crate::camera::CameraModel;
 use crate::error::{Error, Result};
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
+use crate::gpu::gpu_buffer::GpuBuffer;
+use crate::gpu::pass_params::PassParams;
+use crate::gpu::pipeline::{
+    begin_pass, bind_group_layout, cleared, compilation, over_per_channel_pipeline,
+    pipeline_layout, storage_entry,
+};
+use crate::gpu::texture::{texture_2d_reusing, Texture2d};
 use crate::param::Param;
 use crate::render::accumulation::AccumulationResolve;
 use crate::render::atlas::{Atlas, AtlasCompositor, TileSampling};
 use crate::render::composite::Compositor;
-use crate::render::gpu_buffer::GpuBuffer;
-use crate::render::pass_params::PassParams;
-use crate::render::pipeline::{
-    begin_pass, bind_group_layout, cleared, compilation, over_per_channel_pipeline,
-    pipeline_layout, storage_entry,
-};
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::quilt::QuiltLayout;
 use crate::render::specialize::Specialization;
-use crate::render::texture::{texture_2d_reusing, Texture2d};
 use crate::render::view_layers::ViewLayers;
 use crate::render::{begin_prepare, prepared_state, Made as _, Method, Prepared, Renderer};
 use crate::target::SpatialTarget;
@@ -44,27 +45,6 @@ fn color_table_bytes(scene: &GaussianScene, frame: &Frame) -> u64 {
 
 /// Accumulation format: float, so thousands of blended Gaussians don't quantise.
 const ACCUMULATION_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
-
-/// How the Gaussian renderers work where there is a choice (each choice renders the same
-/// image; they differ in speed and memory).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct GaussianOptions {
-    /// Where the depth sort runs.
-    pub sort: SortOn,
-    /// The single pass evaluates each Gaussian's SH once per view into a table (8 bytes per
-    /// Gaussian and view) and its subpixels read it; `false`, or where the table would exceed
-    /// a storage binding, every subpixel evaluates the SH itself.
-    pub color_table: bool,
-}
-
-impl Default for GaussianOptions {
-    fn default() -> Self {
-        Self {
-            sort: SortOn::Gpu,
-            color_table: true,
-        }
-    }
-}
 
 /// Per-pass constants. Keep in sync with `struct GaussianParams` in
 /// `wgsl/gaussians/shared/gaussian.wgsl`.
@@ -278,7 +258,7 @@ impl GaussianSplatter {
             count: scene.count,
             color_table: self.method == Method::SinglePass
                 && self.color_table
-                && table_bytes <= crate::render::gpu_buffer::storage_binding_limit(device),
+                && table_bytes <= crate::gpu::gpu_buffer::storage_binding_limit(device),
         }
     }
 

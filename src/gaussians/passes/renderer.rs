@@ -58,7 +58,7 @@ impl Renderer<GaussianScene> for GaussianSplatter {
                         drop(last);
                         ViewLayers::with_format(
                             device,
-                            "Gaussian view layers",
+                            ("Gaussian view layers", Param::Views),
                             key.view_size,
                             frame.camera.views,
                             ACCUMULATION_FORMAT,

@@ -10,9 +10,9 @@ use bytemuck::{Pod, Zeroable};
 use super::super::scene::GaussianScene;
 use crate::error::Result;
 use crate::frame::{Frame, FrameBinding};
-use crate::render::gpu_buffer::GpuBuffer;
-use crate::render::pass_params::{constants_buffer, PassParams};
-use crate::render::pipeline::{bind_group_layout, compilation, pipeline_layout, storage_entry};
+use crate::gpu::gpu_buffer::GpuBuffer;
+use crate::gpu::pass_params::{constants_buffer, PassParams};
+use crate::gpu::pipeline::{bind_group_layout, compilation, pipeline_layout, storage_entry};
 
 /// Threads per workgroup of both sort stages.
 const WORKGROUP: u32 = 256;

@@ -6,12 +6,12 @@
 use crate::camera::ViewUniform;
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
+use crate::gpu::pass_params::PassParams;
+use crate::gpu::pipeline::{begin_pass_to, cleared, PassTargets};
+use crate::gpu::texture::{cached_texture_2d, Texture2d};
 use crate::mesh::MeshBuffers;
 use crate::param::Param;
 use crate::render::npass::NPassHarness;
-use crate::render::pass_params::PassParams;
-use crate::render::pipeline::{begin_pass_to, cleared, PassTargets};
-use crate::render::texture::{cached_texture_2d, Texture2d};
 use crate::render::view_layers::{nearest_depth_test, DEPTH_FORMAT};
 use crate::render::Method;
 use crate::render::ViewLayers;
@@ -166,7 +166,7 @@ impl MeshNPass {
         self.write_views(device, &offsets, |vd| camera.view_uniform(vd))
     }
 
-    /// This frame's view uniforms (`src/render/pass_params.rs`) and their bind group, which
+    /// This frame's view uniforms (`src/gpu/pass_params.rs`) and their bind group, which
     /// every draw of the frame takes.
     fn write_views(
         &mut self,

@@ -17,12 +17,10 @@ use super::prepared::{run_batches, PreparedSplats};
 use super::PointSplatter;
 use crate::error::Result;
 use crate::frame::Frame;
+use crate::gpu::dispatch::dispatch_2d;
+use crate::gpu::pipeline::{begin_pass, begin_pass_to, cleared, kept, multiview_mask, PassTargets};
 use crate::points::SplatScene;
 use crate::render::atlas::{Atlas, TileSampling};
-use crate::render::dispatch::dispatch_2d;
-use crate::render::pipeline::{
-    begin_pass, begin_pass_to, cleared, kept, multiview_mask, PassTargets,
-};
 use crate::render::specialize::Specialization;
 use crate::render::view_layers::{layer_range, DepthArray};
 use crate::render::Made;

@@ -5,7 +5,8 @@ use std::ops::Range;
 
 use super::pipelines::{PIXEL_FORMAT, SUBPIXEL_FORMAT};
 use crate::error::Result;
-use crate::render::pipeline::{begin_pass, cleared};
+use crate::gpu::pipeline::{begin_pass, cleared};
+use crate::param::Param;
 use crate::render::ViewLayers;
 
 pub(super) struct GroupImages {
@@ -51,7 +52,7 @@ impl GroupImages {
         };
         let layers = ViewLayers::with_format(
             device,
-            "splat group images",
+            ("splat group images", Param::Groups),
             size,
             groups,
             format,

@@ -4,8 +4,8 @@ use bytemuck::{Pod, Zeroable};
 
 use crate::error::Result;
 use crate::frame::frame_bind_group_layout;
-use crate::render::pass_params::PassParams;
-use crate::render::pipeline::{
+use crate::gpu::pass_params::PassParams;
+use crate::gpu::pipeline::{
     bind_group_layout, compilation, fullscreen_pipeline_to, multiview_mask, pipeline_layout,
     storage_entry,
 };

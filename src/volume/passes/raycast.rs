@@ -13,10 +13,10 @@ pub(crate) use prepared::{PreparedFor, VolumeEncode};
 use super::resources::{VolumeParams, VolumeResources};
 use crate::error::{Error, Result};
 use crate::frame::Frame;
+use crate::gpu::pipeline::{bind_group_layout, compilation, uniform_entry};
 use crate::param::Param;
 use crate::render::atlas::{Atlas, AtlasCompositor, TileSampling};
 use crate::render::npass::NPassHarness;
-use crate::render::pipeline::{bind_group_layout, compilation, uniform_entry};
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::quilt::QuiltLayout;
 use crate::render::specialize::Specialization;
@@ -410,7 +410,7 @@ impl Renderer<VolumeScene> for VolumeRaycaster {
 mod tests {
     use super::*;
     use crate::gpu::{GpuContext, GpuOptions};
-    use crate::volume::phantom;
+    use crate::volume::generate;
     use crate::volume::TransferFunction;
     use crate::volume::VolumeSettings;
     use glam::Mat4;
@@ -421,7 +421,7 @@ mod tests {
     #[test]
     fn falsified_cell_ranges_skip_everything() {
         let ctx = GpuContext::new(&GpuOptions::default()).expect("a GPU adapter (CI: lavapipe)");
-        let head = phantom::ct_head(24).unwrap();
+        let head = generate::ct_head(24).unwrap();
         let tf = TransferFunction::preset("ct-skin").unwrap();
         let mut scene =
             VolumeScene::new(&ctx.device, &ctx.queue, &head, tf, Mat4::IDENTITY).unwrap();

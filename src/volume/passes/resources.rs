@@ -8,7 +8,7 @@ use glam::{Mat3, Mat4, Vec3};
 
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
-use crate::render::pass_params::PassParams;
+use crate::gpu::pass_params::PassParams;
 use crate::render::Made;
 use crate::volume::{
     EmptyDistanceTexture, PreintegrationTable, PreintegrationTexture, TransferFunction,

@@ -10,12 +10,12 @@ use super::raycast::{PreparedFor, VolumeEncode};
 use super::resources::VolumeResources;
 use crate::error::{Error, Result};
 use crate::frame::Frame;
+use crate::gpu::pipeline::{begin_pass, cleared, over_per_channel_pipeline};
+use crate::gpu::texture::{texture_2d_reusing, Texture2d};
 use crate::param::Param;
 use crate::render::accumulation::AccumulationResolve;
-use crate::render::pipeline::{begin_pass, cleared, over_per_channel_pipeline};
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
-use crate::render::texture::{texture_2d_reusing, Texture2d};
 use crate::render::{begin_prepare, prepared_state, Prepared, Renderer};
 use crate::target::SpatialTarget;
 use crate::volume::{VolumeScene, VolumeSettings};
@@ -307,10 +307,10 @@ impl Renderer<VolumeScene> for VolumeSlicer {
         let params = VolumeResources::params(scene, &self.settings, frame, true, 0.0);
         let volume_group = self.resources.bind(device, scene, frame, &[params])?;
         let rects = slices(scene, self.settings.step_length(scene), frame);
-        // A buffer of this frame's own (src/render/pass_params.rs), never empty.
+        // A buffer of this frame's own (src/gpu/pass_params.rs), never empty.
         let mut bytes = bytemuck::cast_slice::<_, u8>(&rects).to_vec();
         bytes.resize(bytes.len().max(std::mem::size_of::<SliceRect>()), 0);
-        let buffer = &crate::render::pass_params::constants_buffer(
+        let buffer = &crate::gpu::pass_params::constants_buffer(
             device,
             "volume slices",
             wgpu::BufferUsages::STORAGE,

@@ -14,7 +14,7 @@ use autostereo::image_io::{compare, RgbImage};
 use autostereo::mesh::Mesh;
 
 fn out(name: &str) -> PathBuf {
-    common::out_dir().join(format!("formats_{name}"))
+    common::out(&format!("formats_{name}"))
 }
 
 fn write(name: &str, bytes: &[u8]) -> PathBuf {

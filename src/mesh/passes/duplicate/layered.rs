@@ -8,10 +8,10 @@
 use super::{batches, draw_mesh, mesh_pipeline, BatchedViews, BoundBatches};
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
+use crate::gpu::pipeline::{begin_pass_to, cleared, multiview_mask, PassTargets};
 use crate::mesh::passes::npass::{MeshNPass, PreparedFor};
 use crate::mesh::MeshBuffers;
 use crate::render::npass::NPassHarness;
-use crate::render::pipeline::{begin_pass_to, cleared, multiview_mask, PassTargets};
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::view_layers::{depth_array, layer_range};
 use crate::render::{begin_prepare, check_target, prepared_state, Method, Prepared, Renderer};
@@ -80,7 +80,7 @@ impl Multiview {
     fn new(device: &wgpu::Device, max_per_pass: u32) -> Result<Self> {
         let frame_layout = frame_bind_group_layout(device);
         let views = BatchedViews::new(device, "layered views", max_per_pass);
-        let layout = crate::render::pipeline::pipeline_layout(
+        let layout = crate::gpu::pipeline::pipeline_layout(
             device,
             "mesh layered",
             &[Some(&frame_layout), Some(&views.layout)],

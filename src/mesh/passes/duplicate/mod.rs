@@ -29,8 +29,8 @@ use bytemuck::Zeroable;
 use crate::camera::{MultiViewCamera, ViewUniform};
 use crate::display::MAX_VIEWS;
 use crate::error::Result;
+use crate::gpu::pass_params::{constants_buffer, PassParams};
 use crate::mesh::MeshBuffers;
-use crate::render::pass_params::{constants_buffer, PassParams};
 use crate::render::view_layers::nearest_depth_test;
 
 /// The views one pass of the layered and MRT methods draws.
@@ -61,7 +61,7 @@ impl ViewBatch {
 const VIEWS_BYTES: u64 = MAX_VIEWS as u64 * std::mem::size_of::<ViewUniform>() as u64;
 
 /// Every view's camera of `camera`, in a uniform buffer of this frame's own
-/// (`src/render/pass_params.rs` says why not a queue write).
+/// (`src/gpu/pass_params.rs` says why not a queue write).
 pub(crate) fn views_buffer(device: &wgpu::Device, camera: &MultiViewCamera) -> wgpu::Buffer {
     let mut views = vec![ViewUniform::zeroed(); MAX_VIEWS as usize];
     for (i, view) in views.iter_mut().enumerate().take(camera.views as usize) {
@@ -107,7 +107,7 @@ pub(crate) struct BoundBatches {
 impl BatchedViews {
     pub fn new(device: &wgpu::Device, label: &'static str, max_per_pass: u32) -> Self {
         let stages = wgpu::ShaderStages::VERTEX_FRAGMENT;
-        let layout = crate::render::pipeline::bind_group_layout(
+        let layout = crate::gpu::pipeline::bind_group_layout(
             device,
             label,
             &[

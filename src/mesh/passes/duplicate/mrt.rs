@@ -8,10 +8,10 @@
 use super::{batches, draw_mesh, mesh_pipeline, BatchedViews, BoundBatches};
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
+use crate::gpu::pipeline::{begin_pass_to, cleared, pipeline_layout, PassTargets};
 use crate::mesh::passes::npass::PreparedFor;
 use crate::mesh::MeshBuffers;
 use crate::render::npass::NPassHarness;
-use crate::render::pipeline::{begin_pass_to, cleared, pipeline_layout, PassTargets};
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::ViewLayers;
 use crate::render::{begin_prepare, check_prepared, check_target, Renderer};

@@ -5,12 +5,12 @@
 use super::{draw_mesh, mesh_pipeline, views_buffer, views_entry};
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
+use crate::gpu::pipeline::{
+    begin_pass_to, bind_group_layout, cleared, pipeline_layout, uniform_entry, PassTargets,
+};
 use crate::mesh::passes::npass::PreparedFor;
 use crate::mesh::MeshBuffers;
 use crate::render::atlas::{Atlas, AtlasCompositor, TileSampling};
-use crate::render::pipeline::{
-    begin_pass_to, bind_group_layout, cleared, pipeline_layout, uniform_entry, PassTargets,
-};
 use crate::render::quilt::QuiltLayout;
 use crate::render::{begin_prepare, check_target, prepared_state, Made, Prepared, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};

@@ -24,12 +24,12 @@ pub(crate) use scratch::EYE_TRIANGLE_BYTES;
 
 use crate::error::Result;
 use crate::frame::{Frame, FrameBinding};
+use crate::gpu::dispatch::dispatch_2d;
+use crate::gpu::pipeline::{begin_pass, cleared, draw_fullscreen};
+use crate::gpu::storage_fence::StorageFence;
 use crate::mesh::MeshBuffers;
-use crate::render::dispatch::dispatch_2d;
-use crate::render::pipeline::{begin_pass, cleared, draw_fullscreen};
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
-use crate::render::storage_fence::StorageFence;
 use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
 use crate::target::SpatialTarget;
 use pipelines::{Layouts, Pipelines};
@@ -37,6 +37,7 @@ use scratch::Scratch;
 
 /// How per-subpixel visibility is resolved.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum Visibility {
     /// Subpixel-resolution rasterisation + hardware depth test + deferred shading. Exact.
     Exact,

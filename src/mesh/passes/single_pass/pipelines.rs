@@ -3,7 +3,7 @@
 use super::{CoverBounds, MeshSinglePassOptions, Visibility};
 use crate::error::Result;
 use crate::frame::frame_bind_group_layout;
-use crate::render::pipeline::{
+use crate::gpu::pipeline::{
     bind_group_layout, compilation, fullscreen_pipeline_with, pipeline_layout, storage_entry,
 };
 use crate::render::pipeline_cache::ShaderModules;

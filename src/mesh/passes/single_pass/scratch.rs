@@ -6,9 +6,9 @@ use super::Visibility;
 use crate::error::{Error, Result};
 use crate::frame::Frame;
 use crate::gpu::check_size_2d;
+use crate::gpu::gpu_buffer::GpuBuffer;
+use crate::gpu::texture::{cached_texture_2d, Texture2d};
 use crate::mesh::MeshBuffers;
-use crate::render::gpu_buffer::GpuBuffer;
-use crate::render::texture::{cached_texture_2d, Texture2d};
 use crate::render::view_layers::DEPTH_FORMAT;
 use crate::render::Made;
 

@@ -1,11 +1,31 @@
-//! How a volume renderer samples and shades a [`VolumeScene`]: settings of the renderer
-//! (given to [`crate::RendererOptions`] or to the volume renderers' constructors), never of the
-//! scene, so that one uploaded volume renders with several settings side by side.
+//! How a volume renderer samples and shades a [`VolumeScene`], and which single-pass path it
+//! takes: settings of the renderer (given to [`crate::RendererOptions`] or to the volume
+//! renderers' constructors), never of the scene, so that one uploaded volume renders with
+//! several settings side by side.
 
 use super::scene::{check_step, MAX_EMPTY_STRIDE};
-use super::VolumeScene;
+use super::{AlphaMode, VolumeScene};
 use crate::error::{Error, Result};
 use crate::param::Param;
+
+/// Volume settings: the single pass's path and how every method samples.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct VolumeOptions {
+    /// The single pass's path (the other methods always ray-march).
+    pub path: VolumePath,
+    /// Sampling, shading and the measured approximations.
+    pub settings: VolumeSettings,
+}
+
+/// How the volume single pass runs.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum VolumePath {
+    /// Ray marching in a compute pass, exact per channel.
+    #[default]
+    RayMarch,
+    /// The paper's proxy slices (needs dual-source blending).
+    Slices(AlphaMode),
+}
 
 /// Sampling, shading and the measured approximations of volume rendering. The default is the
 /// exact image: half-voxel steps, shading, exact empty-space skipping, no probes, no sharing.

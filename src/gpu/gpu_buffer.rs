@@ -28,6 +28,7 @@ pub fn check_storage_bytes(
             what: what.into(),
             value: bytes,
             limit,
+            param: None,
         });
     }
     Ok(())

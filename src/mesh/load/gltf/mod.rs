@@ -12,15 +12,15 @@ use std::path::Path;
 use base64::Engine as _;
 use glam::{Mat3, Mat4, Vec3};
 
-use super::{Mesh, DEFAULT_COLOR};
 use crate::error::{Error, Result};
+use crate::mesh::{Mesh, DEFAULT_COLOR};
 
 /// Deepest node nesting followed (a cycle or a pathological tree is refused, not recursed).
 const MAX_NODE_DEPTH: usize = 64;
 /// Most node visits of a scene (a tree whose nodes share children grows exponentially).
 const MAX_NODE_VISITS: usize = 1 << 20;
 /// Peak CPU bytes per vertex instance and per index: the mesh's position, normal and colour
-/// and the uploaded vertex (≈ 112, as for OBJ: src/mesh/obj.rs), and one u32 index.
+/// and the uploaded vertex (≈ 112, as for OBJ: src/mesh/load/obj.rs), and one u32 index.
 const BYTES_PER_VERTEX: u64 = 112;
 const BYTES_PER_INDEX: u64 = 4;
 

@@ -7,11 +7,11 @@ use std::path::Path;
 
 use glam::Vec3;
 
-use super::{Mesh, DEFAULT_COLOR};
 use crate::error::{Error, Result};
+use crate::mesh::{Mesh, DEFAULT_COLOR};
 
 /// Peak CPU bytes per PLY file byte: at most the OBJ's (a binary vertex takes 12 bytes and
-/// costs ≈ 112, a binary triangle 13 and costs ≈ 24; src/mesh/obj.rs).
+/// costs ≈ 112, a binary triangle 13 and costs ≈ 24; src/mesh/load/obj.rs).
 const MESH_PEAK_PER_PLY_BYTE: u64 = super::obj::MESH_PEAK_PER_OBJ_BYTE;
 
 /// Load a PLY mesh; a file without faces is refused as points (`Error::WrongKind`).

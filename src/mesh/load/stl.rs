@@ -6,8 +6,8 @@ use std::path::Path;
 
 use glam::Vec3;
 
-use super::{Mesh, DEFAULT_COLOR};
 use crate::error::{Error, Result};
+use crate::mesh::{Mesh, DEFAULT_COLOR};
 
 /// Bytes of a binary STL's header and triangle count, and of each triangle.
 const BINARY_HEADER: u64 = 84;

@@ -29,7 +29,7 @@ impl StorageFence {
                 storage_entry(1, false, wgpu::ShaderStages::COMPUTE),
             ],
         });
-        let module = crate::shader::module(device, "render/storage_fence.wgsl")?;
+        let module = crate::shader::module(device, "gpu/storage_fence.wgsl")?;
         let pipeline = crate::gpu::checked(device, "building the storage fence", || {
             let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
                 label: Some("storage fence"),

@@ -1,4 +1,4 @@
-// A compute pass that touches nothing (src/render/storage_fence.rs). Binding scratch buffers
+// A compute pass that touches nothing (src/gpu/storage_fence.rs). Binding scratch buffers
 // read-write here, between one frame's draws that read them and the next frame's compute pass
 // that writes them, makes wgpu's GL backend emit the memory barrier it otherwise skips.
 

@@ -10,8 +10,8 @@ use glam::DVec3;
 
 mod scan;
 
-use super::PointCloud;
 use crate::error::{Error, Result};
+use crate::points::PointCloud;
 use scan::{check_sizes, LASZIP_CHUNK_SIZE_DEFAULT};
 
 /// Points decoded per batch (the whole cloud is never held twice)...

@@ -12,8 +12,8 @@ use std::path::Path;
 
 use glam::Vec3;
 
-use super::{Mesh, DEFAULT_COLOR};
 use crate::error::{Error, Result};
+use crate::mesh::{Mesh, DEFAULT_COLOR};
 
 /// Peak CPU bytes per OBJ file byte: a vertex or face line takes at least 8 bytes; a vertex
 /// costs ≈ 112 bytes (tobj's arrays, the mesh's positions, normals and colours, the uploaded

@@ -1,4 +1,16 @@
-//! Headless GPU context: adapter selection (any backend, overridable by environment), one device.
+//! The GPU below the renderers: the headless context (adapter selection, any backend,
+//! overridable by environment; one device), the adapter's limits and features, and the
+//! crate-internal helpers every pass builds on: `gpu_buffer` (the one resizable GPU buffer type
+//! and the storage-binding limit check), `dispatch` (the one compute dispatch splitter),
+//! `pipeline`, `texture`, `pass_params` (uniforms and constants) and `storage_fence`. Nothing
+//! here imports [`crate::render`].
+
+pub(crate) mod dispatch;
+pub(crate) mod gpu_buffer;
+pub(crate) mod pass_params;
+pub(crate) mod pipeline;
+pub(crate) mod storage_fence;
+pub(crate) mod texture;
 
 use crate::error::{Error, Result};
 use crate::param::Param;
@@ -237,6 +249,7 @@ pub fn check_size_2d(device: &wgpu::Device, width: u32, height: u32) -> Result<(
                 what: what.into(),
                 value: value.into(),
                 limit: limit.into(),
+                param: Some(Param::ImageSize),
             });
         }
     }
