@@ -2,6 +2,7 @@
 
 use std::path::PathBuf;
 
+use crate::advice::{tail, Advice, Setting};
 use crate::data_kind::DataKind;
 use crate::param::Param;
 
@@ -30,10 +31,10 @@ pub enum Error {
         /// What needed them (a mode, as the user chose it).
         purpose: String,
         /// What to use instead.
-        instead: String,
+        instead: Advice,
     },
     /// A size or count is above what the adapter allows.
-    #[error("{what} = {value} exceeds the adapter limit {limit}")]
+    #[error("{what} = {value} exceeds the adapter limit {limit}{}", tail(.advice))]
     LimitExceeded {
         /// Which quantity.
         what: String,
@@ -44,6 +45,8 @@ pub enum Error {
         /// The parameter that sets the quantity, where the caller sets it directly (views,
         /// groups, the image size): the most it may be is then `limit`.
         param: Option<Param>,
+        /// What to do instead, where there is a way round the limit.
+        advice: Option<Advice>,
     },
     /// A frame too wide for a mode that renders one column per subpixel: the adapter's
     /// texture width limit divided by the columns per pixel is the widest frame it renders.
@@ -60,13 +63,13 @@ pub enum Error {
         /// The widest frame the mode renders: `limit / per_pixel`.
         max_width: u32,
         /// The mode, as the library names it (e.g. `Visibility::Exact`).
-        mode: &'static str,
+        mode: Setting,
         /// The mode to use instead, as the library names it.
-        instead: &'static str,
+        instead: Advice,
     },
     /// An input, or a renderer's per-view images, would need more memory than the budget
     /// (`crate::budget`; on the GPU too: software adapters allocate it from the same RAM).
-    #[error("{what} needs {bytes} bytes, over the memory budget of {budget} bytes (raise it with budget::set_max_memory, to at least {raise_to})")]
+    #[error("{what} needs {bytes} bytes, over the memory budget of {budget} bytes (raise it with {}, to at least {raise_to})", Setting::MaxMemory)]
     MemoryBudget {
         /// What would be allocated, in words.
         what: String,
@@ -86,12 +89,14 @@ pub enum Error {
         source: wgpu::RequestDeviceError,
     },
     /// A parameter is outside its valid range (zero views, 0×0 image, NaN separation…).
-    #[error("invalid {param}: {}", printable(.reason))]
+    #[error("invalid {param}: {}{}", printable(.reason), tail(.advice))]
     InvalidParameter {
         /// The parameter.
         param: Param,
         /// What is wrong with it.
         reason: String,
+        /// What to do about it, where the library names a setting.
+        advice: Option<Advice>,
     },
     /// A display specification string could not be understood.
     #[error("display spec '{spec}': {reason}")]
@@ -135,12 +140,14 @@ pub enum Error {
         reason: String,
     },
     /// A volume file is malformed, truncated or of an unsupported kind.
-    #[error("volume {path}: {}", printable(.reason))]
+    #[error("volume {path}: {}{}", printable(.reason), tail(.advice))]
     Volume {
         /// The file.
         path: PathBuf,
         /// What is wrong with it.
         reason: String,
+        /// What to do about it, where the library names a setting.
+        advice: Option<Advice>,
     },
     /// A file of an unknown format, of another kind of data than the command renders, or of
     /// a format this build does not read.
@@ -165,12 +172,14 @@ pub enum Error {
         detail: String,
     },
     /// An image could not be read or written.
-    #[error("image {path}: {}", printable(.reason))]
+    #[error("image {path}: {}{}", printable(.reason), tail(.advice))]
     Image {
         /// The file.
         path: PathBuf,
         /// What is wrong with it.
         reason: String,
+        /// What to do about it, where the library names a setting.
+        advice: Option<Advice>,
     },
     /// I/O on a named file. The message carries the OS error, so it is deliberately not also
     /// the error's `source()`: printers of the error chain (`anyhow`'s `{:#}`) show it once.
@@ -261,8 +270,8 @@ impl Error {
         device: &wgpu::Device,
         size: [u32; 2],
         per_pixel: u32,
-        mode: &'static str,
-        instead: &'static str,
+        mode: Setting,
+        instead: Advice,
     ) -> Result<()> {
         let limit = device.limits().max_texture_dimension_2d;
         let columns = u64::from(size[0]) * u64::from(per_pixel);
@@ -284,6 +293,22 @@ impl Error {
         Error::InvalidParameter {
             param,
             reason: reason.into(),
+            advice: None,
+        }
+    }
+
+    /// The advice in this error's message, each as the message says it (the library's terms):
+    /// a tool that names settings in its own words replaces each with [`Advice::words`].
+    pub fn advice(&self) -> Vec<Advice> {
+        match self {
+            Error::MissingFeature { instead, .. } => vec![instead.clone()],
+            Error::SubpixelWidth { mode, instead, .. } => vec![(*mode).into(), instead.clone()],
+            Error::MemoryBudget { .. } => vec![Setting::MaxMemory.into()],
+            Error::LimitExceeded { advice, .. }
+            | Error::InvalidParameter { advice, .. }
+            | Error::Volume { advice, .. }
+            | Error::Image { advice, .. } => advice.iter().cloned().collect(),
+            _ => Vec::new(),
         }
     }
 }

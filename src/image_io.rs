@@ -86,6 +86,7 @@ impl RgbImage {
         let fail = |reason: String| Error::Image {
             path: path.to_path_buf(),
             reason,
+            advice: None,
         };
         let mut png = Vec::new();
         image::codecs::png::PngEncoder::new(&mut png)
@@ -117,6 +118,7 @@ impl RgbImage {
         let img = image::open(path).map_err(|e| Error::Image {
             path: path.to_path_buf(),
             reason: e.to_string(),
+            advice: None,
         })?;
         let rgb = img.to_rgb8();
         Ok(Self {
@@ -193,6 +195,7 @@ pub(crate) fn decode_bytes(bytes: &[u8], path: &Path) -> Result<image::DynamicIm
     let fail = |reason: String| Error::Image {
         path: path.to_path_buf(),
         reason,
+        advice: None,
     };
     let reader = || {
         image::ImageReader::new(std::io::Cursor::new(bytes))

@@ -13,6 +13,7 @@
 
 #![warn(missing_docs)]
 
+pub mod advice;
 mod any;
 pub mod budget;
 pub mod camera;

@@ -21,6 +21,7 @@ pub fn read_texture_rgba8(
             value: size,
             limit: device.limits().max_buffer_size,
             param: None,
+            advice: None,
         });
     }
     let buffer = device.create_buffer(&wgpu::BufferDescriptor {

@@ -138,7 +138,7 @@ impl DisplayArgs {
             .to_ascii_lowercase()
             .starts_with("lkg");
         let mut display = Display::parse(&self.display).map_err(|e| match e {
-            autostereo::Error::InvalidParameter { param, reason } if !from_file => {
+            autostereo::Error::InvalidParameter { param, reason, .. } if !from_file => {
                 anyhow::anyhow!("--display {}: invalid {param}: {reason}", self.display)
             }
             e => e.into(),

@@ -2,6 +2,7 @@
 //! its own terms ("sampling step", "use Visibility::Exact"); here the message also names the
 //! flag that sets the parameter (`--step`) and gives the advice as flags (`--visibility exact`).
 
+use autostereo::advice::Setting;
 use autostereo::Param;
 
 /// The flag that sets the library parameter `param`, where one does: one exhaustive `match`,
@@ -77,23 +78,24 @@ pub fn flag_of(param: Param) -> Option<&'static str> {
     })
 }
 
-/// (library term in an error's advice, the command line's words for it).
-const TERMS: &[(&str, &str)] = &[
-    ("Visibility::Exact", "--visibility exact"),
-    ("Visibility::Fast", "--visibility fast"),
-    ("Visibility::Compute", "--visibility compute"),
-    ("SplatDepth::Exact", "--depth exact"),
-    ("SplatDepth::Paper", "--depth paper"),
-    ("TileClip::Discard", "--tile-clip discard"),
-    ("VolumePath::RayMarch", "--path compute"),
-    ("VolumePath::Slices", "--path slices"),
-    ("Volume::downsample(2)", "--downsample 2"),
-    ("budget::set_max_memory", "--max-memory"),
-    ("RawSpec::header_bytes = ", "--raw-header "),
-    ("RawSpec", "--raw-dims X,Y,Z and --raw-type"),
-    ("QuiltLayout::for_image's grid", "--quilt COLSxROWS"),
-    ("DepthMapOptions::resample", "--depth-resample"),
-];
+/// The command line's words for a setting a library error advises (one exhaustive match: a
+/// setting the library adds fails to compile here until it has words).
+pub fn setting_words(setting: Setting) -> String {
+    use autostereo::VolumePath;
+    match setting {
+        Setting::Visibility(v) => format!("--visibility {}", v.name()),
+        Setting::SplatDepth(d) => format!("--depth {}", d.name()),
+        Setting::TileClip(c) => format!("--tile-clip {}", c.name()),
+        Setting::VolumePath(VolumePath::RayMarch) => "--path compute".into(),
+        Setting::VolumePath(VolumePath::Slices(_)) => "--path slices".into(),
+        Setting::Downsample(n) => format!("--downsample {n}"),
+        Setting::MaxMemory => "--max-memory".into(),
+        Setting::RawHeaderBytes(n) => format!("--raw-header {n}"),
+        Setting::RawLayout => "--raw-dims X,Y,Z and --raw-type".into(),
+        Setting::QuiltGrid => "--quilt COLSxROWS".into(),
+        Setting::DepthResample => "--depth-resample".into(),
+    }
+}
 
 /// The command line that reads `file`, data of `kind`.
 pub fn reader_of(kind: autostereo::DataKind, file: &str) -> String {
@@ -159,11 +161,21 @@ pub fn describe(error: &anyhow::Error) -> String {
             },
             _ => cause.to_string(),
         })
+        .zip(error.chain())
+        .map(|(text, cause)| in_cli_words(text, cause))
         .collect();
-    let text = TERMS.iter().fold(parts.join(": "), |text, (term, words)| {
-        text.replace(term, words)
-    });
-    printable(&text)
+    printable(&parts.join(": "))
+}
+
+/// `text`, the message of `cause`, with the settings a library error advises in the command
+/// line's words.
+fn in_cli_words(text: String, cause: &(dyn std::error::Error + 'static)) -> String {
+    let Some(error) = cause.downcast_ref::<autostereo::Error>() else {
+        return text;
+    };
+    error.advice().iter().fold(text, |text, advice| {
+        text.replace(&advice.to_string(), &advice.words(setting_words))
+    })
 }
 
 /// `text` with its control characters but line breaks escaped: whatever a message quotes (a
@@ -196,8 +208,56 @@ mod tests {
         );
         let plain = anyhow::anyhow!("no such file");
         assert_eq!(describe(&plain), "no such file");
-        let advice = anyhow::anyhow!("X needs Y; use Visibility::Exact");
-        assert_eq!(describe(&advice), "X needs Y; use --visibility exact");
+    }
+
+    /// The advice in a library error is said in flags, from its typed settings; a message that
+    /// merely contains a library term is left as it is.
+    #[test]
+    fn advice_is_said_in_flags() {
+        use autostereo::render::quilt::QuiltLayout;
+        let error = QuiltLayout::for_image("scan.png", [8, 8], None, 4).unwrap_err();
+        let text = describe(&anyhow::Error::from(error));
+        assert!(
+            text.contains("or give the grid (--quilt COLSxROWS)") && !text.contains("QuiltLayout"),
+            "{text}"
+        );
+        let plain = anyhow::anyhow!("X needs Y; use Visibility::Exact");
+        assert_eq!(describe(&plain), "X needs Y; use Visibility::Exact");
+    }
+
+    /// Every flag the advice's words name is a flag of some command.
+    #[test]
+    fn every_setting_is_said_with_a_real_flag() {
+        use autostereo::mesh::{TileClip, Visibility};
+        use autostereo::points::SplatDepth;
+        use autostereo::VolumePath;
+        use clap::CommandFactory;
+        let cli = crate::Cli::command();
+        let longs: std::collections::BTreeSet<String> = cli
+            .get_subcommands()
+            .flat_map(|c| c.get_arguments().filter_map(|a| a.get_long()))
+            .map(|l| format!("--{l}"))
+            .collect();
+        let settings = [
+            Setting::Visibility(Visibility::Exact),
+            Setting::SplatDepth(SplatDepth::Paper),
+            Setting::TileClip(TileClip::Discard),
+            Setting::VolumePath(VolumePath::RayMarch),
+            Setting::Downsample(2),
+            Setting::MaxMemory,
+            Setting::RawHeaderBytes(16),
+            Setting::RawLayout,
+            Setting::QuiltGrid,
+            Setting::DepthResample,
+        ];
+        for setting in settings {
+            let words = setting_words(setting);
+            let flags: Vec<&str> = words.split(' ').filter(|w| w.starts_with("--")).collect();
+            assert!(!flags.is_empty(), "{setting}: {words}");
+            for flag in flags {
+                assert!(longs.contains(flag), "{setting}: {flag} is no flag");
+            }
+        }
     }
 
     /// Every flag a parameter maps to is a flag of some command (a renamed flag fails here).

@@ -29,6 +29,7 @@ pub fn check_storage_bytes(
             value: bytes,
             limit,
             param: None,
+            advice: None,
         });
     }
     Ok(())

@@ -172,7 +172,7 @@ pub fn require_features(
     device: &wgpu::Device,
     needed: wgpu::Features,
     purpose: &str,
-    instead: &str,
+    instead: crate::advice::Advice,
 ) -> Result<()> {
     let missing = needed - device.features();
     if missing.is_empty() {
@@ -183,7 +183,7 @@ pub fn require_features(
         adapter: format!("{} ({:?})", info.name, info.backend),
         missing: describe_features(missing),
         purpose: purpose.to_string(),
-        instead: instead.to_string(),
+        instead,
     })
 }
 
@@ -250,6 +250,7 @@ pub fn check_size_2d(device: &wgpu::Device, width: u32, height: u32) -> Result<(
                 value: value.into(),
                 limit: limit.into(),
                 param: Some(Param::ImageSize),
+                advice: None,
             });
         }
     }

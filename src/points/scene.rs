@@ -73,6 +73,7 @@ impl SplatScene {
                     value: k.into(),
                     limit: most.into(),
                     param: Some(Param::Groups),
+                    advice: None,
                 });
             }
         }

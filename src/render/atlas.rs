@@ -39,6 +39,7 @@ impl Atlas {
                 value: size[0].max(size[1]).into(),
                 limit: limit.into(),
                 param: None,
+                advice: None,
             });
         }
         let usage = wgpu::TextureUsages::RENDER_ATTACHMENT

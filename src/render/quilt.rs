@@ -4,6 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::advice::{Advice, Setting};
 use crate::error::{Error, Result};
 use crate::param::Param;
 
@@ -91,13 +92,14 @@ impl QuiltLayout {
             (Some(grid), _) => grid,
             (None, Some((cols, rows, _))) => [cols, rows],
             (None, None) => {
-                return Err(Error::invalid(
-                    Param::Quilt,
-                    format!(
+                return Err(Error::InvalidParameter {
+                    param: Param::Quilt,
+                    reason: format!(
                         "{name}: no grid; name it …_qs{{cols}}x{{rows}}a{{aspect}}.png (Looking \
-                         Glass's convention) or give the grid (QuiltLayout::for_image's grid)"
+                         Glass's convention) or give the grid"
                     ),
-                ))
+                    advice: Some(Advice::text(" (").then(Setting::QuiltGrid).then_text(")")),
+                })
             }
         };
         if cols == 0 || rows == 0 || !size[0].is_multiple_of(cols) || !size[1].is_multiple_of(rows)

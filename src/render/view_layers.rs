@@ -67,6 +67,7 @@ impl ViewLayers {
                 value: layers.into(),
                 limit: most.into(),
                 param: Some(counted_by),
+                advice: None,
             });
         }
         let texel = crate::budget::texel_bytes(format);

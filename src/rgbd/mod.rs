@@ -9,6 +9,7 @@ mod scene;
 
 use std::path::Path;
 
+use crate::advice::{Advice, Setting};
 use crate::error::{Error, Result};
 use crate::image_io::{decode, decode_bytes, RgbImage};
 use crate::param::Param;
@@ -122,13 +123,17 @@ impl RgbdImage {
             return Err(Error::Image {
                 path: depth.to_path_buf(),
                 reason: format!(
-                    "depth map is {}x{}, the colour image {} is {}x{} (resample it with \
-                     DepthMapOptions::resample, or give maps of one size)",
+                    "depth map is {}x{}, the colour image {} is {}x{}",
                     size[0],
                     size[1],
                     color.display(),
                     want[0],
                     want[1]
+                ),
+                advice: Some(
+                    Advice::text(" (resample it with ")
+                        .then(Setting::DepthResample)
+                        .then_text(", or give maps of one size)"),
                 ),
             });
         };
@@ -163,6 +168,7 @@ impl RgbdImage {
                      {}x{}",
                     size[0], size[1]
                 ),
+                advice: None,
             });
         }
         let (rgb, luma) = (image.to_rgb8(), luma_of(&image));

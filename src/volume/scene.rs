@@ -9,6 +9,7 @@ use wgpu::util::DeviceExt;
 
 use super::transfer::{PreintegrationTable, TransferFunction, TABLE_SIZE};
 use super::{CellRanges, Volume};
+use crate::advice::{Advice, Setting};
 use crate::error::{Error, Result};
 use crate::param::Param;
 
@@ -44,13 +45,15 @@ impl VolumeTexture {
         let limit = device.limits().max_texture_dimension_3d;
         if let Some(&d) = volume.dims.iter().find(|&&d| d > limit) {
             return Err(Error::LimitExceeded {
-                what: format!(
-                    "volume dimension {d} of {:?} (downsample it, e.g. Volume::downsample(2))",
-                    volume.dims
-                ),
+                what: format!("volume dimension {d} of {:?}", volume.dims),
                 value: d.into(),
                 limit: limit.into(),
                 param: None,
+                advice: Some(
+                    Advice::text(" (downsample it, e.g. ")
+                        .then(Setting::Downsample(2))
+                        .then_text(")"),
+                ),
             });
         }
         let voxels: u64 = volume.dims.iter().map(|&d| u64::from(d)).product();

@@ -162,7 +162,7 @@ impl GaussianSplatter {
             device,
             wgpu::Features::DUAL_SOURCE_BLENDING,
             "Gaussian splats (one α per subpixel)",
-            "use an adapter with dual-source blending",
+            crate::advice::Advice::text("use an adapter with dual-source blending"),
         )?;
         let frame_layout = frame_bind_group_layout(device);
         let fragment = wgpu::ShaderStages::VERTEX_FRAGMENT | wgpu::ShaderStages::COMPUTE;

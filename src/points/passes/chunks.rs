@@ -98,6 +98,7 @@ fn too_large(what: &str, key: GroupImagesKey, max_bytes: u64) -> Error {
         value: GroupImages::texture_bytes(key),
         limit: max_bytes,
         param: None,
+        advice: None,
     }
 }
 

@@ -10,6 +10,7 @@ use super::chunks::{layered_chunks, tiled_bands, Band};
 use super::group_images::{GroupImages, GroupImagesKey};
 use super::pipelines::{Geometry, SplatPipelineKey};
 use super::{PointSplatter, SplatDepth};
+use crate::advice::Setting;
 use crate::error::{Error, Result};
 use crate::frame::Frame;
 use crate::gpu::gpu_buffer::GpuBuffer;
@@ -174,8 +175,8 @@ impl PointSplatter {
                 device,
                 frame.size,
                 k,
-                "SplatDepth::Exact",
-                "SplatDepth::Paper",
+                Setting::SplatDepth(SplatDepth::Exact),
+                Setting::SplatDepth(SplatDepth::Paper).into(),
             )?;
         }
         let key = GroupImagesKey {

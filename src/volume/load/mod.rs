@@ -32,6 +32,7 @@ pub use vtk_legacy::{load_vtk, parse_vtk};
 use std::path::Path;
 
 use super::{check_dims, Volume};
+use crate::advice::{Advice, Setting};
 use crate::error::{Error, Result};
 
 /// Sample types the loaders understand.
@@ -165,6 +166,7 @@ pub(crate) fn format_error(path: &Path, reason: impl Into<String>) -> Error {
     Error::Volume {
         path: path.to_path_buf(),
         reason: reason.into(),
+        advice: None,
     }
 }
 
@@ -191,10 +193,11 @@ pub fn load_any(path: &Path) -> Result<Volume> {
         Format::Nifti => load_nifti(path),
         #[cfg(feature = "vti")]
         Format::Vtk => load_vtk_image(path),
-        _ => Err(format_error(
-            path,
-            "raw voxels need their dimensions and sample type (RawSpec)",
-        )),
+        _ => Err(Error::Volume {
+            path: path.to_path_buf(),
+            reason: "raw voxels need their dimensions and sample type".into(),
+            advice: Some(Advice::text(" (").then(Setting::RawLayout).then_text(")")),
+        }),
     }
 }
 

@@ -3,6 +3,7 @@
 use std::path::Path;
 
 use super::{data_bytes, decode, format_error, to_volume, SampleType};
+use crate::advice::{Advice, Setting};
 use crate::error::{Error, Result};
 use crate::volume::Volume;
 
@@ -94,21 +95,23 @@ fn check_length(path: &Path, spec: &RawSpec, actual: u64, needed: u64) -> Result
     if actual == needed {
         return Ok(());
     }
-    Err(format_error(
-        path,
-        format!(
-            "{} bytes, but {} after a {}-byte header need {needed}{}",
-            actual,
-            super::samples(spec.dims, spec.kind),
-            spec.header_bytes,
-            match actual < needed {
-                true => " (truncated?)".to_string(),
-                // The fix for a file with more bytes than described, where they are a header.
-                false => format!(
-                    "; RawSpec::header_bytes = {} if the samples are at the end",
-                    actual - needed + spec.header_bytes
-                ),
-            }
-        ),
-    ))
+    let reason = format!(
+        "{} bytes, but {} after a {}-byte header need {needed}{}",
+        actual,
+        super::samples(spec.dims, spec.kind),
+        spec.header_bytes,
+        if actual < needed { " (truncated?)" } else { "" },
+    );
+    // The fix for a file with more bytes than described, where they are a header.
+    let advice = (actual > needed).then(|| {
+        let header = actual - needed + spec.header_bytes;
+        Advice::text("; ")
+            .then(Setting::RawHeaderBytes(header))
+            .then_text(" if the samples are at the end")
+    });
+    Err(Error::Volume {
+        path: path.to_path_buf(),
+        reason,
+        advice,
+    })
 }

@@ -18,6 +18,7 @@ use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
 use crate::render::{begin_prepare, prepared_state, Prepared, Renderer};
 use crate::target::SpatialTarget;
+use crate::volume::VolumePath;
 use crate::volume::{VolumeScene, VolumeSettings};
 
 /// How the K views' opacities of one fragment are blended.
@@ -69,6 +70,17 @@ pub struct VolumeSlicer {
     crop: crate::render::camera_crop::CameraCrop,
 }
 
+/// `param` refused for the slices: `reason` is the ray-marching feature it sets.
+fn slices_have_none(param: Param, reason: String, alpha: AlphaMode) -> Error {
+    use crate::advice::{Advice, Setting};
+    let slices = Setting::VolumePath(VolumePath::Slices(alpha));
+    Error::InvalidParameter {
+        param,
+        reason: format!("{reason}; the proxy slices"),
+        advice: Some(Advice::text(" (").then(slices).then_text(") have none")),
+    }
+}
+
 impl VolumeSlicer {
     /// Needs `DUAL_SOURCE_BLENDING` (per-channel blend factors). Of `settings`, the slices use
     /// the step and shading; the ray-marching approximations (sample sharing, probes) are
@@ -76,30 +88,32 @@ impl VolumeSlicer {
     pub fn new(device: &wgpu::Device, alpha: AlphaMode, settings: VolumeSettings) -> Result<Self> {
         settings.validate()?;
         if settings.share_samples > 0.0 {
-            return Err(Error::invalid(
+            return Err(slices_have_none(
                 Param::SampleSharing,
                 format!(
-                    "{}: sharing samples among a pixel's rays is a ray-marching approximation; \
-                     the proxy slices (VolumePath::Slices) have none",
+                    "{}: sharing samples among a pixel's rays is a ray-marching approximation",
                     settings.share_samples
                 ),
+                alpha,
             ));
         }
         if settings.empty_stride > 1 {
-            return Err(Error::invalid(
+            return Err(slices_have_none(
                 Param::EmptyStride,
                 format!(
-                    "{}: probing is part of ray marching's empty-space skipping; the proxy \
-                     slices (VolumePath::Slices) have none",
+                    "{}: probing is part of ray marching's empty-space skipping",
                     settings.empty_stride
                 ),
+                alpha,
             ));
         }
         crate::gpu::require_features(
             device,
             wgpu::Features::DUAL_SOURCE_BLENDING,
-            "the proxy-slice volume path (VolumePath::Slices)",
-            "use VolumePath::RayMarch (the ray-marching compute path)",
+            "the proxy-slice volume path",
+            crate::advice::Advice::text("use ")
+                .then(crate::advice::Setting::VolumePath(VolumePath::RayMarch))
+                .then_text(" (the ray-marching compute path)"),
         )?;
         let resources = VolumeResources::new(device, wgpu::ShaderStages::VERTEX_FRAGMENT);
         let layout = |label, ty| {

@@ -51,7 +51,8 @@ impl TileClip {
                     device,
                     wgpu::Features::CLIP_DISTANCES,
                     "tiled rendering clipped by clip distances",
-                    "use TileClip::Discard",
+                    crate::advice::Advice::text("use ")
+                        .then(crate::advice::Setting::TileClip(Self::Discard)),
                 )?;
                 Ok(self)
             }

@@ -138,7 +138,9 @@ impl MeshSinglePass {
                 "single-pass meshes with {} visibility",
                 options.visibility.name()
             ),
-            "use Visibility::Exact, which every adapter runs, exact per subpixel",
+            crate::advice::Advice::text("use ")
+                .then(crate::advice::Setting::Visibility(Visibility::Exact))
+                .then_text(", which every adapter runs, exact per subpixel"),
         )?;
         let layouts = Layouts::new(device);
         Ok(Self {

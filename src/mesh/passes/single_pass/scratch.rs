@@ -3,6 +3,7 @@
 
 use super::pipelines::{Layouts, TRIANGLE_ID_FORMAT};
 use super::Visibility;
+use crate::advice::{Advice, Setting};
 use crate::error::{Error, Result};
 use crate::frame::Frame;
 use crate::gpu::check_size_2d;
@@ -88,8 +89,11 @@ impl Scratch {
                     device,
                     frame.size,
                     k,
-                    "Visibility::Exact",
-                    "Visibility::Fast, or Visibility::Compute where the adapter has 64-bit atomics",
+                    Setting::Visibility(Visibility::Exact),
+                    Advice::from(Setting::Visibility(Visibility::Fast))
+                        .then_text(", or ")
+                        .then(Setting::Visibility(Visibility::Compute))
+                        .then_text(" where the adapter has 64-bit atomics"),
                 )?;
                 let wide = [w.saturating_mul(k), h];
                 check_size_2d(device, wide[0], wide[1])?;
