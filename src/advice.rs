@@ -24,7 +24,7 @@ pub enum Setting {
     VolumePath(VolumePath),
     /// `Volume::downsample` by this factor.
     Downsample(u32),
-    /// The memory budget's maximum (`budget::set_max_memory`).
+    /// The memory budget's figure ([`crate::budget::Budget::set_max`]).
     MaxMemory,
     /// A raw volume's header bytes ([`crate::volume::load::RawSpec::header_bytes`]).
     RawHeaderBytes(u64),
@@ -46,7 +46,7 @@ impl fmt::Display for Setting {
             Setting::VolumePath(VolumePath::RayMarch) => f.write_str("VolumePath::RayMarch"),
             Setting::VolumePath(VolumePath::Slices(_)) => f.write_str("VolumePath::Slices"),
             Setting::Downsample(n) => write!(f, "Volume::downsample({n})"),
-            Setting::MaxMemory => f.write_str("budget::set_max_memory"),
+            Setting::MaxMemory => f.write_str("Budget::set_max"),
             Setting::RawHeaderBytes(n) => write!(f, "RawSpec::header_bytes = {n}"),
             Setting::RawLayout => f.write_str("RawSpec"),
             Setting::QuiltGrid => f.write_str("QuiltLayout::for_image's grid"),

@@ -7,45 +7,178 @@
 //! the adapter (software adapters allocate from the same RAM). Per-frame constants and
 //! read-back staging are small and transient, and not counted.
 //!
-//! One process-wide figure, 8 GiB by default, raised or lowered with [`set_max_memory`] (the
-//! CLI's `--max-memory`). Inputs whose cost is over it are refused with
-//! [`crate::Error::MemoryBudget`], which names the figure, the budget and how to raise it; so a
-//! 1 MB file that claims a 1024³ volume is an error, not an abort on a 32 GiB allocation.
+//! A budget is a value: [`Budget::new`] gives one of its own figure and its own running total,
+//! so two hosts in one process (a viewer beside a notebook) each keep theirs. The library's
+//! loaders and GPU allocations charge the budget *current on the calling thread*: the innermost
+//! one entered there ([`Budget::enter`], [`Budget::in_scope`]), else the process's default
+//! (8 GiB, [`Budget::current`] outside every scope) — the pattern of `tracing`'s dispatchers,
+//! chosen over a budget parameter on each of the ~140 constructors and loaders that allocate.
+//! A [`GpuCharge`] gives its bytes back to the budget it was taken from, wherever it is dropped.
+//! Inputs whose cost is over the figure are refused with [`crate::Error::MemoryBudget`], which
+//! names the figure, the budget and how to raise it; so a 1 MB file that claims a 1024³ volume
+//! is an error, not an abort on a 32 GiB allocation.
 
+use std::cell::RefCell;
 use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Arc, OnceLock};
 
 use crate::error::{Error, Result};
 
 /// The default budget: 8 GiB.
 pub const DEFAULT_MAX_MEMORY: u64 = 8 << 30;
 
-static MAX_MEMORY: AtomicU64 = AtomicU64::new(DEFAULT_MAX_MEMORY);
-
-/// Bytes the live [`GpuCharge`]s hold.
-static GPU_HELD: AtomicU64 = AtomicU64::new(0);
-
-/// The budget now, in bytes.
-pub fn max_memory() -> u64 {
-    MAX_MEMORY.load(Ordering::Relaxed)
+/// A memory budget: its figure and the GPU bytes its live [`GpuCharge`]s hold. Clones share
+/// both (a handle).
+#[derive(Clone, Debug)]
+pub struct Budget {
+    inner: Arc<Inner>,
 }
 
-/// Set the budget for this process.
-pub fn set_max_memory(bytes: u64) {
-    MAX_MEMORY.store(bytes, Ordering::Relaxed);
+#[derive(Debug)]
+struct Inner {
+    max: AtomicU64,
+    gpu_held: AtomicU64,
 }
 
-/// `Err(MemoryBudget)` when `bytes` (the cost of `what`) exceed the budget.
-pub fn check(what: impl FnOnce() -> String, bytes: u64) -> Result<()> {
-    let budget = max_memory();
-    if bytes > budget {
-        return Err(Error::MemoryBudget {
-            what: what(),
-            bytes,
-            budget,
-            raise_to: rounded_up(bytes),
-        });
+impl Default for Budget {
+    /// A budget of its own of [`DEFAULT_MAX_MEMORY`].
+    fn default() -> Self {
+        Self::new(DEFAULT_MAX_MEMORY)
     }
-    Ok(())
+}
+
+thread_local! {
+    /// The budgets entered on this thread, innermost last.
+    static ENTERED: RefCell<Vec<Budget>> = const { RefCell::new(Vec::new()) };
+}
+
+/// The budget of code that enters none.
+fn process_default() -> &'static Budget {
+    static DEFAULT: OnceLock<Budget> = OnceLock::new();
+    DEFAULT.get_or_init(Budget::default)
+}
+
+impl Budget {
+    /// A budget of `max_bytes`, holding nothing.
+    pub fn new(max_bytes: u64) -> Self {
+        Self {
+            inner: Arc::new(Inner {
+                max: AtomicU64::new(max_bytes),
+                gpu_held: AtomicU64::new(0),
+            }),
+        }
+    }
+
+    /// The budget the library charges on this thread now: the innermost entered, else the
+    /// process's default.
+    pub fn current() -> Budget {
+        ENTERED
+            .with(|e| e.borrow().last().cloned())
+            .unwrap_or_else(|| process_default().clone())
+    }
+
+    /// Make this the current budget on this thread until the guard is dropped.
+    pub fn enter(&self) -> Entered {
+        ENTERED.with(|e| e.borrow_mut().push(self.clone()));
+        Entered {
+            _not_send: std::marker::PhantomData,
+        }
+    }
+
+    /// Run `f` with this as the current budget.
+    pub fn in_scope<R>(&self, f: impl FnOnce() -> R) -> R {
+        let _entered = self.enter();
+        f()
+    }
+
+    /// The figure, in bytes.
+    pub fn max(&self) -> u64 {
+        self.inner.max.load(Ordering::Relaxed)
+    }
+
+    /// Change the figure (for this budget and its clones).
+    pub fn set_max(&self, bytes: u64) {
+        self.inner.max.store(bytes, Ordering::Relaxed);
+    }
+
+    /// Bytes of GPU memory this budget's live charges hold.
+    pub fn gpu_held(&self) -> u64 {
+        self.inner.gpu_held.load(Ordering::Relaxed)
+    }
+
+    /// `Err(MemoryBudget)` when `bytes` (the cost of `what`) exceed the figure.
+    pub fn check(&self, what: impl FnOnce() -> String, bytes: u64) -> Result<()> {
+        let budget = self.max();
+        if bytes > budget {
+            return Err(Error::MemoryBudget {
+                what: what(),
+                bytes,
+                budget,
+                raise_to: rounded_up(bytes),
+            });
+        }
+        Ok(())
+    }
+
+    /// Charge `bytes` of GPU memory for `what`, on top of what is held: `Err(MemoryBudget)`
+    /// (naming what is already held) when the total would exceed the figure.
+    pub fn charge_gpu(&self, what: impl FnOnce() -> String, bytes: u64) -> Result<GpuCharge> {
+        let budget = self.max();
+        let held_now = &self.inner.gpu_held;
+        let mut held = held_now.load(Ordering::Relaxed);
+        loop {
+            let total = held.saturating_add(bytes);
+            if total > budget {
+                // What is already held only where there is some: "(0 bytes held)" is noise.
+                let what = match held {
+                    0 => what(),
+                    _ => format!(
+                        "{} ({bytes} bytes) with the {held} bytes of GPU memory already held",
+                        what()
+                    ),
+                };
+                return Err(Error::MemoryBudget {
+                    what,
+                    bytes: total,
+                    budget,
+                    raise_to: rounded_up(total),
+                });
+            }
+            match held_now.compare_exchange_weak(held, total, Ordering::Relaxed, Ordering::Relaxed)
+            {
+                Ok(_) => {
+                    return Ok(GpuCharge {
+                        bytes,
+                        budget: self.inner.clone(),
+                    })
+                }
+                Err(now) => held = now,
+            }
+        }
+    }
+}
+
+/// While alive, its [`Budget`] is the current one on this thread ([`Budget::enter`]).
+#[must_use = "the budget is current only while the guard lives"]
+pub struct Entered {
+    /// Entered on one thread, left on it.
+    _not_send: std::marker::PhantomData<*const ()>,
+}
+
+impl Drop for Entered {
+    fn drop(&mut self) {
+        ENTERED.with(|e| e.borrow_mut().pop());
+    }
+}
+
+/// `Err(MemoryBudget)` when `bytes` (the cost of `what`) exceed the current budget.
+pub(crate) fn check(what: impl FnOnce() -> String, bytes: u64) -> Result<()> {
+    Budget::current().check(what, bytes)
+}
+
+/// Charge `bytes` of GPU memory for `what` to the current budget.
+pub(crate) fn charge_gpu(what: impl FnOnce() -> String, bytes: u64) -> Result<GpuCharge> {
+    Budget::current().charge_gpu(what, bytes)
 }
 
 /// Peak bytes per point from file to a rendered frame: the cloud and its splats (positions,
@@ -63,55 +196,25 @@ pub(crate) fn check_points(points: u64) -> Result<()> {
     )
 }
 
-/// A GPU resource's share of the budget, given back when it is dropped (with the resource).
+/// A GPU resource's share of a budget, given back when it is dropped (with the resource).
 #[derive(Debug)]
-pub struct GpuCharge(u64);
+pub struct GpuCharge {
+    bytes: u64,
+    budget: Arc<Inner>,
+}
 
 impl GpuCharge {
     /// The bytes charged.
     pub fn bytes(&self) -> u64 {
-        self.0
+        self.bytes
     }
 }
 
 impl Drop for GpuCharge {
     fn drop(&mut self) {
-        GPU_HELD.fetch_sub(self.0, Ordering::Relaxed);
-    }
-}
-
-/// Bytes of GPU memory this process's textures and buffers hold now.
-pub fn gpu_held() -> u64 {
-    GPU_HELD.load(Ordering::Relaxed)
-}
-
-/// Charge `bytes` of GPU memory for `what` against the budget, on top of what is held:
-/// `Err(MemoryBudget)` (naming what is already held) when the total would exceed it.
-pub fn charge_gpu(what: impl FnOnce() -> String, bytes: u64) -> Result<GpuCharge> {
-    let budget = max_memory();
-    let mut held = GPU_HELD.load(Ordering::Relaxed);
-    loop {
-        let total = held.saturating_add(bytes);
-        if total > budget {
-            // What is already held only where there is some: "(0 bytes held)" is noise.
-            let what = match held {
-                0 => what(),
-                _ => format!(
-                    "{} ({bytes} bytes) with the {held} bytes of GPU memory already held",
-                    what()
-                ),
-            };
-            return Err(Error::MemoryBudget {
-                what,
-                bytes: total,
-                budget,
-                raise_to: rounded_up(total),
-            });
-        }
-        match GPU_HELD.compare_exchange_weak(held, total, Ordering::Relaxed, Ordering::Relaxed) {
-            Ok(_) => return Ok(GpuCharge(bytes)),
-            Err(now) => held = now,
-        }
+        self.budget
+            .gpu_held
+            .fetch_sub(self.bytes, Ordering::Relaxed);
     }
 }
 
@@ -203,6 +306,52 @@ mod tests {
                 "{bytes}"
             );
         }
+    }
+
+    /// Two hosts' budgets keep their own figures and totals: a charge is refused against the
+    /// smaller, held by the one it came from, and given back to it wherever it is dropped.
+    #[test]
+    fn budgets_are_values_of_their_own() {
+        use super::Budget;
+        let (small, large) = (Budget::new(1000), Budget::new(1 << 20));
+        let charge = small
+            .in_scope(|| super::charge_gpu(|| "a".into(), 600))
+            .unwrap();
+        assert_eq!((small.gpu_held(), large.gpu_held()), (600, 0));
+        let refused = small.in_scope(|| super::charge_gpu(|| "b".into(), 600));
+        let text = refused.unwrap_err().to_string();
+        assert!(
+            text.contains("already held") && text.contains("1000"),
+            "{text}"
+        );
+        let other = large
+            .in_scope(|| super::charge_gpu(|| "b".into(), 600))
+            .unwrap();
+        assert_eq!((small.gpu_held(), large.gpu_held()), (600, 600));
+        drop(charge);
+        assert_eq!((small.gpu_held(), large.gpu_held()), (0, 600));
+        drop(other);
+        assert_eq!(large.gpu_held(), 0);
+        // Clones are the same budget; a new figure applies to every clone.
+        let clone = small.clone();
+        clone.set_max(10);
+        assert!(small.in_scope(|| super::check(|| "c".into(), 11)).is_err());
+    }
+
+    /// The innermost budget entered is current; leaving restores the one outside.
+    #[test]
+    fn the_innermost_entered_budget_is_current() {
+        use super::Budget;
+        let (outer, inner) = (Budget::new(100), Budget::new(200));
+        let _outer = outer.enter();
+        assert_eq!(Budget::current().max(), 100);
+        inner.in_scope(|| assert_eq!(Budget::current().max(), 200));
+        assert_eq!(Budget::current().max(), 100);
+        // Another thread enters none: the process's default.
+        let there = std::thread::spawn(|| Budget::current().max())
+            .join()
+            .unwrap();
+        assert_eq!(there, super::DEFAULT_MAX_MEMORY);
     }
 
     #[test]

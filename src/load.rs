@@ -32,6 +32,9 @@ pub struct LoadOptions {
     pub points: PointLoad,
     /// Volumes.
     pub volume: VolumeLoad,
+    /// The memory budget the reading is checked against; `None`: the current one
+    /// ([`crate::budget::Budget::current`]).
+    pub budget: Option<crate::budget::Budget>,
 }
 
 /// How a mesh is prepared.
@@ -167,6 +170,14 @@ pub fn default_preset(format: Option<Format>) -> &'static str {
 /// or of another kind than `options.kind` is refused with [`Error::WrongKind`], naming the
 /// kind it holds.
 pub fn load(path: &Path, options: &LoadOptions) -> Result<AnyData> {
+    match &options.budget {
+        Some(budget) => budget.in_scope(|| load_in_budget(path, options)),
+        None => load_in_budget(path, options),
+    }
+}
+
+/// [`load`] against the current budget.
+fn load_in_budget(path: &Path, options: &LoadOptions) -> Result<AnyData> {
     let kind = match (options.kind, &options.volume.raw) {
         (Some(kind), _) => kind,
         (None, Some(_)) => DataKind::Volume,

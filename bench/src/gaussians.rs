@@ -140,11 +140,13 @@ pub fn run(args: &BenchArgs) -> Result<()> {
             } else {
                 f.view_scale = [1.0; 2];
             }
-            let held = autostereo::budget::gpu_held();
+            let held = autostereo::budget::Budget::current().gpu_held();
             let measured = (|| -> Result<_> {
                 let mut r = AnyRenderer::new(&ctx.device, &scene.data, &opts)?;
                 let (ms, picture) = time_and_image(&ctx, &timer, &scene.data, &mut r, &f, frames)?;
-                let bytes = autostereo::budget::gpu_held().saturating_sub(held);
+                let bytes = autostereo::budget::Budget::current()
+                    .gpu_held()
+                    .saturating_sub(held);
                 Ok((ms, bytes, (!panel).then_some(picture)))
             })();
             let (ms, bytes, picture) = match measured {

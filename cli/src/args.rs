@@ -271,11 +271,14 @@ pub struct MemoryArgs {
 }
 
 impl MemoryArgs {
-    /// Set the library's budget where the flag gives one.
-    pub fn apply(&self) {
-        if let Some(bytes) = self.max_memory {
-            autostereo::budget::set_max_memory(bytes);
-        }
+    /// The command's budget (the flag's figure, else the default), current on this thread
+    /// while the guard lives: hold it for the whole command.
+    #[must_use = "the budget applies only while the guard lives"]
+    pub fn apply(&self) -> autostereo::budget::Entered {
+        let bytes = self
+            .max_memory
+            .unwrap_or(autostereo::budget::DEFAULT_MAX_MEMORY);
+        autostereo::budget::Budget::new(bytes).enter()
     }
 }
 
@@ -360,13 +363,14 @@ pub struct RenderArgs {
 
 impl RenderArgs {
     /// Fail early on what can be checked before loading anything. `methods`: those of the
-    /// command's primitive (`primitive`, as a user says it); `input`: the file it reads.
+    /// command's primitive (`primitive`, as a user says it); `input`: the file it reads. The
+    /// command's memory budget is current while the guard returned lives.
     pub fn check(
         &self,
         primitive: &str,
         methods: &[Method],
         input: Option<&std::path::Path>,
-    ) -> Result<()> {
+    ) -> Result<autostereo::budget::Entered> {
         if let Some(input) = input {
             crate::claims::inputs(&[input]);
             if let Some(out) = &self.output.out {
@@ -402,8 +406,7 @@ impl RenderArgs {
             self.warp.synthesis.hole_mask.as_deref(),
         ])?;
         self.turntable.check(self.output.out.as_deref())?;
-        self.memory.apply();
-        Ok(())
+        Ok(self.memory.apply())
     }
 
     /// The renderer options the shared flags say (method, warp); each command adds its

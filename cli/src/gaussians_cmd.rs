@@ -78,7 +78,7 @@ pub fn builtin_scene() -> Gaussians {
 }
 
 pub fn run(args: GaussiansArgs) -> Result<()> {
-    args.common.check(
+    let _budget = args.common.check(
         "Gaussian splats",
         &autostereo::gaussians::METHODS,
         args.file.as_deref(),

@@ -97,7 +97,8 @@ impl MeshFlags {
 }
 
 pub fn run(args: MeshArgs) -> Result<()> {
-    args.common
+    let _budget = args
+        .common
         .check("meshes", &autostereo::mesh::METHODS, args.file.as_deref())?;
     args.mesh.check(args.common.method)?;
     let mesh = args.mesh.load(args.file.as_deref())?;

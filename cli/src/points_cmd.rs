@@ -115,8 +115,9 @@ fn parse_groups(s: &str) -> Result<GroupCount, String> {
 }
 
 pub fn run(args: PointsArgs) -> Result<()> {
-    args.common
-        .check("points", &autostereo::points::METHODS, args.file.as_deref())?;
+    let _budget =
+        args.common
+            .check("points", &autostereo::points::METHODS, args.file.as_deref())?;
     args.points.check(args.common.method)?;
     let start = Instant::now();
     let cloud = PointFlags::cloud(args.file.as_deref())?;

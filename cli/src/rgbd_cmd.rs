@@ -92,7 +92,7 @@ pub fn run(args: RgbdArgs) -> Result<()> {
         args.display
             .check_spatial_only(&args.output.format.name())?;
     }
-    args.memory.apply();
+    let _budget = args.memory.apply();
     let depth_options = DepthMapOptions {
         invert: args.depth_invert,
         resample: args.depth_resample,

@@ -46,7 +46,7 @@ pub fn timed<S: ?Sized>(
         }
     }
     Ok(Timed {
-        gpu_bytes: autostereo::budget::gpu_held(),
+        gpu_bytes: autostereo::budget::Budget::current().gpu_held(),
         how: renderer.describe(),
         image: target.read(device, queue)?,
         ms: median(&times),

@@ -35,7 +35,7 @@ pub struct ViewsArgs {
 pub fn run(args: ViewsArgs) -> Result<()> {
     check_output(&args.out)?;
     crate::args::not_an_input(&args.out, &[args.spatial.as_path()])?;
-    args.memory.apply();
+    let _budget = args.memory.apply();
     let display = args.display.display()?;
     let mask = display.mask();
     let n = mask.views();

@@ -245,7 +245,7 @@ pub fn run(args: VolumeArgs) -> Result<()> {
             path.display()
         );
     }
-    args.common.check(
+    let _budget = args.common.check(
         "volumes",
         &autostereo::volume::METHODS,
         args.file.as_deref(),

@@ -184,7 +184,7 @@ pub fn run(args: ViewArgs, given: &clap::ArgMatches) -> Result<()> {
     if args.quit_after_frames == Some(0) {
         anyhow::bail!("--quit-after-frames 0: at least one frame");
     }
-    args.memory.apply();
+    let _budget = args.memory.apply();
     // Fail on a bad display or flags of another primitive before opening a window.
     args.display.display()?;
     args.scene_flags().check(given)?;

@@ -126,6 +126,7 @@ pub fn load(ctx: &autostereo::gpu::GpuContext, flags: &SceneFlags) -> Result<Vie
                 mesh: flags.mesh.load_options(),
                 points: flags.points.load_options(),
                 volume: flags.volume_data.volume_load()?,
+                budget: None,
             };
             autostereo::load(path, &options)?
         }

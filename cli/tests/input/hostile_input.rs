@@ -93,7 +93,7 @@ fn volumes_over_the_memory_budget_are_refused_from_the_header() {
         .unwrap_err()
         .to_string();
     assert!(
-        e.contains("memory budget") && e.contains("set_max_memory"),
+        e.contains("memory budget") && e.contains("Budget::set_max"),
         "{e}"
     );
     assert!(e.contains("huge.nrrd"), "names the file: {e}");

@@ -261,7 +261,7 @@ fn png(name: &str, w: u32, h: u32) -> PathBuf {
 #[test]
 fn budget_errors_name_max_memory_and_a_figure_it_takes() {
     // Every command with --max-memory says raise it with --max-memory (never the library's
-    // budget::set_max_memory) and to what, in a figure the flag takes.
+    // Budget::set_max) and to what, in a figure the flag takes.
     let target = out("vocabulary_errors_budget.png");
     let target = target.to_str().unwrap();
     let colour = png("vocabulary_errors_rgbd_colour.png", 16, 16);
@@ -282,7 +282,7 @@ fn budget_errors_name_max_memory_and_a_figure_it_takes() {
         let text = error_text(&stderr);
         assert!(text.contains("memory budget of 1024 bytes"), "{text}");
         assert!(
-            !text.contains("set_max_memory") && !text.contains("budget::"),
+            !text.contains("set_max") && !text.contains("Budget::"),
             "{command:?}: library names: {text}"
         );
         let at = text
