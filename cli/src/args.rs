@@ -348,7 +348,10 @@ pub struct RenderArgs {
     /// with --output quilt also the size of the quilt's tiles.
     #[arg(long, value_name = "WxH", value_parser = parse_size, conflicts_with = "view_scale", help_heading = "Method")]
     pub view_size: Option<[u32; 2]>,
-    #[command(flatten)]
+    /// The warp flags, where the command has them: the commands whose primitive has the warp
+    /// method flatten `WarpArgs` of their own and hand it over ([`RenderArgs::with_warp`]);
+    /// the others have none to give (clap refuses the flags there).
+    #[arg(skip)]
     pub warp: crate::warp_cmd::WarpArgs,
     #[command(flatten)]
     pub output: crate::output::OutputArgs,
@@ -362,24 +365,18 @@ pub struct RenderArgs {
 }
 
 impl RenderArgs {
-    /// Fail early on what can be checked before loading anything. `methods`: those of the
-    /// command's primitive (`primitive`, as a user says it); `input`: the file it reads. The
-    /// command's memory budget is current while the guard returned lives.
-    pub fn check(
-        &self,
-        primitive: &str,
-        methods: &[Method],
-        input: Option<&std::path::Path>,
-    ) -> Result<autostereo::budget::Entered> {
+    /// These flags with the command's warp flags.
+    pub fn with_warp(self, warp: crate::warp_cmd::WarpArgs) -> Self {
+        Self { warp, ..self }
+    }
+
+    /// Fail early on what can be checked before loading anything; `input`: the file the
+    /// command reads. The command's memory budget is current while the guard returned lives.
+    pub fn check(&self, input: Option<&std::path::Path>) -> Result<autostereo::budget::Entered> {
         if let Some(input) = input {
             crate::claims::inputs(&[input]);
             if let Some(out) = &self.output.out {
                 not_an_input(out, &[input])?;
-            }
-        }
-        if !methods.contains(&Method::Warp) {
-            if let Some(flag) = self.warp.given() {
-                bail!("{flag}: {primitive} have no warp method, so no warp flags (drop it)");
             }
         }
         self.output

@@ -78,11 +78,7 @@ pub fn builtin_scene() -> Gaussians {
 }
 
 pub fn run(args: GaussiansArgs) -> Result<()> {
-    let _budget = args.common.check(
-        "Gaussian splats",
-        &autostereo::gaussians::METHODS,
-        args.file.as_deref(),
-    )?;
+    let _budget = args.common.check(args.file.as_deref())?;
     args.gaussians.check(args.common.method)?;
     let start = Instant::now();
     let gaussians = args.gaussians.load(args.file.as_deref())?;

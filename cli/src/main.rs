@@ -67,12 +67,7 @@ enum Command {
     /// is given).
     #[command(
         after_help = examples::GAUSSIANS,
-        mut_arg("method", |a| method_arg::method_arg(a, "Gaussian splats", &autostereo::gaussians::METHODS)),
-        // No warp for Gaussian splats: its flags are not offered (and refused by name).
-        mut_arg("references", |a| a.hide(true)),
-        mut_arg("hole_gap", |a| a.hide(true)),
-        mut_arg("warp_path", |a| a.hide(true)),
-        mut_arg("hole_mask", |a| a.hide(true))
+        mut_arg("method", |a| method_arg::method_arg(a, "Gaussian splats", &autostereo::gaussians::METHODS))
     )]
     Gaussians(gaussians_cmd::GaussiansArgs),
     /// An RGB-D image (colour + depth, or side by side) to any display, a quilt or per-view

@@ -18,6 +18,8 @@ pub struct MeshArgs {
     file: Option<PathBuf>,
     #[command(flatten)]
     common: RenderArgs,
+    #[command(flatten)]
+    warp: crate::warp_cmd::WarpArgs,
     #[command(flatten, next_help_heading = "Method")]
     mesh: MeshFlags,
 }
@@ -96,10 +98,9 @@ impl MeshFlags {
     }
 }
 
-pub fn run(args: MeshArgs) -> Result<()> {
-    let _budget = args
-        .common
-        .check("meshes", &autostereo::mesh::METHODS, args.file.as_deref())?;
+pub fn run(mut args: MeshArgs) -> Result<()> {
+    args.common = args.common.with_warp(std::mem::take(&mut args.warp));
+    let _budget = args.common.check(args.file.as_deref())?;
     args.mesh.check(args.common.method)?;
     let mesh = args.mesh.load(args.file.as_deref())?;
     let bounds = mesh.bounds().context("the mesh has no vertices")?;

@@ -20,6 +20,8 @@ pub struct PointsArgs {
     file: Option<PathBuf>,
     #[command(flatten)]
     common: RenderArgs,
+    #[command(flatten)]
+    warp: crate::warp_cmd::WarpArgs,
     #[command(flatten, next_help_heading = "Method")]
     points: PointFlags,
 }
@@ -114,10 +116,9 @@ fn parse_groups(s: &str) -> Result<GroupCount, String> {
     }
 }
 
-pub fn run(args: PointsArgs) -> Result<()> {
-    let _budget =
-        args.common
-            .check("points", &autostereo::points::METHODS, args.file.as_deref())?;
+pub fn run(mut args: PointsArgs) -> Result<()> {
+    args.common = args.common.with_warp(std::mem::take(&mut args.warp));
+    let _budget = args.common.check(args.file.as_deref())?;
     args.points.check(args.common.method)?;
     let start = Instant::now();
     let cloud = PointFlags::cloud(args.file.as_deref())?;

@@ -35,6 +35,8 @@ pub struct VolumeArgs {
     data: VolumeDataArgs,
     #[command(flatten)]
     common: RenderArgs,
+    #[command(flatten)]
+    warp: crate::warp_cmd::WarpArgs,
     #[command(flatten, next_help_heading = "Method")]
     render: VolumeRenderArgs,
     /// Retired: `--output anaglyph --out F.png` writes the red/cyan anaglyph.
@@ -237,7 +239,8 @@ impl VolumeDataArgs {
     }
 }
 
-pub fn run(args: VolumeArgs) -> Result<()> {
+pub fn run(mut args: VolumeArgs) -> Result<()> {
+    args.common = args.common.with_warp(std::mem::take(&mut args.warp));
     if let Some(path) = &args.anaglyph {
         bail!(
             "--anaglyph was retired: write the red/cyan anaglyph with --output anaglyph --out {} \
@@ -245,11 +248,7 @@ pub fn run(args: VolumeArgs) -> Result<()> {
             path.display()
         );
     }
-    let _budget = args.common.check(
-        "volumes",
-        &autostereo::volume::METHODS,
-        args.file.as_deref(),
-    )?;
+    let _budget = args.common.check(args.file.as_deref())?;
     args.render.check(args.common.method)?;
     let VolumeData {
         volume,

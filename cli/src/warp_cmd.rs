@@ -11,7 +11,7 @@ use autostereo::warp::{WarpOptions, WarpPath};
 use autostereo::RendererOptions;
 
 /// How a warp makes its views: the flags `--method warp` and `rgbd` (always a warp) share.
-#[derive(clap::Args, Clone, Debug)]
+#[derive(clap::Args, Clone, Debug, Default)]
 #[command(next_help_heading = "Warping (--method warp; rgbd)")]
 pub struct WarpSynthesisArgs {
     /// Neighbours warped further apart than this many pixels straddle a disocclusion, filled
@@ -56,8 +56,9 @@ impl WarpSynthesisArgs {
     }
 }
 
-/// The warp method's flags (refused with any other method).
-#[derive(clap::Args)]
+/// The warp method's flags (refused with any other method): only the commands whose primitive
+/// has the warp method (mesh, points, volume) have them.
+#[derive(clap::Args, Clone, Debug, Default)]
 pub struct WarpArgs {
     /// With --method warp: reference views R, 1 … N, spread evenly over the views (default 2:
     /// the outermost views; 1: the centre view).

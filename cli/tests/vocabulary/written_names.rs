@@ -156,7 +156,7 @@ fn compare_refuses_only_a_run_that_is_the_oracle_itself() {
 fn gaussian_splats_have_no_warp_flags() {
     cli_refused(
         &["gaussians", "--references", "2", "--json"],
-        &["--references: Gaussian splats have no warp method"],
+        &["--references is not a flag of `autostereo gaussians`; `autostereo mesh`, `autostereo points`, `autostereo volume` take it"],
     );
     let help = common::cli_out(&["gaussians", "--help"]).1;
     assert!(
