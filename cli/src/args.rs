@@ -188,32 +188,6 @@ pub fn flags_given<T: clap::Args>(matches: &clap::ArgMatches) -> Vec<String> {
     given.into_iter().map(|(_, flag)| flag).collect()
 }
 
-/// Refuse two outputs of one run at the same path (the second would overwrite the first).
-pub fn distinct_outputs(paths: &[Option<&std::path::Path>]) -> Result<()> {
-    let given: Vec<&std::path::Path> = paths.iter().flatten().copied().collect();
-    for (i, a) in given.iter().enumerate() {
-        if given[i + 1..].iter().any(|b| same_file(a, b)) {
-            bail!(
-                "{} is named for two outputs of this run: give each its own file",
-                a.display()
-            );
-        }
-    }
-    Ok(())
-}
-
-/// Refuse an output that is one of the run's input files (it would be overwritten).
-pub fn not_an_input(out: &std::path::Path, inputs: &[&std::path::Path]) -> Result<()> {
-    if let Some(input) = inputs.iter().find(|i| same_file(out, i)) {
-        bail!(
-            "--out {}: that is the input file {}; writing would destroy it (choose another name)",
-            out.display(),
-            input.display()
-        );
-    }
-    Ok(())
-}
-
 /// The same file: the same path, or both existing and canonically the same.
 pub fn same_file(a: &std::path::Path, b: &std::path::Path) -> bool {
     a == b
@@ -364,6 +338,15 @@ pub struct RenderArgs {
     pub timing: FramesArgs,
 }
 
+/// What a render command holds once its flags are checked.
+pub struct Checked {
+    /// The files it reads and writes.
+    pub claims: crate::claims::Claims,
+    /// Its memory budget, current while this lives (held, never read).
+    #[allow(dead_code, reason = "a guard: the budget is current while it lives")]
+    pub budget: autostereo::budget::Entered,
+}
+
 impl RenderArgs {
     /// These flags with the command's warp flags.
     pub fn with_warp(self, warp: crate::warp_cmd::WarpArgs) -> Self {
@@ -371,14 +354,14 @@ impl RenderArgs {
     }
 
     /// Fail early on what can be checked before loading anything; `input`: the file the
-    /// command reads. The command's memory budget is current while the guard returned lives.
-    pub fn check(&self, input: Option<&std::path::Path>) -> Result<autostereo::budget::Entered> {
-        if let Some(input) = input {
-            crate::claims::inputs(&[input]);
-            if let Some(out) = &self.output.out {
-                not_an_input(out, &[input])?;
-            }
-        }
+    /// command reads. Returns the run's claims on its files (the names given checked) and its
+    /// memory budget, current while the guard lives.
+    pub fn check(&self, input: Option<&std::path::Path>) -> Result<Checked> {
+        let claims = crate::claims::Claims::new(&input.into_iter().collect::<Vec<_>>());
+        claims.check(&crate::claims::given(&[
+            (self.output.out.as_deref(), "--out"),
+            (self.warp.synthesis.hole_mask.as_deref(), "--hole-mask"),
+        ]))?;
         self.output
             .check(self.compare || self.timing.frames.is_some())?;
         let scaled = [Method::NPass, Method::Tiled, Method::Layered, Method::Mrt];
@@ -398,12 +381,11 @@ impl RenderArgs {
             self.display
                 .check_spatial_only(&self.output.format.name())?;
         }
-        distinct_outputs(&[
-            self.output.out.as_deref(),
-            self.warp.synthesis.hole_mask.as_deref(),
-        ])?;
         self.turntable.check(self.output.out.as_deref())?;
-        Ok(self.memory.apply())
+        Ok(Checked {
+            claims,
+            budget: self.memory.apply(),
+        })
     }
 
     /// The renderer options the shared flags say (method, warp); each command adds its

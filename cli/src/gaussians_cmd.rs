@@ -78,7 +78,7 @@ pub fn builtin_scene() -> Gaussians {
 }
 
 pub fn run(args: GaussiansArgs) -> Result<()> {
-    let _budget = args.common.check(args.file.as_deref())?;
+    let checked = args.common.check(args.file.as_deref())?;
     args.gaussians.check(args.common.method)?;
     let start = Instant::now();
     let gaussians = args.gaussians.load(args.file.as_deref())?;
@@ -113,6 +113,7 @@ pub fn run(args: GaussiansArgs) -> Result<()> {
     let Rendered { run, fields, diff } = render_and_save(
         &ctx,
         &args.common,
+        checked.claims,
         &options,
         renderer.as_mut(),
         |o| o.gaussians_renderer(device),

@@ -38,7 +38,7 @@ pub struct InterleaveArgs {
 
 pub fn run(args: InterleaveArgs) -> Result<()> {
     check_output(&args.out)?;
-    crate::args::not_an_input(&args.out, &[args.quilt.as_path()])?;
+    crate::claims::Claims::new(&[args.quilt.as_path()]).check(&[(args.out.clone(), "--out")])?;
     let _budget = args.memory.apply();
     let display = args.display.display()?;
     let image = RgbImage::load(&args.quilt)?;

@@ -100,7 +100,7 @@ impl MeshFlags {
 
 pub fn run(mut args: MeshArgs) -> Result<()> {
     args.common = args.common.with_warp(std::mem::take(&mut args.warp));
-    let _budget = args.common.check(args.file.as_deref())?;
+    let checked = args.common.check(args.file.as_deref())?;
     args.mesh.check(args.common.method)?;
     let mesh = args.mesh.load(args.file.as_deref())?;
     let bounds = mesh.bounds().context("the mesh has no vertices")?;
@@ -120,6 +120,7 @@ pub fn run(mut args: MeshArgs) -> Result<()> {
     } = render_and_save(
         &ctx,
         &args.common,
+        checked.claims,
         &options,
         renderer.as_mut(),
         |o| o.mesh_renderer(device),

@@ -118,7 +118,7 @@ fn parse_groups(s: &str) -> Result<GroupCount, String> {
 
 pub fn run(mut args: PointsArgs) -> Result<()> {
     args.common = args.common.with_warp(std::mem::take(&mut args.warp));
-    let _budget = args.common.check(args.file.as_deref())?;
+    let checked = args.common.check(args.file.as_deref())?;
     args.points.check(args.common.method)?;
     let start = Instant::now();
     let cloud = PointFlags::cloud(args.file.as_deref())?;
@@ -156,6 +156,7 @@ pub fn run(mut args: PointsArgs) -> Result<()> {
     let Rendered { run, fields, diff } = render_and_save(
         &ctx,
         &args.common,
+        checked.claims,
         &options,
         renderer.as_mut(),
         |o| o.points_renderer(device, &scene),

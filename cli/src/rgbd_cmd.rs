@@ -80,14 +80,11 @@ pub fn run(args: RgbdArgs) -> Result<()> {
         .into_iter()
         .flatten()
         .collect();
-    crate::claims::inputs(&inputs);
-    for out in [args.output.out.as_deref(), args.warp.hole_mask.as_deref()]
-        .into_iter()
-        .flatten()
-    {
-        crate::args::not_an_input(out, &inputs)?;
-    }
-    crate::args::distinct_outputs(&[args.output.out.as_deref(), args.warp.hole_mask.as_deref()])?;
+    let mut claims = crate::claims::Claims::new(&inputs);
+    claims.check(&crate::claims::given(&[
+        (args.output.out.as_deref(), "--out"),
+        (args.warp.hole_mask.as_deref(), "--hole-mask"),
+    ]))?;
     if args.output.format != crate::output::OutputArg::Spatial {
         args.display
             .check_spatial_only(&args.output.format.name())?;
@@ -113,7 +110,7 @@ pub fn run(args: RgbdArgs) -> Result<()> {
     let (device, queue) = (&ctx.device, &ctx.queue);
     let scene = RgbdScene::new(device, queue, &image)?;
     let mut warp = RgbdWarp::new(device, options)?;
-    crate::claims::check_planned(&crate::output::planned(
+    claims.check(&crate::output::planned(
         &frame,
         &args.output,
         None,
@@ -131,6 +128,7 @@ pub fn run(args: RgbdArgs) -> Result<()> {
             &scene,
             &frame,
             &args.output,
+            &mut claims,
             Some(&run.image),
             out,
         )?;
@@ -143,7 +141,7 @@ pub fn run(args: RgbdArgs) -> Result<()> {
             ..options
         });
         let mask = warp.render_image(device, queue, &scene, &frame)?;
-        crate::claims::save_png(&mask, path, "--hole-mask")?;
+        claims.save_png(&mask, path, "--hole-mask")?;
         let share = crate::warp_cmd::hole_share(&mask);
         hole_share = Some(share);
         if !args.output.json {

@@ -197,6 +197,7 @@ pub struct Rendered {
 pub fn render_and_save<S: ?Sized>(
     ctx: &GpuContext,
     common: &crate::args::RenderArgs,
+    mut claims: crate::claims::Claims,
     options: &autostereo::RendererOptions,
     renderer: &mut dyn Renderer<S>,
     build: impl Fn(&autostereo::RendererOptions) -> autostereo::Result<Box<dyn Renderer<S>>>,
@@ -214,15 +215,23 @@ pub fn render_and_save<S: ?Sized>(
         );
     }
     // (--hole-mask is refused with any method but the warp: RenderArgs::check.)
-    crate::claims::check_planned(&crate::output::planned(
+    claims.check(&crate::output::planned(
         frame,
         &common.output,
         common.turntable.turntable,
         common.warp.synthesis.hole_mask.as_deref(),
     )?)?;
     let run = timed(ctx, renderer, scene, frame, &common.timing)?;
-    let mut saved =
-        crate::output::save_all(ctx, renderer, scene, frame, bounds, common, &run.image)?;
+    let mut saved = crate::output::save_all(
+        ctx,
+        renderer,
+        scene,
+        frame,
+        bounds,
+        common,
+        &mut claims,
+        &run.image,
+    )?;
     let diff = match common.compare {
         true => Some(compare_with(
             ctx,
@@ -234,8 +243,16 @@ pub fn render_and_save<S: ?Sized>(
         false => None,
     };
     if common.method == autostereo::render::Method::Warp {
-        let holes =
-            crate::warp_cmd::hole_report(ctx, common, options, &build, scene, frame, &mut saved)?;
+        let holes = crate::warp_cmd::hole_report(
+            ctx,
+            common,
+            &mut claims,
+            options,
+            &build,
+            scene,
+            frame,
+            &mut saved,
+        )?;
         merge(&mut extra, holes);
     }
     merge(&mut extra, saved.fields());

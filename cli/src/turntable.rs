@@ -131,6 +131,7 @@ pub fn render<S: ?Sized>(
     frame: &Frame,
     bounds: Bounds,
     common: &RenderArgs,
+    claims: &mut crate::claims::Claims,
 ) -> Result<Option<Summary>> {
     let (Some(frames), Some(out)) = (common.turntable.turntable, &common.output.out) else {
         return Ok(None);
@@ -150,6 +151,7 @@ pub fn render<S: ?Sized>(
             scene,
             &this,
             &common.output,
+            claims,
             None,
             &numbered(out, k, quilt),
         )?;

@@ -34,7 +34,7 @@ pub struct ViewsArgs {
 
 pub fn run(args: ViewsArgs) -> Result<()> {
     check_output(&args.out)?;
-    crate::args::not_an_input(&args.out, &[args.spatial.as_path()])?;
+    crate::claims::Claims::new(&[args.spatial.as_path()]).check(&[(args.out.clone(), "--out")])?;
     let _budget = args.memory.apply();
     let display = args.display.display()?;
     let mask = display.mask();

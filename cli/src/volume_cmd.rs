@@ -248,7 +248,7 @@ pub fn run(mut args: VolumeArgs) -> Result<()> {
             path.display()
         );
     }
-    let _budget = args.common.check(args.file.as_deref())?;
+    let checked = args.common.check(args.file.as_deref())?;
     args.render.check(args.common.method)?;
     let VolumeData {
         volume,
@@ -306,6 +306,7 @@ pub fn run(mut args: VolumeArgs) -> Result<()> {
     let Rendered { run, fields, diff } = render_and_save(
         &ctx,
         &args.common,
+        checked.claims,
         &options,
         renderer.as_mut(),
         |o| o.volume_renderer(&ctx.device),

@@ -125,6 +125,7 @@ pub fn hole_share(mask: &autostereo::image_io::RgbImage) -> f64 {
 pub fn hole_report<S: ?Sized>(
     ctx: &GpuContext,
     common: &crate::args::RenderArgs,
+    claims: &mut crate::claims::Claims,
     options: &RendererOptions,
     build: impl FnOnce(&RendererOptions) -> autostereo::Result<Box<dyn Renderer<S>>>,
     scene: &S,
@@ -137,7 +138,7 @@ pub fn hole_report<S: ?Sized>(
     let mut warp = build(&options)?;
     let mask = warp.render_image(&ctx.device, &ctx.queue, scene, frame)?;
     if let Some(path) = &args.synthesis.hole_mask {
-        crate::claims::save_png(&mask, path, "--hole-mask")?;
+        claims.save_png(&mask, path, "--hole-mask")?;
         crate::output::say_written(json, std::slice::from_ref(path));
         saved.written.push(path.clone());
     }

@@ -248,6 +248,7 @@ pub fn report_written(json: bool, mut fields: serde_json::Value, written: &[Path
 
 /// What a render command writes after its timed run: `--out` in `--output`'s format, or with
 /// `--turntable` its numbered frames (scene turned around the centre of `bounds`).
+#[allow(clippy::too_many_arguments)]
 pub fn save_all<S: ?Sized>(
     ctx: &GpuContext,
     renderer: &mut dyn Renderer<S>,
@@ -255,17 +256,27 @@ pub fn save_all<S: ?Sized>(
     frame: &Frame,
     bounds: autostereo::camera::Bounds,
     common: &crate::args::RenderArgs,
+    claims: &mut crate::claims::Claims,
     spatial: &RgbImage,
 ) -> Result<Saved> {
     let output = &common.output;
-    let turntable = crate::turntable::render(ctx, renderer, scene, frame, bounds, common)?;
+    let turntable = crate::turntable::render(ctx, renderer, scene, frame, bounds, common, claims)?;
     let written = if let Some(summary) = &turntable {
         if !output.json {
             eprintln!("{}", summary.line());
         }
         summary.written.clone()
     } else if let Some(out) = &output.out {
-        let written = write(ctx, renderer, scene, frame, output, Some(spatial), out)?;
+        let written = write(
+            ctx,
+            renderer,
+            scene,
+            frame,
+            output,
+            claims,
+            Some(spatial),
+            out,
+        )?;
         say_written(output.json, &written);
         if output.format == OutputArg::Spatial {
             crate::run::how_to_look(out, common, frame);
@@ -279,12 +290,14 @@ pub fn save_all<S: ?Sized>(
 
 /// Write `--out` in `--output`'s format; `spatial` is the frame's image if already rendered
 /// (else the spatial format renders it). Returns what was written.
+#[allow(clippy::too_many_arguments)]
 pub fn write<S: ?Sized>(
     ctx: &GpuContext,
     renderer: &mut dyn Renderer<S>,
     scene: &S,
     frame: &Frame,
     output: &OutputArgs,
+    claims: &mut crate::claims::Claims,
     spatial: Option<&RgbImage>,
     out: &Path,
 ) -> Result<Vec<PathBuf>> {
@@ -310,7 +323,7 @@ pub fn write<S: ?Sized>(
         Ok(target)
     };
     if let Some((format, eye)) = output.format.stereo(frame.size) {
-        crate::claims::claim(out, "--out")?;
+        claims.claim(out, "--out")?;
         let [l, r] = eye_views(output.eyes, views)?;
         let (left, right) = (one(l, eye, false)?, one(r, eye, false)?);
         let target = SpatialTarget::new(&ctx.device, format.output_size(eye))?;
@@ -335,7 +348,7 @@ pub fn write<S: ?Sized>(
         OutputArg::Views => {
             let written: Vec<PathBuf> = (0..views).map(|v| view_file(out, v, views)).collect();
             for path in &written {
-                crate::claims::claim(path, "--out")?;
+                claims.claim(path, "--out")?;
             }
             for (v, path) in (0..views).zip(&written) {
                 one(v, frame.size, false)?
@@ -347,7 +360,7 @@ pub fn write<S: ?Sized>(
         OutputArg::Quilt => {
             let layout = frame_quilt(frame, output)?;
             let named = layout.file_name(out);
-            crate::claims::claim(&named, "--out")?;
+            claims.claim(&named, "--out")?;
             let [w, h] = layout.size();
             RgbImage::check_size(w, h).context("--output quilt")?;
             let mut quilt = RgbImage::new(w, h);
@@ -365,7 +378,7 @@ pub fn write<S: ?Sized>(
             Ok(vec![named])
         }
         _ => {
-            crate::claims::claim(out, "--out")?;
+            claims.claim(out, "--out")?;
             match spatial {
                 Some(image) => image.save_png(out)?,
                 None => renderer

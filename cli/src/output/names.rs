@@ -1,6 +1,6 @@
 //! The files an output is written to: the quilt's grid and its Looking Glass name (a name
 //! that says another quilt refused), per-view file names, and every name a run will write
-//! (for `claims::check_planned`).
+//! (for `Claims::check`).
 
 use std::path::{Path, PathBuf};
 
@@ -62,7 +62,7 @@ pub fn frame_quilt(frame: &Frame, output: &OutputArgs) -> Result<QuiltLayout> {
 }
 
 /// The files a run will write, each with the flag that names it: `out` in `output`'s format
-/// (with `turntable` frames, each frame's), then a `hole_mask`. For `claims::check_planned`,
+/// (with `turntable` frames, each frame's), then a `hole_mask`. For `Claims::check`,
 /// before the run renders; a quilt `--out` whose name says another quilt is refused here.
 pub fn planned(
     frame: &Frame,
