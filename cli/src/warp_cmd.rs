@@ -122,6 +122,7 @@ pub fn hole_share(mask: &autostereo::image_io::RgbImage) -> f64 {
 /// The report fields of a warp: R, the path, what depth the references carry, and the share
 /// of subpixels filled rather than seen (from a hole-mask render of the renderer `build` makes
 /// from `options`, written where asked).
+#[allow(clippy::too_many_arguments)]
 pub fn hole_report<S: ?Sized>(
     ctx: &GpuContext,
     common: &crate::args::RenderArgs,
