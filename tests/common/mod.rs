@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use std::sync::{Mutex, MutexGuard, OnceLock};
 
 use autostereo::gpu::{GpuContext, GpuOptions};
-use autostereo::image_io::RgbImage;
+use autostereo::image_io::{compare, ImageDiff, RgbImage};
 
 /// The process-wide GPU context, locked so that tests in one binary take turns on it.
 pub fn gpu() -> MutexGuard<'static, GpuContext> {
@@ -38,6 +38,15 @@ pub fn out(name: &str) -> PathBuf {
     out_dir().join(name)
 }
 
+/// `contents` written as the test input file `name` (target/test-input, git-ignored).
+pub fn input_file(name: &str, contents: impl AsRef<[u8]>) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("../test-input");
+    std::fs::create_dir_all(&dir).expect("create target/test-input");
+    let path = dir.join(name);
+    std::fs::write(&path, contents).unwrap();
+    path
+}
+
 /// Save `image` and an amplified |a − b| diff image under `name` for inspection on failure.
 pub fn save_diff(name: &str, a: &RgbImage, b: &RgbImage) -> PathBuf {
     let dir = out_dir();
@@ -52,6 +61,27 @@ pub fn save_diff(name: &str, a: &RgbImage, b: &RgbImage) -> PathBuf {
     diff.save_png(&path).unwrap();
     path
 }
+
+/// `image` matches `reference` on ≥ 99.9 % of subpixels within 2/255 (diff images saved on
+/// failure).
+pub fn assert_matches(name: &str, image: &RgbImage, reference: &RgbImage) -> ImageDiff {
+    let diff = compare(image, reference).unwrap();
+    if diff.frac_off_2 > 0.001 {
+        let path = save_diff(name, image, reference);
+        panic!("{name}: {diff:?} (diff image {})", path.display());
+    }
+    diff
+}
+
+/// The displays the per-view duplication methods are compared on, with an image size each:
+/// N = 1, 2, 8 (two masks, one of them per subpixel), 45.
+pub const DISPLAYS: &[(&str, [u32; 2])] = &[
+    ("lenticular:1", [64, 48]),
+    ("slanted:2,2.5,1/3,0.1", [64, 48]),
+    ("hubner8", [96, 64]),
+    ("lenticular:8", [96, 64]),
+    ("slanted:45,7.5,1/6,0.2", [80, 60]),
+];
 
 /// A `size` frame looking at `bounds` on display `spec`, with `separation_share` × the bounding
 /// radius between views and the focal plane at `focal_scale` × the framing distance.

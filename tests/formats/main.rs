@@ -1,12 +1,15 @@
-//! Reading files: every format, its refusals, the fuzz inputs replayed; `autostereo::load`.
+//! Reading files: every format (every mesh format as its OBJ), its refusals, bad input, the fuzz
+//! inputs replayed; `autostereo::load`.
 //! One test binary (fewer binaries: less linking, less disk); a module per theme.
 
 #[path = "../common/mod.rs"]
 mod common;
 
+mod bad_input;
 mod every_format;
 mod fuzz_regressions;
 mod gaussians_formats;
+mod mesh_formats;
 mod points_las;
 mod volume_dicom;
 mod volume_formats;

@@ -3,7 +3,7 @@
 
 use crate::common;
 
-use autostereo::camera::MultiViewCamera;
+use autostereo::camera::{CameraModel, MultiViewCamera};
 use autostereo::display::{Display, DisplayKind};
 use autostereo::frame::Frame;
 use autostereo::image_io::RgbImage;
@@ -15,20 +15,27 @@ use autostereo::target::SpatialTarget;
 use glam::{Mat4, Vec3};
 
 const SIZE: [u32; 2] = [256, 256];
-const FD: f32 = 10.0;
+/// The focal distance of [`camera`].
+pub(crate) const FD: f32 = 10.0;
 
-/// Camera at the world origin looking down −z (world = eye space), focal plane at z = −10.
-fn camera(views: u32, separation: f32) -> MultiViewCamera {
+/// Camera at the world origin looking down −z (world = eye space), focal plane at z = −10
+/// ([`FD`]), 40° vertical field of view (tests/meshes/camera_models.rs uses it too).
+pub(crate) fn camera(
+    views: u32,
+    separation: f32,
+    aspect: f32,
+    model: CameraModel,
+) -> MultiViewCamera {
     MultiViewCamera {
         eye_from_world: Mat4::IDENTITY,
         views,
         separation,
         focal_distance: FD,
         fov_y: 40f32.to_radians(),
-        aspect: 1.0,
+        aspect,
         near: 1.0,
         far: 40.0,
-        model: Default::default(),
+        model,
         window_offset: glam::Vec2::ZERO,
     }
 }
@@ -54,7 +61,12 @@ fn frame(views: u32, separation: f32) -> Frame {
         phase: 0.25,
     })
     .unwrap();
-    Frame::new(camera(views, separation), display, SIZE).unwrap()
+    Frame::new(
+        camera(views, separation, 1.0, CameraModel::default()),
+        display,
+        SIZE,
+    )
+    .unwrap()
 }
 
 fn npass() -> MeshNPass {

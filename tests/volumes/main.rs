@@ -1,8 +1,9 @@
-//! Volume renderers against the N-pass; sample sharing.
+//! Volume renderers against the N-pass; duplication; sample sharing.
 //! One test binary (fewer binaries: less linking, less disk); a module per theme.
 
 #[path = "../common/mod.rs"]
 mod common;
 
+mod duplication;
 mod share_samples;
 mod volume;

@@ -8,8 +8,12 @@ fn a_file_of_another_kind_names_the_command_that_reads_it() {
         "head.nrrd",
         b"NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n\n\0\0\0\0\0\0\0\0",
     );
-    let stl = write("part.stl", &stl_binary(&torus()));
-    let obj = write("bunny.obj", obj_text(&torus(), None).as_bytes());
+    let stl = write(
+        "part.stl",
+        b"solid part\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n\
+          endloop\nendfacet\nendsolid part\n",
+    );
+    let obj = write("bunny.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     let cloud = write(
         "cloud.ply",
         b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n",

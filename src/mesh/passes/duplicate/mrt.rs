@@ -3,7 +3,7 @@
 //! own render target and α = 0 (blended away) to the others; the targets are layers of the
 //! N-pass's array and share one depth buffer, as in the paper. That sharing is the method's
 //! error: a nearer fragment of one view hides farther ones of the other views of its pass
-//! (measured against the N-pass in cli/tests/accuracy/duplication.rs).
+//! (measured against the N-pass in tests/meshes/duplication.rs).
 
 use super::{batches, draw_mesh, mesh_pipeline, BatchedViews, BoundBatches};
 use crate::error::Result;
