@@ -402,7 +402,7 @@ impl RenderArgs {
     pub fn frame(&self, bounds: autostereo::camera::Bounds) -> Result<Frame> {
         let display = self.display.display()?;
         let size = image_size(self.size, &display);
-        let camera = self.camera.camera(bounds, &display, size)?;
+        let camera = self.camera.settings().camera(bounds, &display, size)?;
         let mut frame = Frame::new(camera, display, size)?;
         match self.view_size {
             Some(views) => frame

@@ -1,9 +1,7 @@
 //! The camera flags every render command and the viewer share (`--separation`, `--baseline`,
 //! `--focal`, `--fov`, `--camera`, `--look-from/--look-at/--up`), and their parsers.
 
-use anyhow::Result;
-use autostereo::camera::MultiViewCamera;
-use autostereo::display::Display;
+use autostereo::camera::{CameraSettings, Focal, Spread};
 use clap::builder::TypedValueParser;
 
 /// Camera flags shared by the renderers.
@@ -95,60 +93,24 @@ fn camera_model_parser(
 }
 
 impl CameraArgs {
-    /// The point the centre camera looks at: --look-at, else the centre of `bounds` (the
-    /// viewer orbits about it).
-    pub fn pivot(&self, bounds: autostereo::camera::Bounds) -> glam::Vec3 {
-        self.look_at.unwrap_or(bounds.center())
-    }
-
-    /// Frame `bounds` with these settings for `display`: without --separation or --baseline,
-    /// a display's view cone (a Looking Glass calibration's `viewCone`) spreads the views.
-    pub fn camera(
-        &self,
-        bounds: autostereo::camera::Bounds,
-        display: &Display,
-        size: [u32; 2],
-    ) -> Result<MultiViewCamera> {
-        let views = display.views();
-        let aspect = size[0] as f32 / size[1] as f32;
-        let separation = match self.baseline {
-            Some(b) if views > 1 => Some(b / (views - 1) as f32),
-            Some(_) => Some(0.0),
-            None => self.separation,
-        };
-        let fov = self.fov.to_radians();
-        let framing = || MultiViewCamera::framing(bounds, views, separation, fov, aspect);
-        let mut camera = if self.look_from.is_some() || self.look_at.is_some() || self.up.is_some()
-        {
-            // An explicit camera: what is not given is the framing's.
-            let from = match self.look_from {
-                Some(from) => from,
-                None => framing()?.eye_position(),
-            };
-            MultiViewCamera::looking_at(
-                bounds,
-                from,
-                self.pivot(bounds),
-                self.up.unwrap_or(glam::Vec3::Y),
-                views,
-                separation,
-                fov,
-                aspect,
-            )?
-        } else {
-            framing()?
-        };
-        if let Some(fd) = self.focal {
-            camera.focal_distance = fd;
+    /// The camera these flags describe (the library frames it: `CameraSettings::camera`).
+    pub fn settings(&self) -> CameraSettings {
+        CameraSettings {
+            spread: match (self.separation, self.baseline) {
+                (Some(s), _) => Some(Spread::Separation(s)),
+                (None, Some(b)) => Some(Spread::Baseline(b)),
+                (None, None) => None,
+            },
+            focal: match (self.focal, self.focal_scale) {
+                (Some(d), _) => Some(Focal::Distance(d)),
+                (None, Some(s)) => Some(Focal::Scale(s)),
+                (None, None) => None,
+            },
+            fov_degrees: self.fov,
+            model: self.camera,
+            look_from: self.look_from,
+            look_at: self.look_at,
+            up: self.up,
         }
-        if let Some(s) = self.focal_scale {
-            camera.focal_distance *= s;
-        }
-        camera.model = self.camera;
-        if let (None, Some(cone)) = (separation, display.view_cone()) {
-            camera.spread_over_cone(cone)?;
-        }
-        camera.validate()?;
-        Ok(camera)
     }
 }

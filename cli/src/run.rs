@@ -130,7 +130,7 @@ pub fn how_to_look(out: &Path, common: &crate::args::RenderArgs, frame: &Frame) 
     if common.output.json {
         return;
     }
-    let [l, r] = crate::output::default_eyes(frame.camera.views);
+    let [l, r] = autostereo::render::default_eyes(frame.camera.views);
     let display = common.display.flags(frame.camera.views);
     let stem = out
         .file_stem()

@@ -5,9 +5,11 @@
 
 mod framing;
 mod gpu;
+mod settings;
 
 pub use framing::Bounds;
 pub use gpu::{CameraUniform, ViewUniform};
+pub use settings::{CameraSettings, Focal, Spread};
 
 use glam::{Mat4, Vec2, Vec3, Vec4};
 

@@ -45,5 +45,5 @@ pub use renderer::Renderer;
 pub(crate) use renderer::{
     begin_prepare, check_prepared, check_target, prepared_state, Made, Prepared, PreparedState,
 };
-pub use stereo::{StereoCompositor, StereoFormat};
+pub use stereo::{default_eyes, StereoCompositor, StereoFormat};
 pub use view_layers::ViewLayers;

@@ -14,6 +14,18 @@ use crate::gpu::texture::texture_2d_layout_entry;
 use crate::param::Param;
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 
+/// The default stereo pair of `views` views: two views a quarter of the cone apart (at least
+/// adjacent ones) around the middle, so that the pair has real disparity for any N (45 views:
+/// 16 and 27); `[0, 0]` for one view.
+pub fn default_eyes(views: u32) -> [u32; 2] {
+    if views < 2 {
+        return [0, 0];
+    }
+    let apart = ((views - 1) / 4).max(1);
+    let left = (views - 1 - apart) / 2;
+    [left, left + apart]
+}
+
 /// A stereo image format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum StereoFormat {
@@ -178,5 +190,22 @@ impl StereoCompositor {
         });
         draw_fullscreen(encoder, "stereo", &self.pipeline, &[&group], &output.view);
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn default_eyes_are_a_quarter_of_the_cone_apart() {
+        use super::default_eyes;
+        assert_eq!(default_eyes(45), [16, 27]);
+        assert_eq!(default_eyes(49), [18, 30]);
+        assert_eq!(default_eyes(8), [3, 4]);
+        assert_eq!(default_eyes(2), [0, 1]);
+        assert_eq!(default_eyes(1), [0, 0]);
+        for n in 2..=256 {
+            let [l, r] = default_eyes(n);
+            assert!(l < r && r < n, "{n}: {l},{r}");
+        }
     }
 }

@@ -14,7 +14,7 @@ use autostereo::render::{Renderer, StereoCompositor, StereoFormat};
 use autostereo::target::SpatialTarget;
 
 mod names;
-pub use names::{frame_quilt, planned, quilt_layout, view_file};
+pub use names::{frame_quilt, planned, view_file};
 
 /// The formats of `--output`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -171,9 +171,9 @@ impl OutputArgs {
     }
 }
 
-/// The two views of the stereo formats: `eyes`, or [`default_eyes`].
+/// The two views of the stereo formats: `eyes`, or the library's `default_eyes`.
 pub fn eye_views(eyes: Option<[u32; 2]>, views: u32) -> Result<[u32; 2]> {
-    let [l, r] = eyes.unwrap_or(default_eyes(views));
+    let [l, r] = eyes.unwrap_or(autostereo::render::default_eyes(views));
     for v in [l, r] {
         if v >= views {
             bail!(
@@ -183,17 +183,6 @@ pub fn eye_views(eyes: Option<[u32; 2]>, views: u32) -> Result<[u32; 2]> {
         }
     }
     Ok([l, r])
-}
-
-/// The default stereo pair: two views a quarter of the cone apart (at least adjacent ones)
-/// around the middle, so that the pair has real disparity for any N (45 views: 16 and 27).
-pub fn default_eyes(views: u32) -> [u32; 2] {
-    if views < 2 {
-        return [0, 0];
-    }
-    let apart = ((views - 1) / 4).max(1);
-    let left = (views - 1 - apart) / 2;
-    [left, left + apart]
 }
 
 /// What a run wrote: every file, and the turntable's summary where it turned.
@@ -386,23 +375,6 @@ pub fn write<S: ?Sized>(
                     .save_png(out)?,
             }
             Ok(vec![out.to_path_buf()])
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    #[test]
-    fn default_eyes_are_a_quarter_of_the_cone_apart() {
-        use super::default_eyes;
-        assert_eq!(default_eyes(45), [16, 27]);
-        assert_eq!(default_eyes(49), [18, 30]);
-        assert_eq!(default_eyes(8), [3, 4]);
-        assert_eq!(default_eyes(2), [0, 1]);
-        assert_eq!(default_eyes(1), [0, 0]);
-        for n in 2..=256 {
-            let [l, r] = default_eyes(n);
-            assert!(l < r && r < n, "{n}: {l},{r}");
         }
     }
 }

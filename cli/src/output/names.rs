@@ -15,34 +15,30 @@ use super::{OutputArg, OutputArgs};
 /// viewer's quilt preview shows): the `--quilt` grid, else a Looking Glass's own (the family's
 /// grid, tiles of the panel's aspect within the family's quilt size), else the grid for the
 /// view count; tiles of the Looking Glass's size, else of `size`.
-pub fn quilt_layout(
+fn quilt_layout(
     display: &Display,
     views: u32,
     size: [u32; 2],
     grid: Option<[u32; 2]>,
 ) -> Result<QuiltLayout> {
-    let lkg = display.default_quilt(views);
-    let tile = lkg.map_or(size, |q| q.tile);
-    Ok(match (grid, lkg) {
-        (Some([cols, rows]), _) => {
-            let layout = QuiltLayout::with_grid(cols, rows, tile, views)
-                .map_err(|e| anyhow::anyhow!("--quilt {cols}x{rows}: {e}"))?;
-            // A whole empty row plays as blank views in Looking Glass software.
-            let empty = u64::from(cols) * u64::from(rows) - u64::from(views);
-            if empty >= u64::from(cols) {
-                let fit = QuiltLayout::for_views(views, tile);
-                bail!(
-                    "--quilt {cols}x{rows}: {empty} of its tiles would be empty for {views} \
-                     views (a whole row or more); give a grid with fewer, e.g. --quilt {}x{}",
-                    fit.cols,
-                    fit.rows
-                );
-            }
-            layout
-        }
-        (None, Some(lkg)) => lkg,
-        (None, None) => QuiltLayout::for_views(views, tile),
-    })
+    let Some([cols, rows]) = grid else {
+        return Ok(QuiltLayout::for_display(display, views, size));
+    };
+    let tile = display.default_quilt(views).map_or(size, |q| q.tile);
+    let layout = QuiltLayout::with_grid(cols, rows, tile, views)
+        .map_err(|e| anyhow::anyhow!("--quilt {cols}x{rows}: {e}"))?;
+    // A whole empty row plays as blank views in Looking Glass software.
+    let empty = u64::from(cols) * u64::from(rows) - u64::from(views);
+    if empty >= u64::from(cols) {
+        let fit = QuiltLayout::for_views(views, tile);
+        bail!(
+            "--quilt {cols}x{rows}: {empty} of its tiles would be empty for {views} \
+             views (a whole row or more); give a grid with fewer, e.g. --quilt {}x{}",
+            fit.cols,
+            fit.rows
+        );
+    }
+    Ok(layout)
 }
 
 /// The quilt `--output quilt` writes for `frame`: `--view-size` / `--view-scale` set the

@@ -1,65 +1,15 @@
-//! `autostereo view`: the interactive viewer, in a real window, on the library's public API
-//! (surface, prepare/encode into our encoder, `OutputBlit` into the surface texture). The mask
-//! follows the window: the display's origin is the client area's position on the screen.
+//! `autostereo view`: the viewer window (the `autostereo-viewer` crate, viewer/) on the scene
+//! and settings its flags say; the flags of every primitive as the render commands have them.
 
-mod app;
-mod orbit;
 mod scene;
 
 use std::path::PathBuf;
 
 use anyhow::Result;
 use autostereo::render::Method;
+use autostereo_viewer::{Preview, Switch};
 
 use crate::args::{check_output, parse_size, CameraArgs, DisplayArgs};
-
-/// What `--exercise` switches.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Switch {
-    Methods,
-    Displays,
-    Sizes,
-}
-
-/// What the window shows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Preview {
-    /// The interleaved image for the panel.
-    Spatial,
-    /// One view on every pixel (the centre view; keys , and . step through the views), for
-    /// ordinary monitors.
-    View,
-    /// Red-cyan anaglyph (Dubois) of two views a quarter of the views apart about the middle
-    /// (the render commands' default `--eyes`).
-    Anaglyph,
-    /// The same two views side by side, each half the window's width.
-    SideBySide,
-    /// Every view in a Looking Glass quilt (view 0 bottom-left).
-    Quilt,
-}
-
-impl Preview {
-    /// The stereo format of the two-view previews.
-    fn stereo(self) -> Option<autostereo::render::StereoFormat> {
-        use autostereo::render::StereoFormat;
-        match self {
-            Preview::Anaglyph => Some(StereoFormat::AnaglyphDubois),
-            Preview::SideBySide => Some(StereoFormat::SideBySide),
-            Preview::Spatial | Preview::View | Preview::Quilt => None,
-        }
-    }
-
-    /// The next preview (key p).
-    fn next(self) -> Self {
-        match self {
-            Preview::Spatial => Preview::View,
-            Preview::View => Preview::Anaglyph,
-            Preview::Anaglyph => Preview::SideBySide,
-            Preview::SideBySide => Preview::Quilt,
-            Preview::Quilt => Preview::Spatial,
-        }
-    }
-}
 
 #[derive(clap::Args)]
 pub struct ViewArgs {
@@ -186,7 +136,80 @@ pub fn run(args: ViewArgs, given: &clap::ArgMatches) -> Result<()> {
     }
     let _budget = args.memory.apply();
     // Fail on a bad display or flags of another primitive before opening a window.
-    args.display.display()?;
+    let display = args.display.display()?;
     args.scene_flags().check(given)?;
-    app::run(args)
+    let scene = scene::load(&args.scene_flags())?;
+    let options = autostereo_viewer::Options {
+        display,
+        display_name: args.display.display.clone(),
+        camera: args.camera.settings(),
+        size: args.size,
+        position: args.position,
+        fullscreen: args.fullscreen,
+        method: args.method,
+        preview: args.preview,
+        screenshot: args.screenshot.clone(),
+        keep_open: args.keep_open,
+        quit_after_frames: args.quit_after_frames,
+        move_after: args.move_after,
+        exercise: args.exercise,
+        exercise_switch: args.exercise_switch.clone(),
+    };
+    let report = autostereo_viewer::run(scene, options).map_err(in_flag_words)?;
+    print_report(&report, args.json);
+    Ok(())
+}
+
+/// A viewer error in the command line's words: the setting it is about named by its flag; the
+/// library's errors as they are (`flags::describe` names their flags).
+fn in_flag_words(error: autostereo_viewer::Error) -> anyhow::Error {
+    use autostereo_viewer::Error;
+    match error {
+        Error::Library(e) => e.into(),
+        Error::NoMonitor { index, found } => {
+            anyhow::anyhow!("--fullscreen {index}: {found} monitor(s) found, numbered from 0")
+        }
+        Error::WindowTooLarge {
+            size: [w, h],
+            fullscreen,
+            limit,
+            adapter,
+        } => anyhow::anyhow!(
+            "{} {w}x{h}: larger than this adapter's largest surface ({limit} per side on \
+             {adapter})",
+            match fullscreen {
+                true => "--fullscreen: the monitor's size",
+                false => "--size",
+            }
+        ),
+        Error::MethodUnavailable {
+            method,
+            primitive,
+            available,
+        } => anyhow::anyhow!(
+            "--method {method}: {primitive} scenes have {}",
+            available
+                .iter()
+                .map(|m| m.name())
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+        other => other.into(),
+    }
+}
+
+/// With `--json`, one object saying what the viewer showed and the files it wrote (`written`),
+/// as every command's `--json` does, an exercise run's memory report in it; without, the
+/// exercise report alone (cli/tests/viewer reads it).
+fn print_report(report: &autostereo_viewer::Report, json: bool) {
+    match (json, &report.exercise) {
+        (false, Some(exercise)) => println!("{exercise}"),
+        (false, None) => {}
+        (true, exercise) => {
+            let mut fields = exercise.clone().unwrap_or_else(|| serde_json::json!({}));
+            let own = serde_json::to_value(report).expect("a report is plain data");
+            crate::run::merge(&mut fields, own);
+            println!("{fields}");
+        }
+    }
 }

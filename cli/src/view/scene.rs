@@ -1,13 +1,11 @@
-//! The viewer's scene: a mesh, a point cloud, a volume or Gaussian splats, loaded as the render
-//! commands load them (same defaults, so a viewer frame equals the command's image of the same
-//! camera).
+//! The viewer's scene from its flags: a mesh, a point cloud, a volume or Gaussian splats, loaded
+//! as the render commands load them (same defaults, so a viewer frame equals the command's image
+//! of the same camera).
 
 use std::path::Path;
 
 use anyhow::{bail, Result};
-use autostereo::camera::Bounds;
-use autostereo::render::Method;
-use autostereo::{AnyData, AnyScene, DataKind, LoadOptions, RendererOptions};
+use autostereo::{AnyData, DataKind, LoadOptions, RendererOptions};
 
 use crate::gaussians_cmd::GaussianFlags;
 use crate::mesh_cmd::MeshFlags;
@@ -23,26 +21,6 @@ fn kind_of(path: &Path) -> Result<DataKind> {
             path.display()
         ),
         (_, kind) => Ok(kind),
-    }
-}
-
-/// A loaded scene on the GPU and its bounds.
-pub struct ViewScene {
-    pub scene: AnyScene,
-    pub bounds: Bounds,
-    /// What the title says.
-    pub name: String,
-    /// The renderer options the primitive's flags say (the method is set per renderer).
-    pub options: RendererOptions,
-}
-
-impl ViewScene {
-    /// The renderer options for `method`.
-    pub fn options(&self, method: Method) -> RendererOptions {
-        RendererOptions {
-            method,
-            ..self.options
-        }
     }
 }
 
@@ -107,9 +85,9 @@ impl SceneFlags<'_> {
 }
 
 /// Load the scene the flags say: a file by the library's [`autostereo::load`]; no file: the
-/// built-in volume (or the kind's generated scene).
-/// `flags` are checked (`SceneFlags::check`) before the window opens.
-pub fn load(ctx: &autostereo::gpu::GpuContext, flags: &SceneFlags) -> Result<ViewScene> {
+/// built-in volume (or the kind's generated scene). With the renderer options the primitive's
+/// flags say. `flags` are checked (`SceneFlags::check`) first.
+pub fn load(flags: &SceneFlags) -> Result<autostereo_viewer::Scene> {
     let kind = flags.kind()?;
     let file = flags.file;
     let name = file.map_or_else(
@@ -140,30 +118,16 @@ pub fn load(ctx: &autostereo::gpu::GpuContext, flags: &SceneFlags) -> Result<Vie
         (None, DataKind::Gaussians) => AnyData::Gaussians(flags.gaussians.load(None)?),
         (None, DataKind::Image) => bail!("an image is no scene to view (`--kind` offers none)"),
     };
-    let Some(bounds) = data.bounds() else {
-        bail!("{name}: the mesh has no vertices");
-    };
-    let scene = AnyScene::upload(&ctx.device, &ctx.queue, &data)?;
     let mut options = RendererOptions::default();
-    match &scene {
-        AnyScene::Mesh(_) => options.mesh = flags.mesh.options(),
-        AnyScene::Points(_) => options.points = flags.points.options(),
-        AnyScene::Volume(volume) => {
-            let AnyData::Volume(data) = &data else {
-                unreachable!("a volume scene is uploaded from volume data")
-            };
+    match &data {
+        AnyData::Mesh(_) => options.mesh = flags.mesh.options(),
+        AnyData::Points(_) => options.points = flags.points.options(),
+        AnyData::Volume(data) => {
             options.volume = flags
                 .volume_render
-                .options(flags.volume_render.step(&data.volume));
-            options.volume.settings.validate_for(volume)?;
+                .options(flags.volume_render.step(&data.volume))
         }
-        AnyScene::Gaussians(_) => options.gaussians = flags.gaussians.options(),
-        AnyScene::Rgbd(_) => unreachable!("the viewer loads no RGB-D scene"),
+        AnyData::Gaussians(_) => options.gaussians = flags.gaussians.options(),
     }
-    Ok(ViewScene {
-        scene,
-        bounds,
-        name,
-        options,
-    })
+    Ok(autostereo_viewer::Scene::new(data, options, name)?)
 }

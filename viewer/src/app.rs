@@ -4,7 +4,7 @@
 use std::sync::Arc;
 use std::time::Instant;
 
-use anyhow::{Context, Result};
+use crate::error::{Error, Result};
 use autostereo::display::Display;
 use autostereo::gpu::GpuContext;
 use autostereo::render::{Method, OutputBlit, Renderer, StereoCompositor, OUTPUT_FORMATS};
@@ -16,9 +16,10 @@ use winit::event::{ElementState, MouseButton, MouseScrollDelta, WindowEvent};
 use winit::event_loop::{ActiveEventLoop, EventLoop};
 use winit::window::{Fullscreen, Window, WindowId};
 
-use super::orbit::Orbit;
-use super::scene::{self, ViewScene};
-use super::{Preview, ViewArgs};
+use crate::options::{Options, Preview};
+use crate::orbit::Orbit;
+use crate::scene::{Scene, Uploaded};
+use crate::Report;
 
 mod controls;
 mod frames;
@@ -43,32 +44,28 @@ const MORE_DISPLAYS: [&str; 4] = [
     "lenticular:4",
 ];
 
-pub fn run(args: ViewArgs) -> Result<()> {
-    let event_loop = EventLoop::new().context(
-        "opening the window system (is DISPLAY or WAYLAND_DISPLAY set? without a screen, run \
-         it in a virtual one: xvfb-run -a autostereo view …)",
-    )?;
+pub fn run(scene: Scene, options: Options) -> Result<Report> {
+    let event_loop = EventLoop::new().map_err(Error::WindowSystem)?;
     let mut app = App {
-        args,
+        options,
+        scene: Some(scene),
         state: None,
         error: None,
     };
     event_loop.run_app(&mut app)?;
-    match app.error {
-        Some(e) => Err(e),
-        None => {
-            if let Some(state) = &app.state {
-                report::print(state, &app.args);
-            }
-            Ok(())
-        }
+    match (app.error, &app.state) {
+        (Some(e), _) => Err(e),
+        (None, Some(state)) => Ok(report::report(state)),
+        (None, None) => Err(Error::NeverOpened),
     }
 }
 
 struct App {
-    args: ViewArgs,
+    options: Options,
+    /// Until the window opens and it is uploaded.
+    scene: Option<Scene>,
     state: Option<State>,
-    error: Option<anyhow::Error>,
+    error: Option<Error>,
 }
 
 /// Everything a running window holds.
@@ -78,7 +75,7 @@ struct State {
     config: wgpu::SurfaceConfiguration,
     ctx: GpuContext,
     blit: OutputBlit,
-    scene: ViewScene,
+    scene: Uploaded,
     /// The methods the scene's primitive has on this adapter, and the one in use.
     methods: Vec<Method>,
     method: usize,
@@ -114,10 +111,10 @@ struct State {
 
 impl ApplicationHandler for App {
     fn resumed(&mut self, event_loop: &ActiveEventLoop) {
-        if self.state.is_some() {
+        let Some(scene) = self.scene.take() else {
             return;
-        }
-        match State::new(event_loop, &self.args) {
+        };
+        match State::new(event_loop, scene, &self.options) {
             Ok(state) => {
                 state.window.request_redraw();
                 self.state = Some(state);
@@ -146,7 +143,7 @@ impl ApplicationHandler for App {
                 state.update_position();
                 Ok(())
             }
-            WindowEvent::RedrawRequested => state.redraw(&self.args).map(|done| {
+            WindowEvent::RedrawRequested => state.redraw(&self.options).map(|done| {
                 if done {
                     event_loop.exit();
                 } else {
@@ -189,20 +186,18 @@ impl ApplicationHandler for App {
 }
 
 impl State {
-    fn new(event_loop: &ActiveEventLoop, args: &ViewArgs) -> Result<Self> {
+    fn new(event_loop: &ActiveEventLoop, scene: Scene, options: &Options) -> Result<Self> {
         let mut attributes = Window::default_attributes()
             .with_title("autostereo")
-            .with_inner_size(PhysicalSize::new(args.size[0], args.size[1]));
-        if let Some([x, y]) = args.position {
+            .with_inner_size(PhysicalSize::new(options.size[0], options.size[1]));
+        if let Some([x, y]) = options.position {
             attributes = attributes.with_position(PhysicalPosition::new(x, y));
         }
-        if let Some(index) = args.fullscreen {
+        if let Some(index) = options.fullscreen {
             let monitors: Vec<_> = event_loop.available_monitors().collect();
-            let monitor = monitors.get(index).cloned().with_context(|| {
-                format!(
-                    "--fullscreen {index}: {} monitor(s) found, numbered from 0",
-                    monitors.len()
-                )
+            let monitor = monitors.get(index).cloned().ok_or(Error::NoMonitor {
+                index,
+                found: monitors.len(),
             })?;
             // Also the monitor's position and size: without a window manager (Xvfb, a kiosk
             // panel) nothing acts on the fullscreen request.
@@ -218,24 +213,22 @@ impl State {
         let instance = wgpu::Instance::new(desc);
         // Before the window: a size no adapter here can present is refused by name (the window
         // system and wgpu's surface validation would panic on it).
-        if args.fullscreen.is_none() {
+        if options.fullscreen.is_none() {
             let (limit, adapter) = largest_surface(&instance);
-            check_window_size(args.size, false, limit, &adapter)?;
+            check_window_size(options.size, false, limit, &adapter)?;
         }
         let window = Arc::new(event_loop.create_window(attributes)?);
-        let surface = instance
-            .create_surface(window.clone())
-            .context("creating the window's surface")?;
+        let surface = instance.create_surface(window.clone())?;
         let ctx = GpuContext::for_surface(&instance, &surface, &Default::default())?;
         // And on the adapter chosen, which may allow less than the largest.
         let inner = window.inner_size();
-        let size = match args.fullscreen {
-            None => args.size,
+        let size = match options.fullscreen {
+            None => options.size,
             Some(_) => [inner.width, inner.height],
         };
         check_window_size(
             size,
-            args.fullscreen.is_some(),
+            options.fullscreen.is_some(),
             ctx.device.limits().max_texture_dimension_2d,
             &ctx.adapter_label(),
         )?;
@@ -245,7 +238,9 @@ impl State {
             .iter()
             .copied()
             .find(|f| OUTPUT_FORMATS.contains(f))
-            .with_context(|| format!("the surface offers none of {OUTPUT_FORMATS:?}"))?;
+            .ok_or_else(|| Error::SurfaceFormat {
+                wanted: OUTPUT_FORMATS.to_vec(),
+            })?;
         let size = window.inner_size();
         // COPY_SRC where offered, so that --screenshot reads what was presented.
         let usage =
@@ -264,25 +259,18 @@ impl State {
         surface.configure(&ctx.device, &config);
         let blit = OutputBlit::new(&ctx.device, format)?;
         let stereo = StereoCompositor::new(&ctx.device)?;
-        let scene = scene::load(&ctx, &args.scene_flags())?;
+        let scene = scene.upload(&ctx)?;
         let methods: Vec<Method> = Method::ALL
             .into_iter()
             .filter(|&m| AnyRenderer::new(&ctx.device, &scene.scene, &scene.options(m)).is_ok())
             .collect();
         let method = methods
             .iter()
-            .position(|&m| m == args.method)
-            .with_context(|| {
-                format!(
-                    "--method {}: {} scenes have {}",
-                    args.method,
-                    scene.scene.primitive(),
-                    methods
-                        .iter()
-                        .map(|m| m.name())
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                )
+            .position(|&m| m == options.method)
+            .ok_or_else(|| Error::MethodUnavailable {
+                method: options.method,
+                primitive: scene.scene.primitive().to_string(),
+                available: methods.clone(),
             })?;
         let mut renderers: Vec<Option<AnyRenderer>> = methods.iter().map(|_| None).collect();
         renderers[method] = Some(AnyRenderer::new(
@@ -290,10 +278,9 @@ impl State {
             &scene.scene,
             &scene.options(methods[method]),
         )?);
-        let display = args.display.display()?;
-        check_monitor(&window, &display);
-        let mut displays = vec![(args.display.display.clone(), display)];
-        for spec in MORE_DISPLAYS.iter().filter(|d| **d != args.display.display) {
+        check_monitor(&window, &options.display);
+        let mut displays = vec![(options.display_name.clone(), options.display.clone())];
+        for spec in MORE_DISPLAYS.iter().filter(|d| **d != options.display_name) {
             displays.push((spec.to_string(), Display::parse(spec)?));
         }
         let mut state = Self {
@@ -308,7 +295,7 @@ impl State {
             renderers,
             displays,
             display: 0,
-            preview: args.preview,
+            preview: options.preview,
             preview_view: None,
             orbit: Orbit::default(),
             separation_scale: 1.0,
@@ -346,10 +333,10 @@ impl State {
     }
 
     /// Render and present one frame; `Ok(true)` when the run is over.
-    fn redraw(&mut self, args: &ViewArgs) -> Result<bool> {
-        self.exercise_step(args)?;
+    fn redraw(&mut self, options: &Options) -> Result<bool> {
+        self.exercise_step(options)?;
         let start = Instant::now();
-        let frames = self.frames(args)?;
+        let frames = self.frames(options)?;
         let device = &self.ctx.device;
         let size = [self.config.width, self.config.height];
         let eyes = frames[0].0.size;
@@ -427,14 +414,18 @@ impl State {
         // groups) now rather than whenever the backend next looks.
         let _ = device.poll(wgpu::PollType::Poll);
         self.frames += 1;
-        let shot_at = args.quit_after_frames.unwrap_or(SCREENSHOT_FRAME);
+        let shot_at = options.quit_after_frames.unwrap_or(SCREENSHOT_FRAME);
         // A screenshot ends the run (scripts wait for the process) unless --keep-open.
-        let last = args.quit_after_frames.or(args.exercise).or(args
+        let last = options.quit_after_frames.or(options.exercise).or(options
             .screenshot
             .as_ref()
-            .filter(|_| !args.keep_open)
+            .filter(|_| !options.keep_open)
             .map(|_| shot_at));
-        if let Some(path) = args.screenshot.as_ref().filter(|_| self.frames == shot_at) {
+        if let Some(path) = options
+            .screenshot
+            .as_ref()
+            .filter(|_| self.frames == shot_at)
+        {
             self.screenshot(&surface_texture.texture, target)?
                 .save_png(path)?;
             self.written.push(path.clone());
@@ -453,20 +444,20 @@ impl State {
             },
             self.last_ms
         ));
-        if let Some((k, [x, y])) = args.move_after {
+        if let Some((k, [x, y])) = options.move_after {
             if self.frames == k {
                 self.window.set_outer_position(PhysicalPosition::new(x, y));
             }
         }
         self.memory.after_frame(self.frames);
-        if args.exercise.is_some() && self.frames.is_multiple_of(self.exercise_period(args)) {
+        if options.exercise.is_some() && self.frames.is_multiple_of(self.exercise_period(options)) {
             self.memory.end_period(device);
         }
         let done = last.is_some_and(|k| self.frames >= k);
-        if done && args.exercise.is_some() {
+        if done && options.exercise.is_some() {
             let mut report = self.memory.report();
             report["frames"] = self.frames.into();
-            report["period_frames"] = self.exercise_period(args).into();
+            report["period_frames"] = self.exercise_period(options).into();
             // The test's heap bound depends on the backend (see cli/tests/viewer.rs).
             report["backend"] = self.ctx.info().backend.to_str().into();
             self.exercise_report = Some(report);

@@ -1,6 +1,6 @@
 //! What the viewer reads back and renders into: the screenshot, and targets copies can write.
 
-use anyhow::Result;
+use crate::error::Result;
 use autostereo::image_io::RgbImage;
 use autostereo::target::SpatialTarget;
 

@@ -1,14 +1,14 @@
 //! The viewer's input (keys, mouse) and its scripted exercise run.
 
-use anyhow::Result;
+use crate::error::Result;
 use autostereo::AnyRenderer;
 use winit::dpi::{PhysicalPosition, PhysicalSize};
 use winit::event_loop::ActiveEventLoop;
 use winit::keyboard::{Key, NamedKey};
 
-use super::super::orbit::Orbit;
-use super::super::{Switch, ViewArgs};
 use super::State;
+use crate::options::{Options, Switch};
+use crate::orbit::Orbit;
 
 /// Window sizes the exercise run alternates between.
 const EXERCISE_SIZES: [[u32; 2]; 3] = [[320, 240], [256, 256], [400, 300]];
@@ -68,12 +68,12 @@ impl State {
     }
 
     /// The scripted stress run: switch methods, displays and window sizes as it goes.
-    pub(super) fn exercise_step(&mut self, args: &ViewArgs) -> Result<()> {
-        if args.exercise.is_none() || self.frames == 0 {
+    pub(super) fn exercise_step(&mut self, options: &Options) -> Result<()> {
+        if options.exercise.is_none() || self.frames == 0 {
             return Ok(());
         }
         let f = self.frames;
-        let switch = |what| args.exercise_switch.contains(&what);
+        let switch = |what| options.exercise_switch.contains(&what);
         if f.is_multiple_of(EVERY[0]) && switch(Switch::Methods) {
             self.next_method()?;
         }
@@ -94,7 +94,7 @@ impl State {
     /// Frames after which the exercise run's whole state repeats: every switched choice back
     /// where it started, and (from the second period on) every cached renderer holding what it
     /// held a period before, so resident memory one period apart must be equal.
-    pub(super) fn exercise_period(&self, args: &ViewArgs) -> u32 {
+    pub(super) fn exercise_period(&self, options: &Options) -> u32 {
         let cycles = [
             (Switch::Methods, EVERY[0] * self.methods.len() as u32),
             (Switch::Displays, EVERY[1] * self.displays.len() as u32),
@@ -102,7 +102,7 @@ impl State {
         ];
         cycles
             .into_iter()
-            .filter(|(what, _)| args.exercise_switch.contains(what))
+            .filter(|(what, _)| options.exercise_switch.contains(what))
             .fold(1, |period, (_, cycle)| lcm(period, cycle))
     }
 }

@@ -2,7 +2,7 @@
 //! Glass calibration's panel, and the window's size against the largest surface an adapter
 //! makes (wgpu and winit would panic on a larger one).
 
-use anyhow::Result;
+use crate::error::{Error, Result};
 use autostereo::display::Display;
 use winit::window::Window;
 
@@ -62,7 +62,7 @@ pub(super) fn largest_surface(instance: &wgpu::Instance) -> (u32, String) {
 }
 
 /// Refuse a window larger than `limit` per side (the surface's largest on `adapter`).
-/// `fullscreen`: the size is the monitor's, not `--size`.
+/// `fullscreen`: the size is the monitor's, not the one asked for.
 pub(super) fn check_window_size(
     size: [u32; 2],
     fullscreen: bool,
@@ -70,17 +70,12 @@ pub(super) fn check_window_size(
     adapter: &str,
 ) -> Result<()> {
     if size[0] > limit || size[1] > limit {
-        let what = if fullscreen {
-            "--fullscreen: the monitor's size"
-        } else {
-            "--size"
-        };
-        anyhow::bail!(
-            "{what} {}x{}: larger than this adapter's largest surface ({limit} per side on \
-             {adapter})",
-            size[0],
-            size[1]
-        );
+        return Err(Error::WindowTooLarge {
+            size,
+            fullscreen,
+            limit,
+            adapter: adapter.to_string(),
+        });
     }
     Ok(())
 }

@@ -1,34 +1,34 @@
 //! What the viewer renders each frame: the camera's frame on a display, and the frames of
 //! each preview (the spatial image, one view, the quilt's tiles, a stereo pair).
 
-use anyhow::Result;
+use crate::error::Result;
 use autostereo::display::Display;
 use autostereo::frame::Frame;
 use autostereo::render::quilt::QuiltLayout;
 use autostereo::render::StereoFormat;
 
-use super::super::{Preview, ViewArgs};
 use super::State;
+use crate::options::{Options, Preview};
 
 impl State {
     /// The frame of the current camera settings on `display`, `size` pixels. The display's
     /// origin is where the window sits, plus --origin (a panel not at the screen's top-left).
     pub(super) fn frame_on(
         &self,
-        args: &ViewArgs,
+        options: &Options,
         mut display: Display,
         size: [u32; 2],
     ) -> Result<Frame> {
         // Wrapping, as the mask's own sums: it uses the origin only modulo 2³².
         display.origin = [
-            self.position[0].wrapping_add(args.display.origin[0]),
-            self.position[1].wrapping_add(args.display.origin[1]),
+            self.position[0].wrapping_add(options.display.origin[0]),
+            self.position[1].wrapping_add(options.display.origin[1]),
         ];
-        let base = args.camera.camera(self.scene.bounds, &display, size)?;
+        let base = options.camera.camera(self.scene.bounds, &display, size)?;
         // The orbit starts from the command line's camera and turns about what it looks at.
         let mut camera = self
             .orbit
-            .apply(&base, args.camera.pivot(self.scene.bounds));
+            .apply(&base, options.camera.pivot(self.scene.bounds));
         camera.separation *= self.separation_scale;
         camera.focal_distance *= self.focal_scale;
         Ok(Frame::new(camera, display, size)?)
@@ -37,26 +37,29 @@ impl State {
     /// What to render this frame: (frame, which target: 0 the window's, 1 and 2 the eyes' or
     /// the quilt's tile, and where in the window's to copy the tile, for the quilt preview).
     #[allow(clippy::type_complexity)]
-    pub(super) fn frames(&self, args: &ViewArgs) -> Result<Vec<(Frame, usize, Option<[u32; 2]>)>> {
+    pub(super) fn frames(
+        &self,
+        options: &Options,
+    ) -> Result<Vec<(Frame, usize, Option<[u32; 2]>)>> {
         let size = [self.config.width, self.config.height];
         let panel = self.displays[self.display].1.clone();
         let n = panel.views();
         let centre = self.preview_view.unwrap_or((n - 1) / 2).min(n - 1);
         let one = |v: u32| Display::parse(&format!("view:{n},{v}"));
         Ok(match (self.preview, self.preview.stereo()) {
-            (Preview::Spatial, _) => vec![(self.frame_on(args, panel, size)?, 0, None)],
-            (Preview::View, _) => vec![(self.frame_on(args, one(centre)?, size)?, 0, None)],
+            (Preview::Spatial, _) => vec![(self.frame_on(options, panel, size)?, 0, None)],
+            (Preview::View, _) => vec![(self.frame_on(options, one(centre)?, size)?, 0, None)],
             (Preview::Quilt, _) => {
                 // Looking Glass order: view 0 bottom-left, left to right, bottom to top. The
                 // grid `--output quilt` writes for this display (a Looking Glass's own), its
                 // tiles shrunk to fit the window.
-                let grid = crate::output::quilt_layout(&panel, n, size, None)?;
+                let grid = QuiltLayout::for_display(&panel, n, size);
                 let tile = [(size[0] / grid.cols).max(1), (size[1] / grid.rows).max(1)];
                 let layout = QuiltLayout { tile, ..grid };
                 (0..n)
                     .map(|v| {
                         Ok((
-                            self.frame_on(args, one(v)?, tile)?,
+                            self.frame_on(options, one(v)?, tile)?,
                             1,
                             Some(layout.tile_origin(v)),
                         ))
@@ -71,12 +74,12 @@ impl State {
                 };
                 // The command line's default pair (a quarter of the cone apart), or from the
                 // chosen view on.
-                let [l, r] = crate::output::default_eyes(n);
+                let [l, r] = autostereo::render::default_eyes(n);
                 let left = self.preview_view.map_or(l, |v| v.min(n - 1));
                 let right = (left + r - l).min(n - 1);
                 vec![
-                    (self.frame_on(args, one(left)?, eye)?, 1, None),
-                    (self.frame_on(args, one(right)?, eye)?, 2, None),
+                    (self.frame_on(options, one(left)?, eye)?, 1, None),
+                    (self.frame_on(options, one(right)?, eye)?, 2, None),
                 ]
             }
             (_, None) => unreachable!("every other preview is stereo"),
