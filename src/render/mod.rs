@@ -11,6 +11,8 @@
 //! - [`quilt`], [`atlas`]: the Looking Glass quilt layout, the atlas the tiled methods render
 //!   into (and quilt files are read into), and its compositing.
 //! - [`ViewLayers`]: the per-view (or per-group) layers those passes render into.
+//! - [`render_view`], [`render_quilt`], [`render_stereo`]: images of whole views (one view, a
+//!   quilt, a stereo pair) by any renderer.
 //! - crate-internal: the pipeline cache and specialisation constants the passes build with
 //!   (the low-level GPU helpers below them are [`crate::gpu`]'s).
 //!
@@ -35,6 +37,7 @@ mod renderer;
 pub(crate) mod specialize;
 pub(crate) mod stereo;
 pub(crate) mod view_layers;
+mod whole_views;
 
 pub use bands::Banded;
 pub use composite::Compositor;
@@ -47,3 +50,4 @@ pub(crate) use renderer::{
 };
 pub use stereo::{default_eyes, StereoCompositor, StereoFormat};
 pub use view_layers::ViewLayers;
+pub use whole_views::{render_quilt, render_stereo, render_view};

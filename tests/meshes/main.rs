@@ -12,3 +12,4 @@ mod npass_mesh;
 mod single_pass_mesh;
 mod stability;
 mod stereo;
+mod whole_views;

@@ -6,12 +6,10 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
-use autostereo::display::Display;
 use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::image_io::RgbImage;
-use autostereo::render::{Renderer, StereoCompositor, StereoFormat};
-use autostereo::target::SpatialTarget;
+use autostereo::render::{Renderer, StereoFormat};
 
 mod names;
 pub use names::{frame_quilt, planned, view_file};
@@ -291,46 +289,14 @@ pub fn write<S: ?Sized>(
     out: &Path,
 ) -> Result<Vec<PathBuf>> {
     let views = frame.camera.views;
-    // `own_aspect`: seen at the image's own aspect (a quilt's tiles: a Looking Glass's are
-    // the panel's); else at the frame's (the half-size stereo formats are squeezed).
-    let mut one = |view: u32, size: [u32; 2], own_aspect: bool| -> Result<SpatialTarget> {
-        let display = Display::parse(&format!("view:{views},{view}"))?;
-        let mut eye = Frame {
-            display,
-            size,
-            ..frame.clone()
-        };
-        if own_aspect {
-            // A quilt's tile is the view image itself: rendered at its own size.
-            eye.camera.aspect = size[0] as f32 / size[1] as f32;
-            eye.view_scale = [1.0; 2];
-        }
-        let target = SpatialTarget::new(&ctx.device, size)?;
-        renderer
-            .render(&ctx.device, &ctx.queue, scene, &eye, &target)
-            .with_context(|| format!("--output {}: rendering view {view}", output.format.name()))?;
-        Ok(target)
-    };
+    let (device, queue) = (&ctx.device, &ctx.queue);
+    let what = || format!("--output {}", output.format.name());
     if let Some((format, eye)) = output.format.stereo(frame.size) {
         claims.claim(out, "--out")?;
-        let [l, r] = eye_views(output.eyes, views)?;
-        let (left, right) = (one(l, eye, false)?, one(r, eye, false)?);
-        let target = SpatialTarget::new(&ctx.device, format.output_size(eye))?;
-        let mut encoder = ctx
-            .device
-            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                label: Some("stereo output"),
-            });
-        StereoCompositor::new(&ctx.device)?.encode(
-            &ctx.device,
-            &mut encoder,
-            format,
-            &left,
-            &right,
-            &target,
-        )?;
-        ctx.queue.submit([encoder.finish()]);
-        target.read(&ctx.device, &ctx.queue)?.save_png(out)?;
+        let eyes = eye_views(output.eyes, views)?;
+        autostereo::render::render_stereo(device, queue, renderer, scene, frame, format, eye, eyes)
+            .with_context(what)?
+            .save_png(out)?;
         return Ok(vec![out.to_path_buf()]);
     }
     match output.format {
@@ -340,9 +306,13 @@ pub fn write<S: ?Sized>(
                 claims.claim(path, "--out")?;
             }
             for (v, path) in (0..views).zip(&written) {
-                one(v, frame.size, false)?
-                    .read(&ctx.device, &ctx.queue)?
-                    .save_png(path)?;
+                let size = frame.size;
+                autostereo::render::render_view(
+                    device, queue, renderer, scene, frame, v, size, false,
+                )
+                .with_context(what)?
+                .read(device, queue)?
+                .save_png(path)?;
             }
             Ok(written)
         }
@@ -350,20 +320,9 @@ pub fn write<S: ?Sized>(
             let layout = frame_quilt(frame, output)?;
             let named = layout.file_name(out);
             claims.claim(&named, "--out")?;
-            let [w, h] = layout.size();
-            RgbImage::check_size(w, h).context("--output quilt")?;
-            let mut quilt = RgbImage::new(w, h);
-            for v in 0..views {
-                let tile = one(v, layout.tile, true)?.read(&ctx.device, &ctx.queue)?;
-                let [tx, ty] = layout.tile_origin(v);
-                for y in 0..tile.height {
-                    let src = (y * tile.width * 3) as usize;
-                    let dst = (((ty + y) * w + tx) * 3) as usize;
-                    let row = (tile.width * 3) as usize;
-                    quilt.data[dst..dst + row].copy_from_slice(&tile.data[src..src + row]);
-                }
-            }
-            quilt.save_png(&named)?;
+            autostereo::render::render_quilt(device, queue, renderer, scene, frame, &layout)
+                .with_context(what)?
+                .save_png(&named)?;
             Ok(vec![named])
         }
         _ => {

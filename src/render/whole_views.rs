@@ -1,0 +1,93 @@
+//! Images made of whole views, each rendered by any renderer on a `view:N,V` display (one view
+//! on every pixel): one view, a Looking Glass quilt of every view, a stereo pair composed into
+//! one image. What the `--output` formats other than the spatial image write, and what a
+//! library user asks for beside the spatial image.
+
+use crate::display::Display;
+use crate::error::Result;
+use crate::frame::Frame;
+use crate::image_io::RgbImage;
+use crate::render::quilt::QuiltLayout;
+use crate::render::{Renderer, StereoCompositor, StereoFormat};
+use crate::target::SpatialTarget;
+
+/// View `view` of `frame` alone at `size` pixels. `own_aspect`: the view is seen at the image's
+/// own aspect (a quilt's tile is the view image itself: rendered at its own size, unscaled);
+/// else at the frame's (the half-size stereo formats are squeezed).
+#[allow(clippy::too_many_arguments)]
+pub fn render_view<S: ?Sized>(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    renderer: &mut dyn Renderer<S>,
+    scene: &S,
+    frame: &Frame,
+    view: u32,
+    size: [u32; 2],
+    own_aspect: bool,
+) -> Result<SpatialTarget> {
+    let views = frame.camera.views;
+    let mut eye = Frame {
+        display: Display::parse(&format!("view:{views},{view}"))?,
+        size,
+        ..frame.clone()
+    };
+    if own_aspect {
+        eye.camera.aspect = size[0] as f32 / size[1] as f32;
+        eye.view_scale = [1.0; 2];
+    }
+    let target = SpatialTarget::new(device, size)?;
+    renderer.render(device, queue, scene, &eye, &target)?;
+    Ok(target)
+}
+
+/// Every view of `frame` in `layout`'s tiles (view 0 bottom-left; empty tiles black), each
+/// rendered at the tile's size.
+pub fn render_quilt<S: ?Sized>(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    renderer: &mut dyn Renderer<S>,
+    scene: &S,
+    frame: &Frame,
+    layout: &QuiltLayout,
+) -> Result<RgbImage> {
+    let [w, h] = layout.size();
+    RgbImage::check_size(w, h)?;
+    let mut quilt = RgbImage::new(w, h);
+    for v in 0..frame.camera.views.min(layout.views) {
+        let tile = render_view(device, queue, renderer, scene, frame, v, layout.tile, true)?
+            .read(device, queue)?;
+        let [tx, ty] = layout.tile_origin(v);
+        let row = (tile.width * 3) as usize;
+        for y in 0..tile.height {
+            let src = (y * tile.width * 3) as usize;
+            let dst = (((ty + y) * w + tx) * 3) as usize;
+            quilt.data[dst..dst + row].copy_from_slice(&tile.data[src..src + row]);
+        }
+    }
+    Ok(quilt)
+}
+
+/// Views `eyes` = [left, right] of `frame`, each rendered at `eye` pixels, composed as
+/// `format` (an image of `format.output_size(eye)`).
+#[allow(clippy::too_many_arguments)]
+pub fn render_stereo<S: ?Sized>(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    renderer: &mut dyn Renderer<S>,
+    scene: &S,
+    frame: &Frame,
+    format: StereoFormat,
+    eye: [u32; 2],
+    eyes: [u32; 2],
+) -> Result<RgbImage> {
+    let [l, r] = eyes;
+    let left = render_view(device, queue, renderer, scene, frame, l, eye, false)?;
+    let right = render_view(device, queue, renderer, scene, frame, r, eye, false)?;
+    let target = SpatialTarget::new(device, format.output_size(eye))?;
+    let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+        label: Some("stereo output"),
+    });
+    StereoCompositor::new(device)?.encode(device, &mut encoder, format, &left, &right, &target)?;
+    queue.submit([encoder.finish()]);
+    target.read(device, queue)
+}
