@@ -7,7 +7,6 @@ use clap::builder::TypedValueParser;
 use autostereo::display::Display;
 
 pub use crate::camera_args::CameraArgs;
-use autostereo::frame::Frame;
 
 /// `WxH` → [w, h], both ≥ 1.
 pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
@@ -322,11 +321,6 @@ pub struct RenderArgs {
     /// with --output quilt also the size of the quilt's tiles.
     #[arg(long, value_name = "WxH", value_parser = parse_size, conflicts_with = "view_scale", help_heading = "Method")]
     pub view_size: Option<[u32; 2]>,
-    /// The warp flags, where the command has them: the commands whose primitive has the warp
-    /// method flatten `WarpArgs` of their own and hand it over ([`RenderArgs::with_warp`]);
-    /// the others have none to give (clap refuses the flags there).
-    #[arg(skip)]
-    pub warp: crate::warp_cmd::WarpArgs,
     #[command(flatten)]
     pub output: crate::output::OutputArgs,
     #[command(flatten)]
@@ -336,81 +330,4 @@ pub struct RenderArgs {
     pub compare: bool,
     #[command(flatten)]
     pub timing: FramesArgs,
-}
-
-/// What a render command holds once its flags are checked.
-pub struct Checked {
-    /// The files it reads and writes.
-    pub claims: crate::claims::Claims,
-    /// Its memory budget, current while this lives (held, never read).
-    #[allow(dead_code, reason = "a guard: the budget is current while it lives")]
-    pub budget: autostereo::budget::Entered,
-}
-
-impl RenderArgs {
-    /// These flags with the command's warp flags.
-    pub fn with_warp(self, warp: crate::warp_cmd::WarpArgs) -> Self {
-        Self { warp, ..self }
-    }
-
-    /// Fail early on what can be checked before loading anything; `input`: the file the
-    /// command reads. Returns the run's claims on its files (the names given checked) and its
-    /// memory budget, current while the guard lives.
-    pub fn check(&self, input: Option<&std::path::Path>) -> Result<Checked> {
-        let claims = crate::claims::Claims::new(&input.into_iter().collect::<Vec<_>>());
-        claims.check(&crate::claims::given(&[
-            (self.output.out.as_deref(), "--out"),
-            (self.warp.synthesis.hole_mask.as_deref(), "--hole-mask"),
-        ]))?;
-        self.output
-            .check(self.compare || self.timing.frames.is_some())?;
-        let scaled = [Method::NPass, Method::Tiled, Method::Layered, Method::Mrt];
-        let flag = match self.view_size {
-            Some([w, h]) => Some(format!("--view-size {w}x{h}")),
-            None => (self.view_scale != 1.0).then(|| format!("--view-scale {}", self.view_scale)),
-        };
-        if let Some(flag) = flag.filter(|_| !scaled.contains(&self.method)) {
-            bail!(
-                "{flag}: the {} method renders no view images to scale (only n-pass, tiled, \
-                 layered and mrt do)",
-                self.method
-            );
-        }
-        self.warp.check(self.method)?;
-        if self.output.format != crate::output::OutputArg::Spatial {
-            self.display
-                .check_spatial_only(&self.output.format.name())?;
-        }
-        self.turntable.check(self.output.out.as_deref())?;
-        Ok(Checked {
-            claims,
-            budget: self.memory.apply(),
-        })
-    }
-
-    /// The renderer options the shared flags say (method, warp); each command adds its
-    /// primitive's.
-    pub fn options(&self) -> autostereo::RendererOptions {
-        autostereo::RendererOptions {
-            method: self.method,
-            warp: self.warp.options(),
-            ..Default::default()
-        }
-    }
-
-    /// The frame for a scene within `bounds`: display, camera framing, size.
-    pub fn frame(&self, bounds: autostereo::camera::Bounds) -> Result<Frame> {
-        let display = self.display.display()?;
-        let size = image_size(self.size, &display);
-        let camera = self.camera.settings().camera(bounds, &display, size)?;
-        let mut frame = Frame::new(camera, display, size)?;
-        match self.view_size {
-            Some(views) => frame
-                .scale_views_to(views)
-                .map_err(|e| anyhow::anyhow!("--view-size: {e}"))?,
-            None => frame.view_scale = [self.view_scale; 2],
-        }
-        frame.validate()?;
-        Ok(frame)
-    }
 }

@@ -78,8 +78,10 @@ pub fn builtin_scene() -> Gaussians {
 }
 
 pub fn run(args: GaussiansArgs) -> Result<()> {
-    let checked = args.common.check(args.file.as_deref())?;
-    args.gaussians.check(args.common.method)?;
+    let mut plan = args
+        .common
+        .plan(args.file.as_deref(), crate::warp_cmd::WarpArgs::default())?;
+    args.gaussians.check(plan.method)?;
     let start = Instant::now();
     let gaussians = args.gaussians.load(args.file.as_deref())?;
     let load_ms = start.elapsed().as_secs_f64() * 1e3;
@@ -87,12 +89,12 @@ pub fn run(args: GaussiansArgs) -> Result<()> {
     let bounds = gaussians
         .bounds()
         .expect("validate() refuses empty and non-finite Gaussians");
-    let frame = args.common.frame(bounds)?;
+    let frame = plan.frame(bounds)?;
     let ctx = gpu()?;
     let device = &ctx.device;
     let options = RendererOptions {
         gaussians: args.gaussians.options(),
-        ..args.common.options()
+        ..plan.options
     };
     // Before the upload: a method without a Gaussian path is refused at once.
     let mut renderer = options.gaussians_renderer(device)?;
@@ -112,8 +114,7 @@ pub fn run(args: GaussiansArgs) -> Result<()> {
     };
     let Rendered { run, fields, diff } = render_and_save(
         &ctx,
-        &args.common,
-        checked.claims,
+        &mut plan,
         &options,
         renderer.as_mut(),
         |o| o.gaussians_renderer(device),
@@ -125,10 +126,10 @@ pub fn run(args: GaussiansArgs) -> Result<()> {
     )?;
     let summary = format!(
         "{}: {count} Gaussians (SH degree {sh_degree}, loaded in {load_ms:.0} ms), {sort} sort, {}",
-        args.common.method.name(),
-        run_summary(&ctx, &args.common, &frame, &run)
+        plan.method.name(),
+        run_summary(&ctx, &plan, &frame, &run)
     );
-    report(args.common.output.json, fields, diff, &summary);
+    report(plan.output.json, fields, diff, &summary);
     Ok(())
 }
 

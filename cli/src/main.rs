@@ -14,6 +14,7 @@ mod mesh_cmd;
 mod method_arg;
 mod output;
 mod parse_errors;
+mod plan;
 mod points_cmd;
 mod progress;
 mod rgbd_cmd;

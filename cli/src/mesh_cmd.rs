@@ -98,19 +98,18 @@ impl MeshFlags {
     }
 }
 
-pub fn run(mut args: MeshArgs) -> Result<()> {
-    args.common = args.common.with_warp(std::mem::take(&mut args.warp));
-    let checked = args.common.check(args.file.as_deref())?;
-    args.mesh.check(args.common.method)?;
+pub fn run(args: MeshArgs) -> Result<()> {
+    let mut plan = args.common.plan(args.file.as_deref(), args.warp)?;
+    args.mesh.check(plan.method)?;
     let mesh = args.mesh.load(args.file.as_deref())?;
     let bounds = mesh.bounds().context("the mesh has no vertices")?;
-    let frame = args.common.frame(bounds)?;
+    let frame = plan.frame(bounds)?;
     let ctx = gpu()?;
     let device = &ctx.device;
     let buffers = MeshBuffers::new(device, &mesh)?;
     let options = RendererOptions {
         mesh: args.mesh.options(),
-        ..args.common.options()
+        ..plan.options
     };
     let mut renderer = options.mesh_renderer(device)?;
     let Rendered {
@@ -119,8 +118,7 @@ pub fn run(mut args: MeshArgs) -> Result<()> {
         diff,
     } = render_and_save(
         &ctx,
-        &args.common,
-        checked.claims,
+        &mut plan,
         &options,
         renderer.as_mut(),
         |o| o.mesh_renderer(device),
@@ -133,16 +131,16 @@ pub fn run(mut args: MeshArgs) -> Result<()> {
         bounds,
         serde_json::json!({ "triangles": mesh.triangle_count() }),
     )?;
-    let method_name = args.common.method.name();
-    if args.common.method == Method::SinglePass {
+    let method_name = plan.method.name();
+    if plan.method == Method::SinglePass {
         fields["visibility"] = options.mesh_single_pass(device).visibility.name().into();
         fields["bounds"] = format!("{:?}", args.mesh.bounds).to_lowercase().into();
     }
     let summary = format!(
         "{method_name}: {} triangles, {}",
         mesh.triangle_count(),
-        run_summary(&ctx, &args.common, &frame, &run)
+        run_summary(&ctx, &plan, &frame, &run)
     );
-    report(args.common.output.json, fields, diff, &summary);
+    report(plan.output.json, fields, diff, &summary);
     Ok(())
 }

@@ -116,23 +116,22 @@ fn parse_groups(s: &str) -> Result<GroupCount, String> {
     }
 }
 
-pub fn run(mut args: PointsArgs) -> Result<()> {
-    args.common = args.common.with_warp(std::mem::take(&mut args.warp));
-    let checked = args.common.check(args.file.as_deref())?;
-    args.points.check(args.common.method)?;
+pub fn run(args: PointsArgs) -> Result<()> {
+    let mut plan = args.common.plan(args.file.as_deref(), args.warp)?;
+    args.points.check(plan.method)?;
     let start = Instant::now();
     let cloud = PointFlags::cloud(args.file.as_deref())?;
     let load_ms = start.elapsed().as_secs_f64() * 1e3;
     let (splats, completion) = cloud.complete(args.points.radius_scale)?;
     drop(cloud);
     let bounds = splats.bounds().expect("complete() rejects empty clouds");
-    let frame = args.common.frame(bounds)?;
+    let frame = plan.frame(bounds)?;
     let ctx = gpu()?;
     let device = &ctx.device;
     let scene = args.points.scene(device, &splats)?;
     let options = RendererOptions {
         points: args.points.options(),
-        ..args.common.options()
+        ..plan.options
     };
     let splat_options = options.points.for_scene(&scene);
     let mut renderer = options.points_renderer(device, &scene)?;
@@ -155,8 +154,7 @@ pub fn run(mut args: PointsArgs) -> Result<()> {
     };
     let Rendered { run, fields, diff } = render_and_save(
         &ctx,
-        &args.common,
-        checked.claims,
+        &mut plan,
         &options,
         renderer.as_mut(),
         |o| o.points_renderer(device, &scene),
@@ -166,7 +164,7 @@ pub fn run(mut args: PointsArgs) -> Result<()> {
         bounds,
         extra,
     )?;
-    let method_name = args.common.method.name();
+    let method_name = plan.method.name();
     let estimated = match (completion.normals_estimated, completion.radii_estimated) {
         (false, false) => String::new(),
         (n, r) => format!(
@@ -184,8 +182,8 @@ pub fn run(mut args: PointsArgs) -> Result<()> {
         scene.groups(),
         scene.conflicts,
         scene.grouping_ms,
-        run_summary(&ctx, &args.common, &frame, &run)
+        run_summary(&ctx, &plan, &frame, &run)
     );
-    report(args.common.output.json, fields, diff, &summary);
+    report(plan.output.json, fields, diff, &summary);
     Ok(())
 }

@@ -97,17 +97,17 @@ pub fn report(json: bool, mut fields: serde_json::Value, diff: Option<ImageDiff>
 /// command's own `extra` object.
 pub fn run_fields(
     ctx: &GpuContext,
-    common: &crate::args::RenderArgs,
+    plan: &crate::plan::RunPlan,
     frame: &Frame,
     run: &Timed,
     extra: serde_json::Value,
 ) -> serde_json::Value {
     let mut fields = serde_json::json!({
-        "method": common.method.name(),
-        "output": common.output.format.name(),
+        "method": plan.method.name(),
+        "output": plan.output.format.name(),
         "views": frame.camera.views,
         "views_per_pixel": frame.display.views_per_pixel(),
-        "display": common.display.display,
+        "display": plan.display_spec(),
         "size": frame.size,
         "adapter": ctx.adapter_label(),
         "ms": run.ms,
@@ -119,19 +119,19 @@ pub fn run_fields(
         "gpu_bytes": run.gpu_bytes,
         "rendered": run.how,
     });
-    merge(&mut fields, common.timing.fields());
+    merge(&mut fields, plan.timing.fields());
     merge(&mut fields, extra);
     fields
 }
 
 /// Tell the user how to look at the spatial image `out` without the panel: it only looks
 /// right through the display's optics (stderr, so that `--json` output stays one object).
-pub fn how_to_look(out: &Path, common: &crate::args::RenderArgs, frame: &Frame) {
-    if common.output.json {
+pub fn how_to_look(out: &Path, plan: &crate::plan::RunPlan, frame: &Frame) {
+    if plan.output.json {
         return;
     }
     let [l, r] = autostereo::render::default_eyes(frame.camera.views);
-    let display = common.display.flags(frame.camera.views);
+    let display = plan.display_flags(frame.camera.views);
     let stem = out
         .file_stem()
         .map_or("out".into(), |s| s.to_string_lossy());
@@ -157,7 +157,7 @@ pub fn merge(fields: &mut serde_json::Value, more: serde_json::Value) {
 /// The end of every render command's one-line summary: views, size, speed, adapter.
 pub fn run_summary(
     ctx: &GpuContext,
-    common: &crate::args::RenderArgs,
+    plan: &crate::plan::RunPlan,
     frame: &Frame,
     run: &Timed,
 ) -> String {
@@ -173,7 +173,7 @@ pub fn run_summary(
         frame.size[1],
         run.gpu_bytes as f64 / (1u64 << 20) as f64,
         run.ms,
-        common.timing.described(),
+        plan.timing.described(),
         run.timing,
         ctx.adapter_label()
     )
@@ -196,8 +196,7 @@ pub struct Rendered {
 #[allow(clippy::too_many_arguments)]
 pub fn render_and_save<S: ?Sized>(
     ctx: &GpuContext,
-    common: &crate::args::RenderArgs,
-    mut claims: crate::claims::Claims,
+    plan: &mut crate::plan::RunPlan,
     options: &autostereo::RendererOptions,
     renderer: &mut dyn Renderer<S>,
     build: impl Fn(&autostereo::RendererOptions) -> autostereo::Result<Box<dyn Renderer<S>>>,
@@ -207,32 +206,23 @@ pub fn render_and_save<S: ?Sized>(
     bounds: autostereo::camera::Bounds,
     mut extra: serde_json::Value,
 ) -> Result<Rendered> {
-    if common.compare && *options == oracle && frame.view_size() == frame.size {
+    if plan.compare && *options == oracle && frame.view_size() == frame.size {
         anyhow::bail!(
             "--compare: this run is the N-pass oracle itself (same settings, full-size views), \
              so it would be compared with itself; smaller views (--view-scale < 1, a smaller \
              --view-size) or an approximation (volume --step, --empty-stride) are measured"
         );
     }
-    // (--hole-mask is refused with any method but the warp: RenderArgs::check.)
-    claims.check(&crate::output::planned(
+    // (--hole-mask is refused with any method but the warp: RenderArgs::plan.)
+    plan.claims.check(&crate::output::planned(
         frame,
-        &common.output,
-        common.turntable.turntable,
-        common.warp.synthesis.hole_mask.as_deref(),
+        &plan.output,
+        plan.turntable.map(|(frames, _)| frames),
+        plan.hole_mask.as_deref(),
     )?)?;
-    let run = timed(ctx, renderer, scene, frame, &common.timing)?;
-    let mut saved = crate::output::save_all(
-        ctx,
-        renderer,
-        scene,
-        frame,
-        bounds,
-        common,
-        &mut claims,
-        &run.image,
-    )?;
-    let diff = match common.compare {
+    let run = timed(ctx, renderer, scene, frame, &plan.timing)?;
+    let mut saved = crate::output::save_all(ctx, renderer, scene, frame, bounds, plan, &run.image)?;
+    let diff = match plan.compare {
         true => Some(compare_with(
             ctx,
             build(&oracle)?.as_mut(),
@@ -242,20 +232,12 @@ pub fn render_and_save<S: ?Sized>(
         )?),
         false => None,
     };
-    if common.method == autostereo::render::Method::Warp {
-        let holes = crate::warp_cmd::hole_report(
-            ctx,
-            common,
-            &mut claims,
-            options,
-            &build,
-            scene,
-            frame,
-            &mut saved,
-        )?;
+    if plan.method == autostereo::render::Method::Warp {
+        let holes =
+            crate::warp_cmd::hole_report(ctx, plan, options, &build, scene, frame, &mut saved)?;
         merge(&mut extra, holes);
     }
     merge(&mut extra, saved.fields());
-    let fields = run_fields(ctx, common, frame, &run, extra);
+    let fields = run_fields(ctx, plan, frame, &run, extra);
     Ok(Rendered { run, fields, diff })
 }

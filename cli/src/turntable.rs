@@ -14,7 +14,7 @@ use autostereo::gpu::GpuContext;
 use autostereo::render::Renderer;
 use glam::{Mat4, Vec3};
 
-use crate::args::RenderArgs;
+use crate::plan::RunPlan;
 
 /// The axis the scene turns around (world coordinates, through the centre of its bounds).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -123,37 +123,36 @@ pub fn numbered(out: &Path, k: u32, quilt: bool) -> PathBuf {
     out.with_file_name(format!("{base}_{k:04}.png"))
 }
 
-/// Render the turntable `args` asks for; `None` when it asks for none.
+/// Render the turntable `plan` asks for; `None` when it asks for none.
 pub fn render<S: ?Sized>(
     ctx: &GpuContext,
     renderer: &mut dyn Renderer<S>,
     scene: &S,
     frame: &Frame,
     bounds: Bounds,
-    common: &RenderArgs,
-    claims: &mut crate::claims::Claims,
+    plan: &mut RunPlan,
 ) -> Result<Option<Summary>> {
-    let (Some(frames), Some(out)) = (common.turntable.turntable, &common.output.out) else {
+    let (Some((frames, axis)), Some(out)) = (plan.turntable, plan.output.out.clone()) else {
         return Ok(None);
     };
-    let quilt = common.output.format == crate::output::OutputArg::Quilt;
+    let quilt = plan.output.format == crate::output::OutputArg::Quilt;
     let start = Instant::now();
     let bar = crate::progress::bar(u64::from(frames), "turntable");
     let mut written = Vec::new();
     let mut frame_ms = Vec::new();
     for k in 0..frames {
         let angle = std::f32::consts::TAU * k as f32 / frames as f32;
-        let this = turned(frame, common.turntable.axis, bounds.center(), angle);
+        let this = turned(frame, axis, bounds.center(), angle);
         let t = Instant::now();
         let paths = crate::output::write(
             ctx,
             renderer,
             scene,
             &this,
-            &common.output,
-            claims,
+            &plan.output,
+            &mut plan.claims,
             None,
-            &numbered(out, k, quilt),
+            &numbered(&out, k, quilt),
         )?;
         frame_ms.push(t.elapsed().as_secs_f64() * 1e3);
         written.extend(paths);

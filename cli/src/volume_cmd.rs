@@ -239,8 +239,7 @@ impl VolumeDataArgs {
     }
 }
 
-pub fn run(mut args: VolumeArgs) -> Result<()> {
-    args.common = args.common.with_warp(std::mem::take(&mut args.warp));
+pub fn run(args: VolumeArgs) -> Result<()> {
     if let Some(path) = &args.anaglyph {
         bail!(
             "--anaglyph was retired: write the red/cyan anaglyph with --output anaglyph --out {} \
@@ -248,8 +247,8 @@ pub fn run(mut args: VolumeArgs) -> Result<()> {
             path.display()
         );
     }
-    let checked = args.common.check(args.file.as_deref())?;
-    args.render.check(args.common.method)?;
+    let mut plan = args.common.plan(args.file.as_deref(), args.warp)?;
+    args.render.check(plan.method)?;
     let VolumeData {
         volume,
         transfer,
@@ -258,14 +257,14 @@ pub fn run(mut args: VolumeArgs) -> Result<()> {
     } = args.data.load(args.file.as_deref())?;
     let step = args.render.step(&volume);
     let bounds = volume.bounds();
-    let frame = args.common.frame(bounds)?;
+    let frame = plan.frame(bounds)?;
     let ctx = gpu()?;
     let scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, transfer, model)?;
     // The settings are checked where the renderer is built (src/volume/options.rs, the
     // renderers' constructors); cli/src/flags.rs names the flags in their errors.
     let options = RendererOptions {
         volume: args.render.options(step),
-        ..args.common.options()
+        ..plan.options
     };
     let settings = options.volume.settings;
     settings.validate_for(&scene)?;
@@ -282,7 +281,7 @@ pub fn run(mut args: VolumeArgs) -> Result<()> {
         },
         ..settings.exact()
     };
-    let method = args.common.method.name();
+    let method = plan.method.name();
     let extra = serde_json::json!({
         "path": match args.render.path { PathArg::Compute => "compute", PathArg::Slices => "slices" },
         "alpha": match (args.render.path, args.render.alpha) {
@@ -292,7 +291,7 @@ pub fn run(mut args: VolumeArgs) -> Result<()> {
         "volume_dims": volume.dims,
         "spacing": volume.spacing,
         "step": step,
-        "compare_step": args.common.compare.then(|| oracle.step_length(&scene)),
+        "compare_step": plan.compare.then(|| oracle.step_length(&scene)),
         "samples_per_ray_max": (scene.extent.length() / step).ceil(),
         "skip_empty": settings.skip_empty && matches!(args.render.path, PathArg::Compute),
         // Sharing needs K = 3 rays per pixel (subpixel displays).
@@ -305,8 +304,7 @@ pub fn run(mut args: VolumeArgs) -> Result<()> {
     });
     let Rendered { run, fields, diff } = render_and_save(
         &ctx,
-        &args.common,
-        checked.claims,
+        &mut plan,
         &options,
         renderer.as_mut(),
         |o| o.volume_renderer(&ctx.device),
@@ -326,8 +324,8 @@ pub fn run(mut args: VolumeArgs) -> Result<()> {
     let summary = format!(
         "{method}: volume {:?}, {}",
         volume.dims,
-        run_summary(&ctx, &args.common, &frame, &run)
+        run_summary(&ctx, &plan, &frame, &run)
     );
-    report(args.common.output.json, fields, diff, &summary);
+    report(plan.output.json, fields, diff, &summary);
     Ok(())
 }

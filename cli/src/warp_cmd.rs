@@ -125,21 +125,20 @@ pub fn hole_share(mask: &autostereo::image_io::RgbImage) -> f64 {
 #[allow(clippy::too_many_arguments)]
 pub fn hole_report<S: ?Sized>(
     ctx: &GpuContext,
-    common: &crate::args::RenderArgs,
-    claims: &mut crate::claims::Claims,
+    plan: &mut crate::plan::RunPlan,
     options: &RendererOptions,
     build: impl FnOnce(&RendererOptions) -> autostereo::Result<Box<dyn Renderer<S>>>,
     scene: &S,
     frame: &Frame,
     saved: &mut crate::output::Saved,
 ) -> Result<serde_json::Value> {
-    let (args, json) = (&common.warp, common.output.json);
+    let json = plan.output.json;
     let mut options = *options;
     options.warp.hole_mask = true;
     let mut warp = build(&options)?;
     let mask = warp.render_image(&ctx.device, &ctx.queue, scene, frame)?;
-    if let Some(path) = &args.synthesis.hole_mask {
-        claims.save_png(&mask, path, "--hole-mask")?;
+    if let Some(path) = &plan.hole_mask {
+        plan.claims.save_png(&mask, path, "--hole-mask")?;
         crate::output::say_written(json, std::slice::from_ref(path));
         saved.written.push(path.clone());
     }

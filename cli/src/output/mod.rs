@@ -242,12 +242,11 @@ pub fn save_all<S: ?Sized>(
     scene: &S,
     frame: &Frame,
     bounds: autostereo::camera::Bounds,
-    common: &crate::args::RenderArgs,
-    claims: &mut crate::claims::Claims,
+    plan: &mut crate::plan::RunPlan,
     spatial: &RgbImage,
 ) -> Result<Saved> {
-    let output = &common.output;
-    let turntable = crate::turntable::render(ctx, renderer, scene, frame, bounds, common, claims)?;
+    let turntable = crate::turntable::render(ctx, renderer, scene, frame, bounds, plan)?;
+    let output = &plan.output;
     let written = if let Some(summary) = &turntable {
         if !output.json {
             eprintln!("{}", summary.line());
@@ -260,13 +259,13 @@ pub fn save_all<S: ?Sized>(
             scene,
             frame,
             output,
-            claims,
+            &mut plan.claims,
             Some(spatial),
             out,
         )?;
         say_written(output.json, &written);
         if output.format == OutputArg::Spatial {
-            crate::run::how_to_look(out, common, frame);
+            crate::run::how_to_look(out, plan, frame);
         }
         written
     } else {

@@ -1,0 +1,134 @@
+//! A render run decided from its flags, once: `RenderArgs::plan` checks every flag that can be
+//! checked before loading (the names given included) and gives the plan the commands, outputs
+//! and turntables take instead of the clap struct. The frame follows from the plan and the
+//! scene's bounds (`RunPlan::frame`); the names it will write are checked against each other
+//! and the inputs before it renders (`render_and_save`).
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{bail, Result};
+use autostereo::camera::{Bounds, CameraSettings};
+use autostereo::display::Display;
+use autostereo::frame::Frame;
+use autostereo::render::Method;
+use autostereo::RendererOptions;
+
+use crate::args::{image_size, DisplayArgs, FramesArgs, RenderArgs};
+use crate::claims::Claims;
+use crate::output::{OutputArg, OutputArgs};
+use crate::turntable::Axis;
+use crate::warp_cmd::WarpArgs;
+
+/// How large the view images are, where the method renders them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum ViewSizing {
+    Scale(f32),
+    Size([u32; 2]),
+}
+
+/// A checked render run.
+pub struct RunPlan {
+    pub method: Method,
+    /// The renderer options the shared flags say (method, warp); each command adds its
+    /// primitive's.
+    pub options: RendererOptions,
+    display: Display,
+    /// The display's flags, to repeat them in hints and `--json`.
+    display_args: DisplayArgs,
+    size: Option<[u32; 2]>,
+    camera: CameraSettings,
+    view_sizing: ViewSizing,
+    pub output: OutputArgs,
+    /// `--turntable FRAMES` and its axis.
+    pub turntable: Option<(u32, Axis)>,
+    pub hole_mask: Option<PathBuf>,
+    pub timing: FramesArgs,
+    pub compare: bool,
+    /// The files the run reads and writes.
+    pub claims: Claims,
+    /// The run's memory budget, current while the plan lives (held, never read).
+    _budget: autostereo::budget::Entered,
+}
+
+impl RenderArgs {
+    /// The run these flags and the command's `warp` flags ask for, reading `input`: every
+    /// check that needs no data, then the budget entered for the run.
+    pub fn plan(self, input: Option<&Path>, warp: WarpArgs) -> Result<RunPlan> {
+        let claims = Claims::new(&input.into_iter().collect::<Vec<_>>());
+        claims.check(&crate::claims::given(&[
+            (self.output.out.as_deref(), "--out"),
+            (warp.synthesis.hole_mask.as_deref(), "--hole-mask"),
+        ]))?;
+        self.output
+            .check(self.compare || self.timing.frames.is_some())?;
+        let scaled = [Method::NPass, Method::Tiled, Method::Layered, Method::Mrt];
+        let flag = match self.view_size {
+            Some([w, h]) => Some(format!("--view-size {w}x{h}")),
+            None => (self.view_scale != 1.0).then(|| format!("--view-scale {}", self.view_scale)),
+        };
+        if let Some(flag) = flag.filter(|_| !scaled.contains(&self.method)) {
+            bail!(
+                "{flag}: the {} method renders no view images to scale (only n-pass, tiled, \
+                 layered and mrt do)",
+                self.method
+            );
+        }
+        warp.check(self.method)?;
+        if self.output.format != OutputArg::Spatial {
+            self.display
+                .check_spatial_only(&self.output.format.name())?;
+        }
+        self.turntable.check(self.output.out.as_deref())?;
+        Ok(RunPlan {
+            method: self.method,
+            options: RendererOptions {
+                method: self.method,
+                warp: warp.options(),
+                ..Default::default()
+            },
+            display: self.display.display()?,
+            display_args: self.display,
+            size: self.size,
+            camera: self.camera.settings(),
+            view_sizing: match self.view_size {
+                Some(size) => ViewSizing::Size(size),
+                None => ViewSizing::Scale(self.view_scale),
+            },
+            output: self.output,
+            turntable: self.turntable.turntable.map(|n| (n, self.turntable.axis)),
+            hole_mask: warp.synthesis.hole_mask,
+            timing: self.timing,
+            compare: self.compare,
+            claims,
+            _budget: self.memory.apply(),
+        })
+    }
+}
+
+impl RunPlan {
+    /// The frame for a scene within `bounds`: display, camera framing, size, view images.
+    pub fn frame(&self, bounds: Bounds) -> Result<Frame> {
+        let display = self.display.clone();
+        let size = image_size(self.size, &display);
+        let camera = self.camera.camera(bounds, &display, size)?;
+        let mut frame = Frame::new(camera, display, size)?;
+        match self.view_sizing {
+            ViewSizing::Size(views) => frame
+                .scale_views_to(views)
+                .map_err(|e| anyhow::anyhow!("--view-size: {e}"))?,
+            ViewSizing::Scale(s) => frame.view_scale = [s; 2],
+        }
+        frame.validate()?;
+        Ok(frame)
+    }
+
+    /// The display as the user gave it (`--display`'s spec).
+    pub fn display_spec(&self) -> &str {
+        &self.display_args.display
+    }
+
+    /// The display's flags as a command line would repeat them, with `views` views.
+    pub fn display_flags(&self, views: u32) -> String {
+        self.display_args.flags(views)
+    }
+}
