@@ -5,6 +5,9 @@
 /// The CPU reference of the 3D Gaussian splatting rules (the GPU renderers' oracle).
 pub mod gaussians_reference;
 
+/// A deterministic generator and graphdeco's PLY writer (3D Gaussian test data).
+pub mod graphdeco;
+
 use std::path::PathBuf;
 use std::sync::{Mutex, MutexGuard, OnceLock};
 

@@ -107,7 +107,8 @@ fn files() -> Vec<(PathBuf, DataKind, LoadOptions)> {
         ..LoadOptions::default()
     };
     let gaussians = crate::gaussians_formats::scene();
-    use crate::gaussians_formats::{write_ply, write_splat, write_spz};
+    use crate::common::graphdeco::write_ply;
+    use crate::gaussians_formats::{write_splat, write_spz};
     vec![
         (write("tetra.obj", OBJ.as_bytes()), DataKind::Mesh, plain()),
         (

@@ -11,24 +11,8 @@ use autostereo::gaussians::{GaussianOptions, GaussianScene, GaussianSplatter, Ga
 use autostereo::image_io::{compare, RgbImage};
 use autostereo::render::{Method, Renderer};
 use common::gaussians_reference::{self, ViewCamera};
+use common::graphdeco::Lcg;
 use glam::{Quat, Vec3};
-
-/// A small deterministic generator (no rand crate): uniform in [0, 1).
-struct Lcg(u64);
-
-impl Lcg {
-    fn next(&mut self) -> f32 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((self.0 >> 40) as f32) / (1u64 << 24) as f32
-    }
-
-    fn range(&mut self, lo: f32, hi: f32) -> f32 {
-        lo + (hi - lo) * self.next()
-    }
-}
 
 /// `n` overlapping, anisotropic Gaussians with SH degree 3 in a unit ball.
 fn scene(n: usize, seed: u64) -> Gaussians {

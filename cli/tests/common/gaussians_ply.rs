@@ -1,22 +1,11 @@
 //! A small 3D Gaussian splat scene written as graphdeco's binary PLY (what the trainer writes:
 //! `x y z nx ny nz f_dc_* f_rest_* opacity scale_* rot_*`, `f_rest_*` channel-major, log
-//! scales, opacity logits, unnormalised (w, x, y, z) rotations), for the CLI's tests. The
-//! essentials of tests/formats/gaussians_formats/' writer.
+//! scales, opacity logits, unnormalised (w, x, y, z) rotations), for the CLI's tests, by
+//! the library tests' writer (tests/common/graphdeco.rs).
 
 use std::path::{Path, PathBuf};
 
-/// A tiny LCG (Knuth's MMIX constants): uniform in [lo, hi).
-struct Lcg(u64);
-
-impl Lcg {
-    fn next(&mut self, lo: f32, hi: f32) -> f32 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        lo + (hi - lo) * ((self.0 >> 40) as f32 / (1u64 << 24) as f32)
-    }
-}
+use super::graphdeco::{write_ply, Lcg, Raw};
 
 /// Gaussians in [`write`]'s scene.
 pub const COUNT: usize = 60;
@@ -28,38 +17,30 @@ pub const DEGREE: u32 = 1;
 /// the origin (wider than tall, nothing symmetric), from a fixed seed.
 pub fn bytes() -> Vec<u8> {
     let rest = 3 * 3; // (degree + 1)² − 1 coefficients per channel
-    let mut header = format!("ply\nformat binary_little_endian 1.0\nelement vertex {COUNT}\n");
-    let mut names: Vec<String> = [
-        "x", "y", "z", "nx", "ny", "nz", "f_dc_0", "f_dc_1", "f_dc_2",
-    ]
-    .map(String::from)
-    .to_vec();
-    names.extend((0..rest).map(|j| format!("f_rest_{j}")));
-    names.extend(
-        [
-            "opacity", "scale_0", "scale_1", "scale_2", "rot_0", "rot_1", "rot_2", "rot_3",
-        ]
-        .map(String::from),
-    );
-    for n in &names {
-        header += &format!("property float {n}\n");
-    }
-    header += "end_header\n";
-    let mut bytes = header.into_bytes();
     let mut r = Lcg(3030);
-    for _ in 0..COUNT {
-        let mut values = vec![r.next(-1.2, 1.2), r.next(-0.7, 0.7), r.next(-0.8, 0.8)];
-        values.extend([0.0; 3]);
-        values.extend([0; 3].map(|_| r.next(-1.6, 1.6)));
-        values.extend((0..rest).map(|_| r.next(-0.4, 0.4)));
-        values.push(r.next(-1.0, 4.0));
-        values.extend([0; 3].map(|_| r.next(-3.5, -1.6)));
-        values.extend([0; 4].map(|_| r.next(-1.0, 1.0)));
-        for v in values {
-            bytes.extend(v.to_le_bytes());
-        }
-    }
-    bytes
+    let raw: Vec<Raw> = (0..COUNT)
+        .map(|_| {
+            let position = [r.range(-1.2, 1.2), r.range(-0.7, 0.7), r.range(-0.8, 0.8)];
+            let mut sh = [[0.0; 3]; 16];
+            sh[0] = [0; 3].map(|_| r.range(-1.6, 1.6));
+            // Drawn in the file's order: f_rest_* is channel-major.
+            let per_channel = rest / 3;
+            for i in 0..rest {
+                sh[1 + i % per_channel][i / per_channel] = r.range(-0.4, 0.4);
+            }
+            let logit = r.range(-1.0, 4.0);
+            let log_scale = [0; 3].map(|_| r.range(-3.5, -1.6));
+            let rotation = [0; 4].map(|_| r.range(-1.0, 1.0));
+            Raw {
+                position,
+                log_scale,
+                rotation,
+                logit,
+                sh,
+            }
+        })
+        .collect();
+    write_ply(&raw, rest)
 }
 
 /// [`bytes`] written to `dir/name` (once per call; tests in parallel write distinct names).

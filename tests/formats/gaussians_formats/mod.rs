@@ -16,48 +16,29 @@ use autostereo::formats::{self, DataKind, Format};
 use autostereo::gaussians::load::{parse_ply, parse_splat, parse_spz};
 use autostereo::gaussians::sh::SH_C0;
 use autostereo::gaussians::{sigmoid, Gaussians};
+use common::graphdeco::{write_ply, Lcg, Raw};
 use glam::{Quat, Vec3};
 
 /// Gaussians in the scene.
 const N: usize = 50;
-
-/// A trainer's raw parameters, as a graphdeco PLY stores them.
-pub(crate) struct Raw {
-    position: [f32; 3],
-    log_scale: [f32; 3],
-    /// (w, x, y, z), unnormalised.
-    rotation: [f32; 4],
-    logit: f32,
-    /// 16 RGB coefficients, DC first.
-    sh: [[f32; 3]; 16],
-}
-
-/// A tiny LCG (Knuth's MMIX constants): uniform in [lo, hi).
-struct Lcg(u64);
-
-impl Lcg {
-    fn next(&mut self, lo: f32, hi: f32) -> f32 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        lo + (hi - lo) * ((self.0 >> 40) as f32 / (1u64 << 24) as f32)
-    }
-}
 
 /// 50 Gaussians with SH degree 3, anisotropic scales and random rotations, from a fixed seed.
 pub(crate) fn scene() -> Vec<Raw> {
     let mut r = Lcg(30);
     (0..N)
         .map(|_| {
-            let position = [0; 3].map(|_| r.next(-1.0, 1.0));
-            let log_scale = [r.next(-4.5, -1.0), r.next(-4.5, -1.0), r.next(-4.5, -1.0)];
-            let rotation = [0; 4].map(|_| r.next(-1.0, 1.0));
-            let logit = r.next(-3.0, 4.0);
+            let position = [0; 3].map(|_| r.range(-1.0, 1.0));
+            let log_scale = [
+                r.range(-4.5, -1.0),
+                r.range(-4.5, -1.0),
+                r.range(-4.5, -1.0),
+            ];
+            let rotation = [0; 4].map(|_| r.range(-1.0, 1.0));
+            let logit = r.range(-3.0, 4.0);
             let mut sh = [[0.0; 3]; 16];
-            sh[0] = [0; 3].map(|_| r.next(-1.5, 1.5));
+            sh[0] = [0; 3].map(|_| r.range(-1.5, 1.5));
             for c in &mut sh[1..] {
-                *c = [0; 3].map(|_| r.next(-0.5, 0.5));
+                *c = [0; 3].map(|_| r.range(-0.5, 0.5));
             }
             Raw {
                 position,
@@ -87,47 +68,6 @@ fn expected(raw: &[Raw]) -> Gaussians {
 
 fn quat([w, x, y, z]: [f32; 4]) -> Quat {
     Quat::from_xyzw(x, y, z, w)
-}
-
-/// graphdeco's PLY: properties in the trainer's order, `f_rest_*` channel-major.
-pub(crate) fn write_ply(raw: &[Raw], rest: usize) -> Vec<u8> {
-    let mut names: Vec<String> = [
-        "x", "y", "z", "nx", "ny", "nz", "f_dc_0", "f_dc_1", "f_dc_2",
-    ]
-    .map(String::from)
-    .to_vec();
-    names.extend((0..rest).map(|j| format!("f_rest_{j}")));
-    names.extend(
-        [
-            "opacity", "scale_0", "scale_1", "scale_2", "rot_0", "rot_1", "rot_2", "rot_3",
-        ]
-        .map(String::from),
-    );
-    let mut bytes = format!(
-        "ply\nformat binary_little_endian 1.0\nelement vertex {}\n",
-        raw.len()
-    );
-    for n in &names {
-        bytes += &format!("property float {n}\n");
-    }
-    bytes += "end_header\n";
-    let mut bytes = bytes.into_bytes();
-    let per_channel = rest / 3;
-    for g in raw {
-        let mut values: Vec<f32> = g.position.to_vec();
-        values.extend([0.0; 3]);
-        values.extend(g.sh[0]);
-        for c in 0..3 {
-            values.extend((1..=per_channel).map(|k| g.sh[k][c]));
-        }
-        values.push(g.logit);
-        values.extend(g.log_scale);
-        values.extend(g.rotation);
-        for v in values {
-            bytes.extend(v.to_le_bytes());
-        }
-    }
-    bytes
 }
 
 /// antimatter15's `convert.py`: colour `0.5 + SH_C0·f_dc` and the sigmoid's opacity ×255,
