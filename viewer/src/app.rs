@@ -458,7 +458,7 @@ impl State {
             let mut report = self.memory.report();
             report["frames"] = self.frames.into();
             report["period_frames"] = self.exercise_period(options).into();
-            // The test's heap bound depends on the backend (see cli/tests/viewer.rs).
+            // The test's heap bound depends on the backend (see cli/tests/viewer/).
             report["backend"] = self.ctx.info().backend.to_str().into();
             self.exercise_report = Some(report);
         }

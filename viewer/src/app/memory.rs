@@ -1,6 +1,6 @@
 //! What the viewer's exercise run records of its memory: resident memory every 50 frames, the
 //! heap in use every 10, and at the end of each period of its schedule (after a GPU wait) the
-//! live GPU objects. cli/tests/viewer.rs reads the report for leaks.
+//! live GPU objects. cli/tests/viewer/ reads the report for leaks.
 
 /// Frames between two samples of the heap in use. On GL llvmpipe the heap swings by up to
 /// 100 MiB from frame to frame (frames in flight, the window system's images), so a leak is
