@@ -6,9 +6,9 @@
 
 use std::fmt;
 
-use crate::mesh::{TileClip, Visibility};
-use crate::points::SplatDepth;
-use crate::volume::VolumePath;
+use crate::mesh::options::{TileClip, Visibility};
+use crate::points::options::SplatDepth;
+use crate::volume::options::VolumePath;
 
 /// A setting an error names as the way out. Exhaustive on purpose: a tool's `match` that gives
 /// each its words stops compiling when one is added.

@@ -145,6 +145,13 @@ impl Display {
         }
     }
 
+    /// The quilt of `views` views for this display at `size`: a Looking Glass's own
+    /// ([`Display::default_quilt`]), else the grid for the view count with tiles of `size`.
+    pub fn quilt(&self, views: u32, size: [u32; 2]) -> crate::render::quilt::QuiltLayout {
+        self.default_quilt(views)
+            .unwrap_or_else(|| crate::render::quilt::QuiltLayout::for_views(views, size))
+    }
+
     /// The quilt Looking Glass software uses for this display with `views` views: the
     /// family's grid (when it holds them) and, within the family's quilt size, tiles of the
     /// panel's aspect; an unknown family gets the grid for the view count within 4096².

@@ -2,15 +2,14 @@
 
 mod generate;
 mod load;
-mod options;
+pub(crate) mod options;
 mod order;
 pub(crate) mod passes;
 mod scene;
 
-pub use options::MeshOptions;
+pub use options::{CoverBounds, MeshOptions, TileClip, Visibility};
 pub use passes::{
-    CoverBounds, MeshLayered, MeshMrt, MeshNPass, MeshSinglePass, MeshSinglePassOptions, MeshTiled,
-    TileClip, Visibility,
+    MeshLayered, MeshMrt, MeshNPass, MeshSinglePass, MeshSinglePassOptions, MeshTiled,
 };
 pub use scene::{GpuVertex, MeshBuffers};
 

@@ -10,7 +10,7 @@ mod generate;
 mod grid;
 pub(crate) mod groups;
 mod load;
-mod options;
+pub(crate) mod options;
 pub(crate) mod passes;
 mod scene;
 
@@ -21,8 +21,8 @@ use glam::Vec3;
 pub use groups::{GroupCount, Grouping, MAX_AUTO_GROUPS, MAX_CANDIDATES};
 #[cfg(feature = "las")]
 pub use load::las;
-pub use options::PointOptions;
-pub use passes::{PointSplatter, SplatDepth, SplatOptions, DEFAULT_EPSILON_FRACTION};
+pub use options::{PointOptions, SplatDepth, DEFAULT_EPSILON_FRACTION};
+pub use passes::{PointSplatter, SplatOptions};
 pub use scene::{GpuSplat, SplatScene};
 
 use crate::camera::Bounds;

@@ -1,7 +1,6 @@
 //! How point splats render where there is a choice: the settings [`crate::RendererOptions`]
-//! holds for them.
-
-use super::{SplatDepth, SplatOptions, SplatScene, DEFAULT_EPSILON_FRACTION};
+//! holds for them (plain values: no GPU, no errors, so that an error's advice can name them,
+//! `src/advice.rs`; `PointOptions::for_scene` is the splatter's, src/points/passes/mod.rs).
 
 /// Point-splat settings (every method splats the same way, so the baselines compare).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -21,12 +20,25 @@ impl Default for PointOptions {
     }
 }
 
-impl PointOptions {
-    /// The splatter's options for `scene` (ε in its units).
-    pub fn for_scene(&self, scene: &SplatScene) -> SplatOptions {
-        SplatOptions {
-            depth: self.depth,
-            epsilon: SplatOptions::epsilon_for(scene, self.epsilon_fraction),
+/// Depth kept per group image by the single pass on subpixel (K = 3) displays.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+pub enum SplatDepth {
+    /// The paper's: one depth per pixel, the mean of its subpixels' hit depths.
+    Paper,
+    /// One depth per subpixel (subpixel-resolution geometry pass).
+    Exact,
+}
+
+impl SplatDepth {
+    /// Lower-case name (CLI, reports).
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Paper => "paper",
+            Self::Exact => "exact",
         }
     }
 }
+
+/// Default ε as a fraction of the scene's depth extent (its bounding-sphere diameter).
+pub const DEFAULT_EPSILON_FRACTION: f32 = 0.01;

@@ -60,15 +60,6 @@ impl QuiltLayout {
         }
     }
 
-    /// The quilt of `views` views for `display` at `size`: a Looking Glass's own (the family's
-    /// grid, tiles of the panel's aspect within the family's quilt size), else the grid for the
-    /// view count with tiles of `size`.
-    pub fn for_display(display: &crate::display::Display, views: u32, size: [u32; 2]) -> Self {
-        display
-            .default_quilt(views)
-            .unwrap_or_else(|| Self::for_views(views, size))
-    }
-
     /// A given grid; fails when it has fewer tiles than `views`.
     pub fn with_grid(cols: u32, rows: u32, tile: [u32; 2], views: u32) -> Result<Self> {
         if cols == 0 || rows == 0 || (cols as u64 * rows as u64) < views as u64 {

@@ -6,15 +6,15 @@ pub(crate) mod empty_space;
 pub mod generate;
 mod gradient;
 pub mod load;
-mod options;
+pub(crate) mod options;
 pub mod orientation;
 pub(crate) mod passes;
 mod scene;
 pub(crate) mod transfer;
 
 pub use empty_space::{CellRanges, MAX_DISTANCE};
-pub use options::{VolumeOptions, VolumePath, VolumeSettings};
-pub use passes::{AlphaMode, VolumeRaycaster, VolumeSlicer};
+pub use options::{AlphaMode, VolumeOptions, VolumePath, VolumeSettings};
+pub use passes::{VolumeRaycaster, VolumeSlicer};
 pub use scene::{
     EmptyDistanceTexture, PreintegrationTexture, VolumeScene, VolumeTexture, MAX_EMPTY_STRIDE,
     MAX_SAMPLES_PER_RAY, SUGGESTED_EMPTY_STRIDE, SUGGESTED_SHARE_SAMPLES,

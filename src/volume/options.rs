@@ -1,12 +1,8 @@
 //! How a volume renderer samples and shades a [`VolumeScene`], and which single-pass path it
 //! takes: settings of the renderer (given to [`crate::RendererOptions`] or to the volume
 //! renderers' constructors), never of the scene, so that one uploaded volume renders with
-//! several settings side by side.
-
-use super::scene::{check_step, MAX_EMPTY_STRIDE};
-use super::{AlphaMode, VolumeScene};
-use crate::error::{Error, Result};
-use crate::param::Param;
+//! several settings side by side. Plain values (no GPU, no errors: an error's advice names
+//! them, `src/advice.rs`); checked against a scene where the scene is, src/volume/scene.rs.
 
 /// Volume settings: the single pass's path and how every method samples.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -84,73 +80,24 @@ impl VolumeSettings {
             ..self
         }
     }
+}
 
-    /// The sampling distance in world units for `scene`.
-    pub fn step_length(&self, scene: &VolumeScene) -> f32 {
-        self.step
-            .map_or(scene.default_step_length(), |voxels| voxels * scene.voxel)
-    }
+/// How the K views' opacities of one fragment are blended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+pub enum AlphaMode {
+    /// One α per pixel, the mean over the K views (the paper; 2007 GPUs had one blend α).
+    Paper,
+    /// One α per channel (dual-source blending): matches N-pass.
+    Exact,
+}
 
-    /// Check the values that need no scene (renderer construction).
-    pub fn validate(&self) -> Result<()> {
-        if let Some(step) = self.step {
-            if !(step.is_finite() && step > 0.0) {
-                return Err(Error::invalid(
-                    Param::SamplingStep,
-                    format!("{step} voxels: must be positive and finite"),
-                ));
-            }
+impl AlphaMode {
+    /// Lower-case name (CLI, reports).
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Paper => "paper",
+            Self::Exact => "exact",
         }
-        if !(self.share_samples.is_finite() && self.share_samples >= 0.0) {
-            return Err(Error::invalid(
-                Param::SampleSharing,
-                format!(
-                    "{}: must be a finite number of voxels, 0 or more",
-                    self.share_samples
-                ),
-            ));
-        }
-        if !(1..=MAX_EMPTY_STRIDE).contains(&self.empty_stride) {
-            return Err(Error::invalid(
-                Param::EmptyStride,
-                format!(
-                    "{}: must be 1 (exact) to {MAX_EMPTY_STRIDE} sample planes",
-                    self.empty_stride
-                ),
-            ));
-        }
-        if !(0.0..1.0).contains(&self.thin_alpha) {
-            return Err(Error::invalid(
-                Param::ThinAlpha,
-                format!("{}: must be at least 0 and below 1", self.thin_alpha),
-            ));
-        }
-        if self.thin_alpha != 0.0 && self.empty_stride < 2 {
-            return Err(Error::invalid(
-                Param::ThinAlpha,
-                format!(
-                    "{}: thin material is stepped through by the probes of the probing \
-                     stride, which is {} (give a stride of 2 or more)",
-                    self.thin_alpha, self.empty_stride
-                ),
-            ));
-        }
-        if self.empty_stride > 1 && !self.skip_empty {
-            return Err(Error::invalid(
-                Param::EmptyStride,
-                format!(
-                    "{}: probing is part of empty-space skipping, which is off; use stride 1 \
-                     or turn skipping on",
-                    self.empty_stride
-                ),
-            ));
-        }
-        Ok(())
-    }
-
-    /// Check these settings against `scene` (every frame: the step must fit its box).
-    pub fn validate_for(&self, scene: &VolumeScene) -> Result<()> {
-        self.validate()?;
-        check_step(scene.extent, scene.voxel, self.step_length(scene))
     }
 }

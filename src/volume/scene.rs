@@ -8,7 +8,7 @@ use half::f16;
 use wgpu::util::DeviceExt;
 
 use super::transfer::{PreintegrationTable, TransferFunction, TABLE_SIZE};
-use super::{CellRanges, Volume};
+use super::{CellRanges, Volume, VolumeSettings};
 use crate::advice::{Advice, Setting};
 use crate::error::{Error, Result};
 use crate::param::Param;
@@ -313,4 +313,77 @@ pub(super) fn check_step(extent: Vec3, voxel: f32, step: f32) -> Result<()> {
         ));
     }
     Ok(())
+}
+
+/// The renderer's settings checked, alone and against a scene (src/volume/options.rs holds
+/// them as plain values).
+impl VolumeSettings {
+    /// The sampling distance in world units for `scene`.
+    pub fn step_length(&self, scene: &VolumeScene) -> f32 {
+        self.step
+            .map_or(scene.default_step_length(), |voxels| voxels * scene.voxel)
+    }
+
+    /// Check the values that need no scene (renderer construction).
+    pub fn validate(&self) -> Result<()> {
+        if let Some(step) = self.step {
+            if !(step.is_finite() && step > 0.0) {
+                return Err(Error::invalid(
+                    Param::SamplingStep,
+                    format!("{step} voxels: must be positive and finite"),
+                ));
+            }
+        }
+        if !(self.share_samples.is_finite() && self.share_samples >= 0.0) {
+            return Err(Error::invalid(
+                Param::SampleSharing,
+                format!(
+                    "{}: must be a finite number of voxels, 0 or more",
+                    self.share_samples
+                ),
+            ));
+        }
+        if !(1..=MAX_EMPTY_STRIDE).contains(&self.empty_stride) {
+            return Err(Error::invalid(
+                Param::EmptyStride,
+                format!(
+                    "{}: must be 1 (exact) to {MAX_EMPTY_STRIDE} sample planes",
+                    self.empty_stride
+                ),
+            ));
+        }
+        if !(0.0..1.0).contains(&self.thin_alpha) {
+            return Err(Error::invalid(
+                Param::ThinAlpha,
+                format!("{}: must be at least 0 and below 1", self.thin_alpha),
+            ));
+        }
+        if self.thin_alpha != 0.0 && self.empty_stride < 2 {
+            return Err(Error::invalid(
+                Param::ThinAlpha,
+                format!(
+                    "{}: thin material is stepped through by the probes of the probing \
+                     stride, which is {} (give a stride of 2 or more)",
+                    self.thin_alpha, self.empty_stride
+                ),
+            ));
+        }
+        if self.empty_stride > 1 && !self.skip_empty {
+            return Err(Error::invalid(
+                Param::EmptyStride,
+                format!(
+                    "{}: probing is part of empty-space skipping, which is off; use stride 1 \
+                     or turn skipping on",
+                    self.empty_stride
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Check these settings against `scene` (every frame: the step must fit its box).
+    pub fn validate_for(&self, scene: &VolumeScene) -> Result<()> {
+        self.validate()?;
+        check_step(scene.extent, scene.voxel, self.step_length(scene))
+    }
 }

@@ -22,7 +22,7 @@ fn quilt_layout(
     grid: Option<[u32; 2]>,
 ) -> Result<QuiltLayout> {
     let Some([cols, rows]) = grid else {
-        return Ok(QuiltLayout::for_display(display, views, size));
+        return Ok(display.quilt(views, size));
     };
     let tile = display.default_quilt(views).map_or(size, |q| q.tile);
     let layout = QuiltLayout::with_grid(cols, rows, tile, views)

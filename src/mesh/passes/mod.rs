@@ -5,6 +5,6 @@ pub mod duplicate;
 pub mod npass;
 pub mod single_pass;
 
-pub use duplicate::{MeshLayered, MeshMrt, MeshTiled, TileClip};
+pub use duplicate::{MeshLayered, MeshMrt, MeshTiled};
 pub use npass::MeshNPass;
-pub use single_pass::{CoverBounds, MeshSinglePass, MeshSinglePassOptions, Visibility};
+pub use single_pass::{MeshSinglePass, MeshSinglePassOptions};

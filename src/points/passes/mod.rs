@@ -29,33 +29,14 @@ use crate::frame::{Frame, FrameBinding};
 use crate::gpu::pass_params::PassParams;
 use crate::gpu::storage_fence::StorageFence;
 use crate::param::Param;
-use crate::points::SplatScene;
+use crate::points::options::SplatDepth;
+use crate::points::{PointOptions, SplatScene};
 use crate::render::atlas::{Atlas, AtlasCompositor};
 use crate::render::npass::NPassHarness;
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::Renderer;
 use crate::render::{begin_prepare, check_target, prepared_state};
 use crate::target::SpatialTarget;
-
-/// Depth kept per group image by the single pass on subpixel (K = 3) displays.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
-pub enum SplatDepth {
-    /// The paper's: one depth per pixel, the mean of its subpixels' hit depths.
-    Paper,
-    /// One depth per subpixel (subpixel-resolution geometry pass).
-    Exact,
-}
-
-impl SplatDepth {
-    /// Lower-case name (CLI, reports).
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Paper => "paper",
-            Self::Exact => "exact",
-        }
-    }
-}
 
 /// Splatting settings shared by every method (so the baselines splat exactly the same way).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -67,8 +48,15 @@ pub struct SplatOptions {
     pub epsilon: f32,
 }
 
-/// Default ε as a fraction of the scene's depth extent (its bounding-sphere diameter).
-pub const DEFAULT_EPSILON_FRACTION: f32 = 0.01;
+impl PointOptions {
+    /// The splatter's options for `scene` (ε in its units).
+    pub fn for_scene(&self, scene: &SplatScene) -> SplatOptions {
+        SplatOptions {
+            depth: self.depth,
+            epsilon: SplatOptions::epsilon_for(scene, self.epsilon_fraction),
+        }
+    }
+}
 
 impl SplatOptions {
     /// Exact depth, ε = `fraction` × the diameter of `scene`'s bounding sphere.

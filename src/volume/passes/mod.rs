@@ -9,4 +9,4 @@ pub mod slices;
 pub use raycast::VolumeRaycaster;
 #[cfg(test)]
 pub(crate) use resources::VolumeParams;
-pub use slices::{AlphaMode, VolumeSlicer};
+pub use slices::VolumeSlicer;

@@ -18,28 +18,9 @@ use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
 use crate::render::{begin_prepare, prepared_state, Prepared, Renderer};
 use crate::target::SpatialTarget;
+use crate::volume::options::AlphaMode;
 use crate::volume::VolumePath;
 use crate::volume::{VolumeScene, VolumeSettings};
-
-/// How the K views' opacities of one fragment are blended.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
-pub enum AlphaMode {
-    /// One α per pixel, the mean over the K views (the paper; 2007 GPUs had one blend α).
-    Paper,
-    /// One α per channel (dual-source blending): matches N-pass.
-    Exact,
-}
-
-impl AlphaMode {
-    /// Lower-case name (CLI, reports).
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Paper => "paper",
-            Self::Exact => "exact",
-        }
-    }
-}
 
 /// Accumulation format: float, so hundreds of blended slices don't quantise.
 const ACCUMULATION_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;

@@ -53,7 +53,7 @@ impl State {
                 // Looking Glass order: view 0 bottom-left, left to right, bottom to top. The
                 // grid `--output quilt` writes for this display (a Looking Glass's own), its
                 // tiles shrunk to fit the window.
-                let grid = QuiltLayout::for_display(&panel, n, size);
+                let grid = panel.quilt(n, size);
                 let tile = [(size[0] / grid.cols).max(1), (size[1] / grid.rows).max(1)];
                 let layout = QuiltLayout { tile, ..grid };
                 (0..n)

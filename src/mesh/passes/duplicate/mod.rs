@@ -17,7 +17,7 @@ mod tiled;
 
 pub use layered::MeshLayered;
 pub use mrt::MeshMrt;
-pub use tiled::{MeshTiled, TileClip};
+pub use tiled::MeshTiled;
 
 use std::num::NonZeroU32;
 use std::ops::Range;

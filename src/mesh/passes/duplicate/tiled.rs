@@ -8,6 +8,7 @@ use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
 use crate::gpu::pipeline::{
     begin_pass_to, bind_group_layout, cleared, pipeline_layout, uniform_entry, PassTargets,
 };
+use crate::mesh::options::TileClip;
 use crate::mesh::passes::npass::PreparedFor;
 use crate::mesh::MeshBuffers;
 use crate::render::atlas::{Atlas, AtlasCompositor, TileSampling};
@@ -15,30 +16,7 @@ use crate::render::quilt::QuiltLayout;
 use crate::render::{begin_prepare, check_target, prepared_state, Made, Prepared, Renderer};
 use crate::target::{SpatialTarget, SPATIAL_FORMAT};
 
-/// How a copy is kept inside its tile.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
-pub enum TileClip {
-    /// Clip distances where the adapter has them, else [`TileClip::Discard`].
-    #[default]
-    Auto,
-    /// Four clip distances per vertex (exact clipping before rasterisation; needs
-    /// `CLIP_DISTANCES`).
-    ClipDistances,
-    /// Fragments outside the tile are discarded (any adapter; costs early depth testing).
-    Discard,
-}
-
 impl TileClip {
-    /// Lower-case name (reports).
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Auto => "auto",
-            Self::ClipDistances => "clip-distances",
-            Self::Discard => "discard",
-        }
-    }
-
     /// What `self` is on `device`: `Auto` resolved; `ClipDistances` fails with
     /// `Error::MissingFeature` where the adapter has none.
     pub fn resolve(self, device: &wgpu::Device) -> Result<Self> {

@@ -27,6 +27,7 @@ use crate::frame::{Frame, FrameBinding};
 use crate::gpu::dispatch::dispatch_2d;
 use crate::gpu::pipeline::{begin_pass, cleared, draw_fullscreen};
 use crate::gpu::storage_fence::StorageFence;
+use crate::mesh::options::{CoverBounds, Visibility};
 use crate::mesh::MeshBuffers;
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
@@ -34,67 +35,6 @@ use crate::render::{begin_prepare, check_prepared, check_target, Renderer};
 use crate::target::SpatialTarget;
 use pipelines::{Layouts, Pipelines};
 use scratch::Scratch;
-
-/// How per-subpixel visibility is resolved.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
-pub enum Visibility {
-    /// Subpixel-resolution rasterisation + hardware depth test + deferred shading. Exact.
-    Exact,
-    /// Per-pixel fragments, per-subpixel 64-bit atomic depth + deferred shading. Exact.
-    Atomic,
-    /// Covering rectangles rasterised by a compute pass, 64-bit atomic depth. Exact.
-    Compute,
-    /// The paper's one depth per fragment; approximate where triangles split a pixel.
-    Fast,
-}
-
-impl Visibility {
-    /// The fastest exact mode `device` supports: compute rasterisation where 64-bit atomics
-    /// exist (fastest on lavapipe by far, docs/MESHES.md), else subpixel rasterisation.
-    pub fn best_exact(device: &wgpu::Device) -> Self {
-        if device
-            .features()
-            .contains(Visibility::Compute.required_features())
-        {
-            Visibility::Compute
-        } else {
-            Visibility::Exact
-        }
-    }
-
-    /// Name as the CLI spells it.
-    pub fn name(self) -> &'static str {
-        match self {
-            Visibility::Exact => "exact",
-            Visibility::Atomic => "atomic",
-            Visibility::Compute => "compute",
-            Visibility::Fast => "fast",
-        }
-    }
-
-    /// Features the mode needs beyond the WebGPU defaults.
-    pub fn required_features(self) -> wgpu::Features {
-        match self {
-            Visibility::Exact => wgpu::Features::empty(),
-            Visibility::Atomic | Visibility::Compute => {
-                wgpu::Features::SHADER_INT64 | wgpu::Features::SHADER_INT64_ATOMIC_MIN_MAX
-            }
-            Visibility::Fast => wgpu::Features::DUAL_SOURCE_BLENDING,
-        }
-    }
-}
-
-/// Horizontal extent of the covering rectangles.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
-pub enum CoverBounds {
-    /// docs/DESIGN.md §3: `x ± vd·|1 − fd/d|` per vertex. Always covers.
-    #[default]
-    Exact,
-    /// The paper's printed `(x ∓ vd)·fd/d`: under-covers geometry beyond 2·fd (kept to measure).
-    Paper,
-}
 
 /// Creation-time options.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
