@@ -17,7 +17,7 @@ use autostereo::timing::FrameTimer;
 use autostereo::volume::VolumeSettings;
 use autostereo::{AnyRenderer, AnyScene, RendererOptions, VolumeOptions};
 
-use super::report::{base_size, find, rows_of};
+use super::rows::{base_size, find, rows_of};
 use super::scenes::{self, BenchScene, Kind};
 use super::tradeoffs::Tradeoff;
 use super::{image, sweep_display, time_frame, Plan, Results};

@@ -8,6 +8,7 @@ mod gaussians;
 mod plan;
 mod plot;
 mod report;
+mod rows;
 mod scenes;
 mod schedule;
 mod targets;

@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 
 use anyhow::Result;
 
-use super::report::{base_size, best_single_pass, find, rows_of, PAPER_DISPLAY};
+use super::rows::{base_size, best_single_pass, find, rows_of, PAPER_DISPLAY};
 use super::scenes::Kind;
 use super::Results;
 

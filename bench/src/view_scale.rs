@@ -38,7 +38,7 @@ pub fn measure(
         "view scale",
     );
     for scene in scenes {
-        let full = scenes::frame(scene.bounds, super::report::PAPER_DISPLAY, plan.size)?;
+        let full = scenes::frame(scene.bounds, super::rows::PAPER_DISPLAY, plan.size)?;
         let npass = RendererOptions::new(Method::NPass);
         let mut npass = AnyRenderer::new(&ctx.device, &scene.data, &npass)?;
         let oracle = image(ctx, scene, &mut npass, &full)?;

@@ -38,7 +38,7 @@ impl Claims {
 
     /// Take `path` for `flag`'s output, or say why it may not be written.
     pub fn claim(&mut self, path: &Path, flag: &str) -> Result<()> {
-        let same = |other: &Path| crate::args::same_file(path, other);
+        let same = |other: &Path| crate::parse::same_file(path, other);
         if let Some(input) = self.inputs.iter().find(|i| same(i)) {
             bail!(
                 "{flag}: {} is the input file {}; writing would destroy it (choose another name)",

@@ -10,7 +10,8 @@ use autostereo::render::atlas::{Atlas, QuiltInterleaver};
 use autostereo::render::quilt::QuiltLayout;
 use autostereo::target::SpatialTarget;
 
-use crate::args::{check_output, parse_size, DisplayArgs};
+use crate::args::DisplayArgs;
+use crate::parse::{check_output, parse_size};
 
 #[derive(clap::Args)]
 pub struct InterleaveArgs {

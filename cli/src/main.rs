@@ -13,6 +13,7 @@ mod mask_cmd;
 mod mesh_cmd;
 mod method_arg;
 mod output;
+mod parse;
 mod parse_errors;
 mod plan;
 mod points_cmd;

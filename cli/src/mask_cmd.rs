@@ -6,7 +6,8 @@ use anyhow::Result;
 use autostereo::image_io::RgbImage;
 use autostereo::render::MaskImageRenderer;
 
-use crate::args::{check_output, gpu, parse_size, DisplayArgs};
+use crate::args::{gpu, DisplayArgs};
+use crate::parse::{check_output, parse_size};
 
 #[derive(clap::Args)]
 pub struct MaskArgs {

@@ -8,7 +8,8 @@ use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::Method;
 use autostereo::{MeshOptions, RendererOptions};
 
-use crate::args::{gpu, OrAuto, RenderArgs};
+use crate::args::{gpu, RenderArgs};
+use crate::parse::OrAuto;
 use crate::run::{render_and_save, report, run_summary, Rendered};
 
 #[derive(clap::Args)]

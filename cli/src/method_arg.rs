@@ -107,7 +107,7 @@ mod tests {
     #[derive(Parser)]
     #[command(mut_arg("method", |a| method_arg(a, "points", &autostereo::points::METHODS)))]
     struct Points {
-        #[arg(long, value_parser = crate::args::method_parser(), default_value = "single-pass")]
+        #[arg(long, value_parser = crate::parse::method_parser(), default_value = "single-pass")]
         method: Method,
     }
 

@@ -15,8 +15,7 @@ use autostereo::RendererOptions;
 
 use crate::args::{image_size, DisplayArgs, FramesArgs, RenderArgs};
 use crate::claims::Claims;
-use crate::output::{OutputArg, OutputArgs};
-use crate::turntable::Axis;
+use crate::output::flags::{Axis, OutputArg, OutputArgs};
 use crate::warp_cmd::WarpArgs;
 
 /// How large the view images are, where the method renders them.

@@ -10,8 +10,11 @@ use autostereo::render::Renderer;
 use autostereo::rgbd::{DepthMapOptions, RgbdImage, RgbdScene};
 use autostereo::warp::{RgbdWarp, WarpOptions};
 
-use crate::args::{parse_size, DisplayArgs};
-use crate::output::{say_written, OutputArgs, Saved};
+use crate::args::DisplayArgs;
+use crate::output::flags::OutputArgs;
+use crate::output::say_written;
+use crate::parse::parse_size;
+use crate::run::Saved;
 use crate::run::{report, timed};
 use crate::warp_cmd::WarpSynthesisArgs;
 
@@ -85,7 +88,7 @@ pub fn run(args: RgbdArgs) -> Result<()> {
         (args.output.out.as_deref(), "--out"),
         (args.warp.hole_mask.as_deref(), "--hole-mask"),
     ]))?;
-    if args.output.format != crate::output::OutputArg::Spatial {
+    if args.output.format != crate::output::flags::OutputArg::Spatial {
         args.display
             .check_spatial_only(&args.output.format.name())?;
     }

@@ -1,6 +1,6 @@
 //! What the render commands share: timed frames, the N-pass comparison, the report.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use anyhow::Result;
 use autostereo::frame::Frame;
@@ -9,6 +9,11 @@ use autostereo::image_io::{compare, ImageDiff, RgbImage};
 use autostereo::render::Renderer;
 use autostereo::target::SpatialTarget;
 use autostereo::timing::{median, FrameTimer, TimingSource};
+use autostereo::RendererOptions;
+
+use crate::output::flags::OutputArg;
+use crate::output::{say_written, write};
+use crate::warp_cmd::hole_share;
 
 /// The last frame's image and the median time over the timed frames.
 pub struct Timed {
@@ -221,7 +226,7 @@ pub fn render_and_save<S: ?Sized>(
         plan.hole_mask.as_deref(),
     )?)?;
     let run = timed(ctx, renderer, scene, frame, &plan.timing)?;
-    let mut saved = crate::output::save_all(ctx, renderer, scene, frame, bounds, plan, &run.image)?;
+    let mut saved = save_all(ctx, renderer, scene, frame, bounds, plan, &run.image)?;
     let diff = match plan.compare {
         true => Some(compare_with(
             ctx,
@@ -233,11 +238,100 @@ pub fn render_and_save<S: ?Sized>(
         false => None,
     };
     if plan.method == autostereo::render::Method::Warp {
-        let holes =
-            crate::warp_cmd::hole_report(ctx, plan, options, &build, scene, frame, &mut saved)?;
+        let holes = hole_report(ctx, plan, options, &build, scene, frame, &mut saved)?;
         merge(&mut extra, holes);
     }
     merge(&mut extra, saved.fields());
     let fields = run_fields(ctx, plan, frame, &run, extra);
     Ok(Rendered { run, fields, diff })
+}
+
+/// What a run wrote: every file, and the turntable's summary where it turned.
+pub struct Saved {
+    pub written: Vec<PathBuf>,
+    pub turntable: Option<crate::turntable::Summary>,
+}
+
+impl Saved {
+    /// The `--json` fields: `written` (every file, in order) and the turntable's.
+    pub fn fields(&self) -> serde_json::Value {
+        let mut fields = serde_json::json!({ "written": self.written });
+        if let Some(t) = &self.turntable {
+            merge(&mut fields, t.fields());
+        }
+        fields
+    }
+}
+
+/// What a render command writes after its timed run: `--out` in `--output`'s format, or with
+/// `--turntable` its numbered frames (scene turned around the centre of `bounds`).
+#[allow(clippy::too_many_arguments)]
+pub fn save_all<S: ?Sized>(
+    ctx: &GpuContext,
+    renderer: &mut dyn Renderer<S>,
+    scene: &S,
+    frame: &Frame,
+    bounds: autostereo::camera::Bounds,
+    plan: &mut crate::plan::RunPlan,
+    spatial: &RgbImage,
+) -> Result<Saved> {
+    let turntable = crate::turntable::render(ctx, renderer, scene, frame, bounds, plan)?;
+    let output = &plan.output;
+    let written = if let Some(summary) = &turntable {
+        if !output.json {
+            eprintln!("{}", summary.line());
+        }
+        summary.written.clone()
+    } else if let Some(out) = &output.out {
+        let written = write(
+            ctx,
+            renderer,
+            scene,
+            frame,
+            output,
+            &mut plan.claims,
+            Some(spatial),
+            out,
+        )?;
+        say_written(output.json, &written);
+        if output.format == OutputArg::Spatial {
+            crate::run::how_to_look(out, plan, frame);
+        }
+        written
+    } else {
+        Vec::new()
+    };
+    Ok(Saved { written, turntable })
+}
+
+/// The report fields of a warp: R, the path, what depth the references carry, and the share
+/// of subpixels filled rather than seen (from a hole-mask render of the renderer `build` makes
+/// from `options`, written where asked).
+#[allow(clippy::too_many_arguments)]
+pub fn hole_report<S: ?Sized>(
+    ctx: &GpuContext,
+    plan: &mut crate::plan::RunPlan,
+    options: &RendererOptions,
+    build: impl FnOnce(&RendererOptions) -> autostereo::Result<Box<dyn Renderer<S>>>,
+    scene: &S,
+    frame: &Frame,
+    saved: &mut Saved,
+) -> Result<serde_json::Value> {
+    let json = plan.output.json;
+    let mut options = *options;
+    options.warp.hole_mask = true;
+    let mut warp = build(&options)?;
+    let mask = warp.render_image(&ctx.device, &ctx.queue, scene, frame)?;
+    if let Some(path) = &plan.hole_mask {
+        plan.claims.save_png(&mask, path, "--hole-mask")?;
+        crate::output::say_written(json, std::slice::from_ref(path));
+        saved.written.push(path.clone());
+    }
+
+    Ok(serde_json::json!({
+        "references": options.warp.references,
+        "warp_path": options.warp.path.name(),
+        "warp": warp.describe(),
+        "hole_share": hole_share(&mask),
+    }))
 }

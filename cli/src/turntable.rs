@@ -4,48 +4,18 @@
 //! display stay put, as on a real turntable; a progress bar runs on stderr while it renders
 //! and the frame times are summarised at the end.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::Instant;
 
-use anyhow::{bail, Result};
+use anyhow::Result;
 use autostereo::camera::Bounds;
 use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::render::Renderer;
 use glam::{Mat4, Vec3};
 
+use crate::output::flags::Axis;
 use crate::plan::RunPlan;
-
-/// The axis the scene turns around (world coordinates, through the centre of its bounds).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Axis {
-    X,
-    Y,
-    Z,
-}
-
-/// The turntable's flags.
-#[derive(clap::Args, Clone, Debug)]
-#[command(next_help_heading = "Output")]
-pub struct TurntableArgs {
-    /// Render one full turn of the scene as FRAMES numbered files `{--out stem}_{k:04}.png`
-    /// (quilts: `{stem}_{k:04}_qs…png`) in --output's format, frame k turned by k/FRAMES·360°.
-    #[arg(long, value_name = "FRAMES", value_parser = crate::args::frames_parser())]
-    pub turntable: Option<u32>,
-    /// The turntable's axis through the scene's centre (y: upright, as on a real turntable).
-    #[arg(long, value_enum, default_value = "y", requires = "turntable")]
-    pub axis: Axis,
-}
-
-impl TurntableArgs {
-    /// Fail early: a turntable writes to numbered files named after `--out`.
-    pub fn check(&self, out: Option<&Path>) -> Result<()> {
-        if self.turntable.is_some() && out.is_none() {
-            bail!("--turntable writes numbered files named after --out, which is missing");
-        }
-        Ok(())
-    }
-}
 
 /// What a turntable run wrote and how long its frames took.
 pub struct Summary {
@@ -110,19 +80,6 @@ pub fn turned(frame: &Frame, axis: Axis, center: Vec3, angle: f32) -> Frame {
     turned
 }
 
-/// `{stem}_{k:04}.png` next to `out`; for a quilt (`quilt`) without the stem's `_qs…` suffix,
-/// which each frame's name gets after its number.
-pub fn numbered(out: &Path, k: u32, quilt: bool) -> PathBuf {
-    let stem = out
-        .file_stem()
-        .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
-    let base = match quilt {
-        true => autostereo::render::quilt::strip_quilt_suffix(&stem),
-        false => &stem,
-    };
-    out.with_file_name(format!("{base}_{k:04}.png"))
-}
-
 /// Render the turntable `plan` asks for; `None` when it asks for none.
 pub fn render<S: ?Sized>(
     ctx: &GpuContext,
@@ -135,7 +92,7 @@ pub fn render<S: ?Sized>(
     let (Some((frames, axis)), Some(out)) = (plan.turntable, plan.output.out.clone()) else {
         return Ok(None);
     };
-    let quilt = plan.output.format == crate::output::OutputArg::Quilt;
+    let quilt = plan.output.format == crate::output::flags::OutputArg::Quilt;
     let start = Instant::now();
     let bar = crate::progress::bar(u64::from(frames), "turntable");
     let mut written = Vec::new();
@@ -152,7 +109,7 @@ pub fn render<S: ?Sized>(
             &plan.output,
             &mut plan.claims,
             None,
-            &numbered(&out, k, quilt),
+            &crate::output::names::numbered(&out, k, quilt),
         )?;
         frame_ms.push(t.elapsed().as_secs_f64() * 1e3);
         written.extend(paths);
@@ -167,20 +124,4 @@ pub fn render<S: ?Sized>(
         frame_ms,
         seconds: start.elapsed().as_secs_f64(),
     }))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn numbered_files_keep_the_directory_and_drop_the_extension() {
-        let p = numbered(Path::new("out/head.png"), 7, false);
-        assert_eq!(p, PathBuf::from("out/head_0007.png"));
-        // A quilt's frames get the suffix after the number (output::write), once.
-        let q = numbered(Path::new("out/b_qs2x4a1.3333.png"), 0, true);
-        assert_eq!(q, PathBuf::from("out/b_0000.png"));
-        let spatial = numbered(Path::new("out/b_qs2x4a1.3333.png"), 0, false);
-        assert_eq!(spatial, PathBuf::from("out/b_qs2x4a1.3333_0000.png"));
-    }
 }

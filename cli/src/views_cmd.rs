@@ -6,7 +6,8 @@ use anyhow::{bail, Result};
 use autostereo::image_io::RgbImage;
 use autostereo::views::{anaglyph, extract_view};
 
-use crate::args::{check_output, DisplayArgs};
+use crate::args::DisplayArgs;
+use crate::parse::check_output;
 
 #[derive(clap::Args)]
 pub struct ViewsArgs {
@@ -21,7 +22,7 @@ pub struct ViewsArgs {
     view: Option<u32>,
     /// Red/cyan anaglyph of views L (left eye, red) and R (right eye), the pair --eyes names in
     /// every command (formerly --anaglyph L,R, still accepted).
-    #[arg(long, value_name = "L,R", alias = "anaglyph", value_parser = crate::args::parse_eyes)]
+    #[arg(long, value_name = "L,R", alias = "anaglyph", value_parser = crate::parse::parse_eyes)]
     eyes: Option<[u32; 2]>,
     /// Output PNG.
     #[arg(long, value_name = "F.png", help_heading = "Output")]

@@ -4,11 +4,8 @@
 use std::path::PathBuf;
 
 use anyhow::{bail, Result};
-use autostereo::frame::Frame;
-use autostereo::gpu::GpuContext;
-use autostereo::render::{Method, Renderer};
+use autostereo::render::Method;
 use autostereo::warp::{WarpOptions, WarpPath};
-use autostereo::RendererOptions;
 
 /// How a warp makes its views: the flags `--method warp` and `rgbd` (always a warp) share.
 #[derive(clap::Args, Clone, Debug, Default)]
@@ -41,7 +38,7 @@ impl WarpSynthesisArgs {
     /// Refuse bad values before loading anything.
     pub fn check(&self) -> Result<()> {
         if let Some(path) = &self.hole_mask {
-            crate::args::check_output(path)?;
+            crate::parse::check_output(path)?;
         }
         Ok(())
     }
@@ -117,36 +114,4 @@ impl From<&WarpArgs> for WarpOptions {
 pub fn hole_share(mask: &autostereo::image_io::RgbImage) -> f64 {
     let filled = mask.data.iter().filter(|&&v| v >= 128).count();
     filled as f64 / mask.data.len().max(1) as f64
-}
-
-/// The report fields of a warp: R, the path, what depth the references carry, and the share
-/// of subpixels filled rather than seen (from a hole-mask render of the renderer `build` makes
-/// from `options`, written where asked).
-#[allow(clippy::too_many_arguments)]
-pub fn hole_report<S: ?Sized>(
-    ctx: &GpuContext,
-    plan: &mut crate::plan::RunPlan,
-    options: &RendererOptions,
-    build: impl FnOnce(&RendererOptions) -> autostereo::Result<Box<dyn Renderer<S>>>,
-    scene: &S,
-    frame: &Frame,
-    saved: &mut crate::output::Saved,
-) -> Result<serde_json::Value> {
-    let json = plan.output.json;
-    let mut options = *options;
-    options.warp.hole_mask = true;
-    let mut warp = build(&options)?;
-    let mask = warp.render_image(&ctx.device, &ctx.queue, scene, frame)?;
-    if let Some(path) = &plan.hole_mask {
-        plan.claims.save_png(&mask, path, "--hole-mask")?;
-        crate::output::say_written(json, std::slice::from_ref(path));
-        saved.written.push(path.clone());
-    }
-
-    Ok(serde_json::json!({
-        "references": options.warp.references,
-        "warp_path": options.warp.path.name(),
-        "warp": warp.describe(),
-        "hole_share": hole_share(&mask),
-    }))
 }

@@ -9,7 +9,7 @@ use autostereo::display::Display;
 use autostereo::frame::Frame;
 use autostereo::render::quilt::QuiltLayout;
 
-use super::{OutputArg, OutputArgs};
+use super::flags::{OutputArg, OutputArgs};
 
 /// The quilt of `views` views `--output quilt` writes for `display` at `size` (and the
 /// viewer's quilt preview shows): the `--quilt` grid, else a Looking Glass's own (the family's
@@ -77,9 +77,7 @@ pub fn planned(
             check_quilt_name(out, layout)?;
         }
         let outs: Vec<PathBuf> = match turntable {
-            Some(frames) => (0..frames)
-                .map(|k| crate::turntable::numbered(out, k, quilt))
-                .collect(),
+            Some(frames) => (0..frames).map(|k| numbered(out, k, quilt)).collect(),
             None => vec![out.clone()],
         };
         let views = frame.camera.views;
@@ -150,6 +148,19 @@ pub fn view_file(out: &Path, v: u32, views: u32) -> PathBuf {
     ))
 }
 
+/// `{stem}_{k:04}.png` next to `out`; for a quilt (`quilt`) without the stem's `_qs…` suffix,
+/// which each frame's name gets after its number.
+pub fn numbered(out: &Path, k: u32, quilt: bool) -> PathBuf {
+    let stem = out
+        .file_stem()
+        .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
+    let base = match quilt {
+        true => autostereo::render::quilt::strip_quilt_suffix(&stem),
+        false => &stem,
+    };
+    out.with_file_name(format!("{base}_{k:04}.png"))
+}
+
 #[cfg(test)]
 mod tests {
     #[test]
@@ -165,5 +176,18 @@ mod tests {
         let in_order = names.clone();
         names.sort();
         assert_eq!(names, in_order);
+    }
+
+    #[test]
+    fn numbered_files_keep_the_directory_and_drop_the_extension() {
+        use super::numbered;
+        use std::path::{Path, PathBuf};
+        let p = numbered(Path::new("out/head.png"), 7, false);
+        assert_eq!(p, PathBuf::from("out/head_0007.png"));
+        // A quilt's frames get the suffix after the number (output::write), once.
+        let q = numbered(Path::new("out/b_qs2x4a1.3333.png"), 0, true);
+        assert_eq!(q, PathBuf::from("out/b_0000.png"));
+        let spatial = numbered(Path::new("out/b_qs2x4a1.3333.png"), 0, false);
+        assert_eq!(spatial, PathBuf::from("out/b_qs2x4a1.3333_0000.png"));
     }
 }

@@ -9,7 +9,8 @@ use anyhow::Result;
 use autostereo::render::Method;
 use autostereo_viewer::{Preview, Switch};
 
-use crate::args::{check_output, parse_size, CameraArgs, DisplayArgs};
+use crate::args::{CameraArgs, DisplayArgs};
+use crate::parse::{check_output, parse_size};
 
 #[derive(clap::Args)]
 pub struct ViewArgs {
@@ -45,13 +46,13 @@ pub struct ViewArgs {
     size: [u32; 2],
     /// Window position X,Y on the screen (the mask's origin follows it); negative on a
     /// monitor left of or above the primary (`--position -1920,0`).
-    #[arg(long, value_name = "X,Y", value_parser = crate::args::parse_point, allow_hyphen_values = true, help_heading = "Window")]
+    #[arg(long, value_name = "X,Y", value_parser = crate::parse::parse_point, allow_hyphen_values = true, help_heading = "Window")]
     position: Option<[i32; 2]>,
     /// Full screen on monitor MONITOR (0 = the first; default 0).
     #[arg(long, num_args = 0..=1, default_missing_value = "0", help_heading = "Window")]
     fullscreen: Option<usize>,
     /// Starting method (keys: m cycles through the primitive's methods).
-    #[arg(long, value_parser = crate::args::method_parser(), default_value = "single-pass", help_heading = "Method")]
+    #[arg(long, value_parser = crate::parse::method_parser(), default_value = "single-pass", help_heading = "Method")]
     method: Method,
     /// What the window shows (key: p).
     #[arg(long, value_enum, default_value = "spatial", help_heading = "Window")]
@@ -108,7 +109,7 @@ fn parse_move(s: &str) -> Result<(u32, [i32; 2]), String> {
         .trim()
         .parse()
         .map_err(|_| format!("'{s}': K is not a whole number"))?;
-    Ok((frame, crate::args::parse_point(at)?))
+    Ok((frame, crate::parse::parse_point(at)?))
 }
 
 impl ViewArgs {
