@@ -49,7 +49,7 @@ impl fmt::Display for Setting {
             Setting::MaxMemory => f.write_str("Budget::set_max"),
             Setting::RawHeaderBytes(n) => write!(f, "RawSpec::header_bytes = {n}"),
             Setting::RawLayout => f.write_str("RawSpec"),
-            Setting::QuiltGrid => f.write_str("QuiltLayout::for_image's grid"),
+            Setting::QuiltGrid => f.write_str("QuiltImage::read's grid"),
             Setting::DepthResample => f.write_str("DepthMapOptions::resample"),
         }
     }

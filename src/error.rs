@@ -181,6 +181,14 @@ pub enum Error {
         /// What to do about it, where the library names a setting.
         advice: Option<Advice>,
     },
+    /// A video could not be read or written (`video` feature).
+    #[error("video {path}: {}", printable(.reason))]
+    Video {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong with it.
+        reason: String,
+    },
     /// I/O on a named file. The message carries the OS error, so it is deliberately not also
     /// the error's `source()`: printers of the error chain (`anyhow`'s `{:#}`) show it once.
     #[error("{path}: {error}")]

@@ -38,6 +38,8 @@ pub mod rgbd;
 pub mod shader;
 pub mod target;
 pub mod timing;
+#[cfg(feature = "video")]
+pub mod video;
 pub mod views;
 pub mod volume;
 pub mod warp;

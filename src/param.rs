@@ -65,6 +65,12 @@ pub enum Param {
     Quilt,
     /// A quilt atlas's textures.
     QuiltAtlas,
+    /// A quilt image's size in pixels.
+    QuiltSize,
+    /// A video's frames per second.
+    FrameRate,
+    /// A video's bit rate.
+    BitRate,
     /// The factor on every splat radius.
     RadiusScale,
     /// The warp's reference views.
@@ -137,7 +143,7 @@ pub enum Param {
 
 impl Param {
     /// Every parameter.
-    pub const ALL: [Param; 64] = [
+    pub const ALL: [Param; 67] = [
         Param::Aspect,
         Param::Bands,
         Param::Camera,
@@ -168,6 +174,9 @@ impl Param {
         Param::PointCloud,
         Param::Quilt,
         Param::QuiltAtlas,
+        Param::QuiltSize,
+        Param::FrameRate,
+        Param::BitRate,
         Param::RadiusScale,
         Param::References,
         Param::RgbdColorTexture,
@@ -237,6 +246,9 @@ impl Param {
             Param::PointCloud => "point cloud",
             Param::Quilt => "quilt",
             Param::QuiltAtlas => "quilt atlas",
+            Param::QuiltSize => "quilt size",
+            Param::FrameRate => "frame rate",
+            Param::BitRate => "bit rate",
             Param::RadiusScale => "radius scale",
             Param::References => "references",
             Param::RgbdColorTexture => "RGB-D colour texture",

@@ -23,9 +23,8 @@ pub struct DisplayArgs {
     #[arg(long)]
     pub views: Option<u32>,
     /// Window origin on the panel in pixels, X,Y; negative where the window starts left of or
-    /// above the panel (`--origin -100,20`). `view` adds the window's position on the screen:
-    /// there it is minus the panel's (`--origin -1920,0` for a panel right of a 1920-wide
-    /// monitor).
+    /// above the panel (`--origin -100,20`). `view` adds the window's position on the monitor
+    /// it is on (the panel), wherever that monitor sits on the desktop.
     #[arg(long, value_name = "X,Y", value_parser = parse_point, default_value = "0,0", allow_hyphen_values = true)]
     pub origin: [i32; 2],
     /// Reverse the view order.

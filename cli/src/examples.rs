@@ -48,8 +48,10 @@ pub const INTERLEAVE: &str = "Examples:
   autostereo interleave views.png --quilt 4x2 --display hubner8 --out spatial.png";
 
 pub const VIEW: &str = "Examples:
-  autostereo view bunny.obj --display lkg --fullscreen 1
-      on the Looking Glass, the second monitor
+  autostereo view bunny.obj --display lkg --fullscreen
+      full screen on the Looking Glass (the monitor of its calibration's size)
+  autostereo view --list-monitors
+      the monitors: number, name, size, position
   autostereo view --kind volume --preview side-by-side
       the built-in head on an ordinary screen
   autostereo view scan.laz --position -1920,0 --size 1920x1080

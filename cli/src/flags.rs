@@ -34,6 +34,9 @@ pub fn flag_of(param: Param) -> Option<&'static str> {
         Param::Views => "--views",
         Param::Groups => "--groups",
         Param::FieldOfView => "--fov",
+        Param::QuiltSize => "--quilt-size",
+        Param::FrameRate => "--fps",
+        Param::BitRate => "--bitrate",
         Param::Aspect
         | Param::Bands
         | Param::Camera
@@ -214,11 +217,11 @@ mod tests {
     /// merely contains a library term is left as it is.
     #[test]
     fn advice_is_said_in_flags() {
-        use autostereo::render::quilt::QuiltLayout;
-        let error = QuiltLayout::for_image("scan.png", [8, 8], None, 4).unwrap_err();
+        use autostereo::render::quilt_image::QuiltImage;
+        let error = QuiltImage::read("scan.png", [8, 8], None, 4).unwrap_err();
         let text = describe(&anyhow::Error::from(error));
         assert!(
-            text.contains("or give the grid (--quilt COLSxROWS)") && !text.contains("QuiltLayout"),
+            text.contains("or give the grid (--quilt COLSxROWS)") && !text.contains("QuiltImage"),
             "{text}"
         );
         let plain = anyhow::anyhow!("X needs Y; use Visibility::Exact");

@@ -54,7 +54,9 @@ impl GaussianFlags {
     /// The Gaussians in `file`, the generated scene without one.
     pub fn load(&self, file: Option<&Path>) -> Result<Gaussians> {
         Ok(match file {
-            Some(path) => Gaussians::load(path)?,
+            Some(path) => {
+                crate::progress::during(&crate::progress::loading(path), || Gaussians::load(path))?
+            }
             None => builtin_scene(),
         })
     }
@@ -78,9 +80,11 @@ pub fn builtin_scene() -> Gaussians {
 }
 
 pub fn run(args: GaussiansArgs) -> Result<()> {
-    let mut plan = args
-        .common
-        .plan(args.file.as_deref(), crate::warp_cmd::WarpArgs::default())?;
+    let mut plan = args.common.plan(
+        args.file.as_deref(),
+        autostereo::DataKind::Gaussians,
+        crate::warp_cmd::WarpArgs::default(),
+    )?;
     args.gaussians.check(plan.method)?;
     let start = Instant::now();
     let gaussians = args.gaussians.load(args.file.as_deref())?;

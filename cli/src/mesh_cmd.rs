@@ -80,7 +80,9 @@ impl MeshFlags {
     /// The mesh in `file` (the generated torus scene without one), reordered if asked.
     pub fn load(&self, file: Option<&Path>) -> Result<Mesh> {
         let mut mesh = match file {
-            Some(path) => Mesh::load(path)?,
+            Some(path) => {
+                crate::progress::during(&crate::progress::loading(path), || Mesh::load(path))?
+            }
             None => Mesh::torus_scene(),
         };
         if self.sort_triangles {
@@ -100,7 +102,9 @@ impl MeshFlags {
 }
 
 pub fn run(args: MeshArgs) -> Result<()> {
-    let mut plan = args.common.plan(args.file.as_deref(), args.warp)?;
+    let mut plan = args
+        .common
+        .plan(args.file.as_deref(), autostereo::DataKind::Mesh, args.warp)?;
     args.mesh.check(plan.method)?;
     let mesh = args.mesh.load(args.file.as_deref())?;
     let bounds = mesh.bounds().context("the mesh has no vertices")?;

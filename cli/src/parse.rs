@@ -81,6 +81,24 @@ pub fn check_output(path: &std::path::Path) -> Result<()> {
     if !png {
         bail!("{}: only PNG is written (name it .png)", path.display());
     }
+    check_directory(path)
+}
+
+/// `check_output` for an output that may also be a video (`.mp4`, `.gif`).
+pub fn check_output_or_video(path: &std::path::Path) -> Result<()> {
+    let png = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("png"));
+    if !png && !crate::output::video::is_video(path) {
+        bail!(
+            "{}: PNG, MP4 or GIF is written (name it .png, .mp4 or .gif)",
+            path.display()
+        );
+    }
+    check_directory(path)
+}
+
+fn check_directory(path: &std::path::Path) -> Result<()> {
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         if !dir.is_dir() {
             bail!("output directory {} does not exist", dir.display());

@@ -40,19 +40,31 @@ pub struct RunPlan {
     pub output: OutputArgs,
     /// `--turntable FRAMES` and its axis.
     pub turntable: Option<(u32, Axis)>,
+    /// How a video `--out` is encoded.
+    pub video: autostereo::video::VideoSettings,
     pub hole_mask: Option<PathBuf>,
     pub timing: FramesArgs,
     pub compare: bool,
     /// The files the run reads and writes.
     pub claims: Claims,
+    /// What the run renders: its file (none: the command's built-in scene) and kind, for the
+    /// hint that repeats it in `autostereo view`.
+    pub input: Option<PathBuf>,
+    pub kind: autostereo::DataKind,
     /// The run's memory budget, current while the plan lives (held, never read).
     _budget: autostereo::budget::Entered,
 }
 
 impl RenderArgs {
-    /// The run these flags and the command's `warp` flags ask for, reading `input`: every
+    /// The run these flags and the command's `warp` flags ask for, reading `input` (data of
+    /// `kind`): every
     /// check that needs no data, then the budget entered for the run.
-    pub fn plan(self, input: Option<&Path>, warp: WarpArgs) -> Result<RunPlan> {
+    pub fn plan(
+        self,
+        input: Option<&Path>,
+        kind: autostereo::DataKind,
+        warp: WarpArgs,
+    ) -> Result<RunPlan> {
         let claims = Claims::new(&input.into_iter().collect::<Vec<_>>());
         claims.check(&crate::claims::given(&[
             (self.output.out.as_deref(), "--out"),
@@ -95,10 +107,13 @@ impl RenderArgs {
             },
             output: self.output,
             turntable: self.turntable.turntable.map(|n| (n, self.turntable.axis)),
+            video: self.turntable.video.settings(30.0),
             hole_mask: warp.synthesis.hole_mask,
             timing: self.timing,
             compare: self.compare,
             claims,
+            input: input.map(Path::to_path_buf),
+            kind,
             _budget: self.memory.apply(),
         })
     }

@@ -87,7 +87,9 @@ impl PointFlags {
     /// The cloud in `file`, the generated torus scene without one.
     fn cloud(file: Option<&Path>) -> Result<PointCloud> {
         Ok(match file {
-            Some(path) => PointCloud::load(path)?,
+            Some(path) => {
+                crate::progress::during(&crate::progress::loading(path), || PointCloud::load(path))?
+            }
             None => PointCloud::torus_scene(),
         })
     }
@@ -117,7 +119,11 @@ fn parse_groups(s: &str) -> Result<GroupCount, String> {
 }
 
 pub fn run(args: PointsArgs) -> Result<()> {
-    let mut plan = args.common.plan(args.file.as_deref(), args.warp)?;
+    let mut plan = args.common.plan(
+        args.file.as_deref(),
+        autostereo::DataKind::Points,
+        args.warp,
+    )?;
     args.points.check(plan.method)?;
     let start = Instant::now();
     let cloud = PointFlags::cloud(args.file.as_deref())?;

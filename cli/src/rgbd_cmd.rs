@@ -78,6 +78,18 @@ pub fn run(args: RgbdArgs) -> Result<()> {
     // The hole mask is an output too: with it alone nothing else need be written.
     args.output
         .check(args.timing.frames.is_some() || args.warp.hole_mask.is_some())?;
+    if let Some(out) = args
+        .output
+        .out
+        .as_deref()
+        .filter(|o| crate::output::video::is_video(o))
+    {
+        anyhow::bail!(
+            "--out {}: rgbd writes one image (name it .png); videos are render commands' \
+             --turntable frames",
+            out.display()
+        );
+    }
     args.warp.check()?;
     let inputs: Vec<&std::path::Path> = [Some(args.color.as_path()), args.depth.as_deref()]
         .into_iter()
@@ -123,6 +135,7 @@ pub fn run(args: RgbdArgs) -> Result<()> {
     let mut saved = Saved {
         written: Vec::new(),
         turntable: None,
+        quilt: None,
     };
     if let Some(out) = &args.output.out {
         saved.written = crate::output::write(
@@ -136,6 +149,13 @@ pub fn run(args: RgbdArgs) -> Result<()> {
             out,
         )?;
         say_written(args.output.json, &saved.written);
+        if args.output.format == crate::output::flags::OutputArg::Quilt {
+            let quilt = crate::output::frame_quilt(&frame, &args.output)?;
+            if !args.output.json {
+                eprintln!("{}", crate::run::quilt_line(&quilt));
+            }
+            saved.quilt = Some(quilt);
+        }
     }
     let mut hole_share = None;
     if let Some(path) = &args.warp.hole_mask {

@@ -130,26 +130,50 @@ pub fn run_fields(
 }
 
 /// Tell the user how to look at the spatial image `out` without the panel: it only looks
-/// right through the display's optics (stderr, so that `--json` output stays one object).
+/// right through the display's optics (stderr, so that `--json` output stays one object). A
+/// one-view display's image is that view, nothing to pick views from.
 pub fn how_to_look(out: &Path, plan: &crate::plan::RunPlan, frame: &Frame) {
     if plan.output.json {
         return;
     }
-    let [l, r] = autostereo::render::default_eyes(frame.camera.views);
-    let display = plan.display_flags(frame.camera.views);
+    let views = frame.camera.views;
+    let display = plan.display_flags(views);
+    if let autostereo::display::DisplayKind::OneView { .. } = frame.display.kind {
+        eprintln!(
+            "{} is one view ({display}): an ordinary image, no display needed.",
+            out.display()
+        );
+        return;
+    }
+    let [l, r] = autostereo::render::default_eyes(views);
     let stem = out
         .file_stem()
         .map_or("out".into(), |s| s.to_string_lossy());
+    let scene = match &plan.input {
+        Some(file) => shell_word(&file.display().to_string()),
+        None => format!("--kind {}", plan.kind.name()),
+    };
     eprintln!(
         "{} is interleaved for {display} (it looks right only through that display). Without \
          one: render the same command with `--output anaglyph --out {stem}_anaglyph.png` (red-cyan \
          glasses; views {l} and {r}, --eyes L,R chooses), or pick them from this image with \
          `autostereo views {} {display} --eyes {l},{r} --out {stem}_anaglyph.png` (streaky: \
          each view has only its own subpixels), or look live in a window: `autostereo view \
-         {display} --preview side-by-side`.",
+         {scene} {display} --preview side-by-side`.",
         out.display(),
         out.display(),
     );
+}
+
+/// `word` quoted for a POSIX shell where it needs it.
+fn shell_word(word: &str) -> String {
+    let plain = word
+        .chars()
+        .all(|c| c.is_ascii_alphanumeric() || "/._-+,:=@%".contains(c));
+    match plain && !word.is_empty() {
+        true => word.to_string(),
+        false => format!("'{}'", word.replace('\'', "'\\''")),
+    }
 }
 
 /// Add the fields of `more` to the object `fields`.
@@ -225,7 +249,13 @@ pub fn render_and_save<S: ?Sized>(
         plan.turntable.map(|(frames, _)| frames),
         plan.hole_mask.as_deref(),
     )?)?;
-    let run = timed(ctx, renderer, scene, frame, &plan.timing)?;
+    let rendering = format!(
+        "rendering {}x{}, {} views",
+        frame.size[0], frame.size[1], frame.camera.views
+    );
+    let run = crate::progress::during(&rendering, || {
+        timed(ctx, renderer, scene, frame, &plan.timing)
+    })?;
     let mut saved = save_all(ctx, renderer, scene, frame, bounds, plan, &run.image)?;
     let diff = match plan.compare {
         true => Some(compare_with(
@@ -250,6 +280,8 @@ pub fn render_and_save<S: ?Sized>(
 pub struct Saved {
     pub written: Vec<PathBuf>,
     pub turntable: Option<crate::turntable::Summary>,
+    /// The quilt written (`--output quilt`): its size is the file's, not `--size`.
+    pub quilt: Option<autostereo::render::quilt_image::QuiltImage>,
 }
 
 impl Saved {
@@ -258,6 +290,9 @@ impl Saved {
         let mut fields = serde_json::json!({ "written": self.written });
         if let Some(t) = &self.turntable {
             merge(&mut fields, t.fields());
+        }
+        if let Some(q) = &self.quilt {
+            merge(&mut fields, quilt_fields(q));
         }
         fields
     }
@@ -277,22 +312,33 @@ pub fn save_all<S: ?Sized>(
 ) -> Result<Saved> {
     let turntable = crate::turntable::render(ctx, renderer, scene, frame, bounds, plan)?;
     let output = &plan.output;
+    let quilt = match (output.format, &output.out) {
+        (OutputArg::Quilt, Some(_)) => Some(crate::output::frame_quilt(frame, output)?),
+        _ => None,
+    };
+    if let (Some(q), false) = (&quilt, output.json) {
+        eprintln!("{}", quilt_line(q));
+    }
     let written = if let Some(summary) = &turntable {
         if !output.json {
             eprintln!("{}", summary.line());
         }
         summary.written.clone()
     } else if let Some(out) = &output.out {
-        let written = write(
-            ctx,
-            renderer,
-            scene,
-            frame,
-            output,
-            &mut plan.claims,
-            Some(spatial),
-            out,
-        )?;
+        let what = format!("writing --output {}", output.format.name());
+        let claims = &mut plan.claims;
+        let written = crate::progress::during(&what, || {
+            write(
+                ctx,
+                renderer,
+                scene,
+                frame,
+                output,
+                claims,
+                Some(spatial),
+                out,
+            )
+        })?;
         say_written(output.json, &written);
         if output.format == OutputArg::Spatial {
             crate::run::how_to_look(out, plan, frame);
@@ -301,7 +347,32 @@ pub fn save_all<S: ?Sized>(
     } else {
         Vec::new()
     };
-    Ok(Saved { written, turntable })
+    Ok(Saved {
+        written,
+        turntable,
+        quilt,
+    })
+}
+
+/// The `--json` fields of a quilt written: its size, grid, tile and the aspect its views are
+/// shown at.
+pub fn quilt_fields(q: &autostereo::render::quilt_image::QuiltImage) -> serde_json::Value {
+    serde_json::json!({
+        "quilt_size": q.size,
+        "quilt_grid": [q.layout.cols, q.layout.rows],
+        "quilt_tile": q.layout.tile,
+        "quilt_aspect": q.aspect,
+    })
+}
+
+/// The summary's line for a quilt written.
+pub fn quilt_line(q: &autostereo::render::quilt_image::QuiltImage) -> String {
+    let l = &q.layout;
+    format!(
+        "quilt {}x{}: {}x{} tiles of {}x{} (views shown at aspect {:.4}, the tiles stretched to \
+         it as Looking Glass software shows them)",
+        q.size[0], q.size[1], l.cols, l.rows, l.tile[0], l.tile[1], q.aspect
+    )
 }
 
 /// The report fields of a warp: R, the path, what depth the references carry, and the share

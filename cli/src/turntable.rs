@@ -1,8 +1,9 @@
 //! `--turntable FRAMES [--axis x|y|z]`: the scene turned once around an axis through the centre
 //! of its bounds, as FRAMES numbered files `{stem}_{k:04}.png` in `--output`'s format (spatial
-//! images, quilts, anaglyphs…), each rendered by the run's renderer. The camera, lights and
-//! display stay put, as on a real turntable; a progress bar runs on stderr while it renders
-//! and the frame times are summarised at the end.
+//! images, quilts, anaglyphs…), each rendered by the run's renderer, or as one video
+//! (`--out F.mp4` / `F.gif`) of those images. The camera, lights and display stay put, as on a
+//! real turntable; a progress bar runs on stderr while it renders and the frame times are
+//! summarised at the end.
 
 use std::path::PathBuf;
 use std::time::Instant;
@@ -12,6 +13,7 @@ use autostereo::camera::Bounds;
 use autostereo::frame::Frame;
 use autostereo::gpu::GpuContext;
 use autostereo::render::Renderer;
+use autostereo::video::VideoWriter;
 use glam::{Mat4, Vec3};
 
 use crate::output::flags::Axis;
@@ -53,13 +55,14 @@ impl Summary {
     /// One line for stderr.
     pub fn line(&self) -> String {
         let (min, median, max) = self.stats();
+        let files = match self.first == self.last {
+            true => self.first.display().to_string(),
+            false => format!("{} … {}", self.first.display(), self.last.display()),
+        };
         format!(
             "turntable: {} frames in {:.1} s, {median:.0} ms/frame median ({min:.0}…{max:.0}; \
-             render, read back and write) → {} … {}",
-            self.frames,
-            self.seconds,
-            self.first.display(),
-            self.last.display()
+             render, read back and write) → {files}",
+            self.frames, self.seconds,
         )
     }
 }
@@ -97,23 +100,47 @@ pub fn render<S: ?Sized>(
     let bar = crate::progress::bar(u64::from(frames), "turntable");
     let mut written = Vec::new();
     let mut frame_ms = Vec::new();
+    // A video: one file (a quilt's named for its grid), each frame's image appended.
+    let mut video = match crate::output::video::is_video(&out) {
+        true => {
+            let named = match quilt {
+                true => crate::output::frame_quilt(frame, &plan.output)?.file_name(&out),
+                false => out.clone(),
+            };
+            plan.claims.claim(&named, "--out")?;
+            let size = crate::output::names::image_size(frame, &plan.output)?;
+            written.push(named.clone());
+            Some(VideoWriter::create(&named, size, &plan.video)?)
+        }
+        false => None,
+    };
     for k in 0..frames {
         let angle = std::f32::consts::TAU * k as f32 / frames as f32;
         let this = turned(frame, axis, bounds.center(), angle);
         let t = Instant::now();
-        let paths = crate::output::write(
-            ctx,
-            renderer,
-            scene,
-            &this,
-            &plan.output,
-            &mut plan.claims,
-            None,
-            &crate::output::names::numbered(&out, k, quilt),
-        )?;
+        match &mut video {
+            Some(video) => {
+                let image =
+                    crate::output::image_of(ctx, renderer, scene, &this, &plan.output, None)?;
+                video.push(&image)?;
+            }
+            None => written.extend(crate::output::write(
+                ctx,
+                renderer,
+                scene,
+                &this,
+                &plan.output,
+                &mut plan.claims,
+                None,
+                &crate::output::names::numbered(&out, k, quilt),
+            )?),
+        }
         frame_ms.push(t.elapsed().as_secs_f64() * 1e3);
-        written.extend(paths);
         bar.inc(1);
+    }
+    if let Some(video) = video {
+        bar.set_message("encoding");
+        video.finish()?;
     }
     bar.finish_and_clear();
     Ok(Some(Summary {

@@ -176,7 +176,9 @@ impl VolumeDataArgs {
             volume: self.volume_load()?,
             ..LoadOptions::default()
         };
-        match autostereo::load(path, &options)? {
+        match crate::progress::during(&crate::progress::loading(path), || {
+            autostereo::load(path, &options)
+        })? {
             AnyData::Volume(data) => Ok(*data),
             _ => unreachable!("a volume was asked for"),
         }
@@ -247,7 +249,11 @@ pub fn run(args: VolumeArgs) -> Result<()> {
             path.display()
         );
     }
-    let mut plan = args.common.plan(args.file.as_deref(), args.warp)?;
+    let mut plan = args.common.plan(
+        args.file.as_deref(),
+        autostereo::DataKind::Volume,
+        args.warp,
+    )?;
     args.render.check(plan.method)?;
     let VolumeData {
         volume,

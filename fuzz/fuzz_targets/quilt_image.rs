@@ -11,7 +11,8 @@ libfuzzer_sys::fuzz_target!(|data: &[u8]| {
     let grid = (word(8) & 1 == 1).then(|| [word(8) >> 16, word(12) >> 16]);
     let views = word(12) & 0xffff;
     let name = String::from_utf8_lossy(&data[16..]);
-    if let Ok(q) = autostereo::render::quilt::QuiltLayout::for_image(&name, size, grid, views) {
-        let _ = (q.size(), q.tile_origin(views.saturating_sub(1)), q.suffix());
+    if let Ok(q) = autostereo::render::quilt_image::QuiltImage::read(&name, size, grid, views) {
+        let l = q.layout;
+        let _ = (l.size(), l.tile_origin(views.saturating_sub(1)), q.suffix());
     }
 });

@@ -145,42 +145,72 @@ impl Display {
         }
     }
 
-    /// The quilt of `views` views for this display at `size`: a Looking Glass's own
-    /// ([`Display::default_quilt`]), else the grid for the view count with tiles of `size`.
-    pub fn quilt(&self, views: u32, size: [u32; 2]) -> crate::render::quilt::QuiltLayout {
-        self.default_quilt(views)
-            .unwrap_or_else(|| crate::render::quilt::QuiltLayout::for_views(views, size))
-    }
-
-    /// The quilt Looking Glass software uses for this display with `views` views: the
-    /// family's grid (when it holds them) and, within the family's quilt size, tiles of the
-    /// panel's aspect; an unknown family gets the grid for the view count within 4096².
-    /// `None` for displays that are not Looking Glasses.
-    pub fn default_quilt(&self, views: u32) -> Option<crate::render::quilt::QuiltLayout> {
+    /// The quilt image of `views` views rendered at `view_size` for this display, as
+    /// `--output quilt` writes it and the viewer previews it; `choice` overrides the grid, the
+    /// image size or the tile. A Looking Glass gets its family's quilt (size and grid from
+    /// [`LookingGlassFamily`]; 4096² and the grid for the view count for an unknown family),
+    /// tiles of floor(W / cols) × floor(H / rows) stretched to the panel's aspect, as Looking
+    /// Glass software makes it; any other display the grid for the view count with tiles of
+    /// `view_size`, shown at their own aspect.
+    pub fn quilt(
+        &self,
+        views: u32,
+        view_size: [u32; 2],
+        choice: &crate::render::quilt_image::QuiltChoice,
+    ) -> Result<crate::render::quilt_image::QuiltImage> {
         use crate::render::quilt::QuiltLayout;
-        let DisplayKind::LookingGlass { calibration, .. } = &self.kind else {
-            return None;
+        use crate::render::quilt_image::QuiltImage;
+        let panel = self.panel_size();
+        let family = match &self.kind {
+            DisplayKind::LookingGlass { calibration, .. } => calibration.family(),
+            _ => None,
         };
-        let [pw, ph] = calibration.panel_size().map(|v| v as f64);
-        let family = calibration.family();
-        let quilt = family.map_or([4096, 4096], |f| f.quilt_size);
+        let shown = panel.unwrap_or(view_size);
+        let aspect = shown[0] as f32 / shown[1].max(1) as f32;
         // The family's grid where it holds the views without a whole empty row (a quilt of 4
         // views in 7×7 tiles would play 45 empty ones).
-        let grid = family
-            .map(|f| f.grid)
-            .filter(|g| {
-                let tiles = g[0] as u64 * g[1] as u64;
-                tiles >= views as u64 && tiles - (views as u64) < g[0] as u64
-            })
-            .unwrap_or_else(|| {
-                let q = QuiltLayout::for_views(views, [pw as u32, ph as u32]);
+        let fits = |g: &[u32; 2]| {
+            let tiles = g[0] as u64 * g[1] as u64;
+            tiles >= views as u64 && tiles - (views as u64) < g[0] as u64
+        };
+        let grid = match choice.grid {
+            Some(grid) => {
+                let tiles = grid[0] as u64 * grid[1] as u64;
+                if tiles >= views as u64 && !fits(&grid) {
+                    let fit = QuiltLayout::for_views(views, choice.tile.unwrap_or(shown));
+                    return Err(Error::invalid(
+                        Param::Quilt,
+                        format!(
+                            "{}x{}: {} of its tiles would be empty for {views} views (a whole \
+                             row or more); give a grid with fewer, e.g. {}x{}",
+                            grid[0],
+                            grid[1],
+                            tiles - views as u64,
+                            fit.cols,
+                            fit.rows
+                        ),
+                    ));
+                }
+                grid
+            }
+            None => family.map(|f| f.grid).filter(fits).unwrap_or_else(|| {
+                let q = QuiltLayout::for_views(views, choice.tile.unwrap_or(shown));
                 [q.cols, q.rows]
-            });
-        // The widest tiles of the panel's aspect whose grid fits the quilt size.
-        let width =
-            (quilt[0] as f64 / grid[0] as f64).min(quilt[1] as f64 / grid[1] as f64 * pw / ph);
-        let tile = [width.floor().max(1.0), (width * ph / pw).floor().max(1.0)];
-        QuiltLayout::with_grid(grid[0], grid[1], [tile[0] as u32, tile[1] as u32], views).ok()
+            }),
+        };
+        let size = match (choice.size, choice.tile, panel) {
+            (Some(size), _, _) => size,
+            (None, Some(tile), _) => [
+                grid[0].saturating_mul(tile[0]),
+                grid[1].saturating_mul(tile[1]),
+            ],
+            (None, None, Some(_)) => family.map_or([4096, 4096], |f| f.quilt_size),
+            (None, None, None) => [
+                grid[0].saturating_mul(view_size[0]),
+                grid[1].saturating_mul(view_size[1]),
+            ],
+        };
+        QuiltImage::in_size(grid, size, views, aspect)
     }
 
     /// Set the view count where the display leaves it open (Looking Glass); elsewhere `n` must

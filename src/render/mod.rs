@@ -33,6 +33,7 @@ pub(crate) mod npass;
 pub(crate) mod output;
 pub(crate) mod pipeline_cache;
 pub mod quilt;
+pub mod quilt_image;
 mod renderer;
 pub(crate) mod specialize;
 pub(crate) mod stereo;

@@ -1,10 +1,9 @@
 //! The Looking Glass quilt layout: N view images tiled into one atlas, view 0 bottom-left,
 //! left → right then bottom → top. The tiled method renders into this layout, so its atlas is
-//! a quilt as it stands; `wgsl/shared/quilt.wgsl` addresses tiles the same way.
+//! a quilt as it stands; `wgsl/shared/quilt.wgsl` addresses tiles the same way. A quilt as an
+//! image file (its size, the aspect its views are shown at, its name) is
+//! [`crate::render::quilt_image::QuiltImage`].
 
-use std::path::{Path, PathBuf};
-
-use crate::advice::{Advice, Setting};
 use crate::error::{Error, Result};
 use crate::param::Param;
 
@@ -76,59 +75,6 @@ impl QuiltLayout {
         })
     }
 
-    /// The layout of a quilt image of `size` pixels named `name`: the grid from `grid`, else
-    /// from the name's `_qs{cols}x{rows}a{aspect}`; tiles are the size over the grid (which
-    /// must divide it); the quilt holds `views` views (≤ cols × rows: Looking Glass quilts
-    /// often leave the last tiles empty). A name's aspect that disagrees with the tiles' by
-    /// more than 1 % is refused: the grid would then be a guess.
-    pub fn for_image(
-        name: &str,
-        size: [u32; 2],
-        grid: Option<[u32; 2]>,
-        views: u32,
-    ) -> Result<Self> {
-        let named = parse_quilt_name(name);
-        let [cols, rows] = match (grid, named) {
-            (Some(grid), _) => grid,
-            (None, Some((cols, rows, _))) => [cols, rows],
-            (None, None) => {
-                return Err(Error::InvalidParameter {
-                    param: Param::Quilt,
-                    reason: format!(
-                        "{name}: no grid; name it …_qs{{cols}}x{{rows}}a{{aspect}}.png (Looking \
-                         Glass's convention) or give the grid"
-                    ),
-                    advice: Some(Advice::text(" (").then(Setting::QuiltGrid).then_text(")")),
-                })
-            }
-        };
-        if cols == 0 || rows == 0 || !size[0].is_multiple_of(cols) || !size[1].is_multiple_of(rows)
-        {
-            return Err(Error::invalid(
-                Param::Quilt,
-                format!(
-                    "{name} is {}x{}, which a {cols}x{rows} grid does not divide into whole tiles",
-                    size[0], size[1]
-                ),
-            ));
-        }
-        let tile = [size[0] / cols, size[1] / rows];
-        if let (None, Some((_, _, aspect))) = (grid, named) {
-            let tiles = tile[0] as f32 / tile[1] as f32;
-            if (tiles / aspect - 1.0).abs() > 0.01 {
-                return Err(Error::invalid(
-                    Param::Quilt,
-                    format!(
-                        "{name}: the name says views of aspect {aspect}, its {cols}x{rows} tiles \
-                         of {}x{} have {tiles:.4}",
-                        tile[0], tile[1]
-                    ),
-                ));
-            }
-        }
-        Self::with_grid(cols, rows, tile, views)
-    }
-
     /// Size of the whole atlas in texels.
     pub fn size(&self) -> [u32; 2] {
         [
@@ -184,74 +130,6 @@ impl QuiltLayout {
             bytemuck::bytes_of(&uniform),
         )
     }
-
-    /// The Looking Glass name suffix, `_qs{cols}x{rows}a{aspect}`.
-    pub fn suffix(&self) -> String {
-        let aspect = format!("{:.4}", self.aspect());
-        let aspect = aspect.trim_end_matches('0').trim_end_matches('.');
-        format!("_qs{}x{}a{aspect}", self.cols, self.rows)
-    }
-
-    /// Whether a name's grid and view aspect (`parse_quilt_name`) say this layout: the same
-    /// grid, the aspect within 1 % (as [`QuiltLayout::for_image`] reads a name).
-    pub fn says(&self, (cols, rows, aspect): (u32, u32, f32)) -> bool {
-        (cols, rows) == (self.cols, self.rows) && (self.aspect() / aspect - 1.0).abs() <= 0.01
-    }
-
-    /// `path` named as Looking Glass software expects: this layout's suffix before the
-    /// extension, in place of a suffix the name already ends in (`x_qs3x3a1.png` for a 5×9
-    /// quilt is `x_qs5x9a0.75.png`, not `x_qs3x3a1_qs5x9a0.75.png`); a name whose suffix
-    /// already says this layout ([`QuiltLayout::says`]) is kept as it is.
-    pub fn file_name(&self, path: &Path) -> PathBuf {
-        let stem = path
-            .file_stem()
-            .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
-        let suffix = self.suffix();
-        let named = parse_quilt_name(&stem).filter(|_| strip_quilt_suffix(&stem) != stem);
-        if stem.ends_with(&suffix) || named.is_some_and(|said| self.says(said)) {
-            return path.to_path_buf();
-        }
-        let ext = path
-            .extension()
-            .map_or_else(|| "png".to_string(), |e| e.to_string_lossy().into_owned());
-        let base = strip_quilt_suffix(&stem);
-        path.with_file_name(format!("{base}{suffix}.{ext}"))
-    }
-}
-
-/// `stem` without the Looking Glass suffix it ends in (`_qs{cols}x{rows}a{aspect}`), if any.
-pub fn strip_quilt_suffix(stem: &str) -> &str {
-    let Some(at) = stem.rfind("_qs") else {
-        return stem;
-    };
-    let whole = stem[at + 3..]
-        .chars()
-        .all(|c| c.is_ascii_digit() || matches!(c, 'x' | 'a' | '.'));
-    if whole && parse_quilt_name(&stem[at..]).is_some() {
-        &stem[..at]
-    } else {
-        stem
-    }
-}
-
-/// Grid and view aspect read from a Looking Glass quilt name (`…_qs5x9a0.75.png`), if it has
-/// one.
-pub fn parse_quilt_name(name: &str) -> Option<(u32, u32, f32)> {
-    let at = name.rfind("_qs")?;
-    let rest = &name[at + 3..];
-    let (cols, rest) = rest.split_once('x')?;
-    let (rows, rest) = rest.split_once('a')?;
-    let aspect: String = rest
-        .chars()
-        .take_while(|c| c.is_ascii_digit() || *c == '.')
-        .collect();
-    let aspect = aspect.trim_end_matches('.');
-    let (cols, rows, aspect) = (
-        cols.parse().ok()?,
-        rows.parse().ok()?,
-        aspect.parse::<f32>().ok()?,
-    );
-    (cols > 0 && rows > 0 && aspect.is_finite() && aspect > 0.0).then_some((cols, rows, aspect))
 }
 
 #[cfg(test)]
@@ -282,30 +160,5 @@ mod tests {
         assert_eq!(q.tile_origin(3), [0, 0]);
         assert_eq!(q.tile_origin(4), [10, 0]);
         assert!(QuiltLayout::with_grid(2, 2, [1, 1], 5).is_err());
-    }
-
-    #[test]
-    fn names_follow_looking_glass_and_parse_back() {
-        let q = QuiltLayout::with_grid(5, 9, [420, 560], 45).unwrap();
-        assert_eq!(q.suffix(), "_qs5x9a0.75");
-        let named = q.file_name(Path::new("out/dragon.png"));
-        assert_eq!(named, Path::new("out/dragon_qs5x9a0.75.png"));
-        assert_eq!(q.file_name(&named), named);
-        let name = named.file_name().unwrap().to_str().unwrap();
-        assert_eq!(parse_quilt_name(name), Some((5, 9, 0.75)));
-        let square = QuiltLayout::with_grid(3, 3, [64, 64], 8).unwrap();
-        assert_eq!(square.suffix(), "_qs3x3a1");
-        // A name's own suffix is replaced, not doubled; other `_qs` text is kept.
-        assert_eq!(
-            q.file_name(Path::new("out/dragon_qs3x3a1.png")),
-            Path::new("out/dragon_qs5x9a0.75.png")
-        );
-        assert_eq!(strip_quilt_suffix("a_qs3x3a1.7778"), "a");
-        assert_eq!(strip_quilt_suffix("a_qs3x3a1_final"), "a_qs3x3a1_final");
-        assert_eq!(strip_quilt_suffix("a_qsx"), "a_qsx");
-        assert_eq!(parse_quilt_name("x_qs3x3a1.png"), Some((3, 3, 1.0)));
-        assert_eq!(parse_quilt_name("plain.png"), None);
-        assert_eq!(parse_quilt_name("x_qs0x3a1.png"), None);
-        assert_eq!(parse_quilt_name("x_qs3x3a.png"), None);
     }
 }

@@ -7,13 +7,14 @@ use crate::display::Display;
 use crate::error::Result;
 use crate::frame::Frame;
 use crate::image_io::RgbImage;
-use crate::render::quilt::QuiltLayout;
+use crate::render::quilt_image::QuiltImage;
 use crate::render::{Renderer, StereoCompositor, StereoFormat};
 use crate::target::SpatialTarget;
 
-/// View `view` of `frame` alone at `size` pixels. `own_aspect`: the view is seen at the image's
-/// own aspect (a quilt's tile is the view image itself: rendered at its own size, unscaled);
-/// else at the frame's (the half-size stereo formats are squeezed).
+/// View `view` of `frame` alone at `size` pixels. `shown_at`: the aspect the view is shown at,
+/// whatever the image's own (a quilt's tile is stretched to the quilt's aspect; the view is
+/// rendered at the tile's size, unscaled); `None`: the frame's (the half-size stereo formats are
+/// squeezed).
 #[allow(clippy::too_many_arguments)]
 pub fn render_view<S: ?Sized>(
     device: &wgpu::Device,
@@ -23,7 +24,7 @@ pub fn render_view<S: ?Sized>(
     frame: &Frame,
     view: u32,
     size: [u32; 2],
-    own_aspect: bool,
+    shown_at: Option<f32>,
 ) -> Result<SpatialTarget> {
     let views = frame.camera.views;
     let mut eye = Frame {
@@ -31,8 +32,8 @@ pub fn render_view<S: ?Sized>(
         size,
         ..frame.clone()
     };
-    if own_aspect {
-        eye.camera.aspect = size[0] as f32 / size[1] as f32;
+    if let Some(aspect) = shown_at {
+        eye.camera.aspect = aspect;
         eye.view_scale = [1.0; 2];
     }
     let target = SpatialTarget::new(device, size)?;
@@ -40,31 +41,33 @@ pub fn render_view<S: ?Sized>(
     Ok(target)
 }
 
-/// Every view of `frame` in `layout`'s tiles (view 0 bottom-left; empty tiles black), each
-/// rendered at the tile's size.
+/// Every view of `frame` in `quilt`'s tiles (view 0 bottom-left; empty tiles and the remainder
+/// black), each rendered at the tile's size and shown at the quilt's aspect.
 pub fn render_quilt<S: ?Sized>(
     device: &wgpu::Device,
     queue: &wgpu::Queue,
     renderer: &mut dyn Renderer<S>,
     scene: &S,
     frame: &Frame,
-    layout: &QuiltLayout,
+    quilt: &QuiltImage,
 ) -> Result<RgbImage> {
+    let layout = &quilt.layout;
     let [w, h] = layout.size();
-    RgbImage::check_size(w, h)?;
-    let mut quilt = RgbImage::new(w, h);
+    RgbImage::check_size(quilt.size[0], quilt.size[1])?;
+    let mut tiles = RgbImage::new(w, h);
+    let shown = Some(quilt.aspect);
     for v in 0..frame.camera.views.min(layout.views) {
-        let tile = render_view(device, queue, renderer, scene, frame, v, layout.tile, true)?
+        let tile = render_view(device, queue, renderer, scene, frame, v, layout.tile, shown)?
             .read(device, queue)?;
         let [tx, ty] = layout.tile_origin(v);
         let row = (tile.width * 3) as usize;
         for y in 0..tile.height {
             let src = (y * tile.width * 3) as usize;
             let dst = (((ty + y) * w + tx) * 3) as usize;
-            quilt.data[dst..dst + row].copy_from_slice(&tile.data[src..src + row]);
+            tiles.data[dst..dst + row].copy_from_slice(&tile.data[src..src + row]);
         }
     }
-    Ok(quilt)
+    quilt.image(&tiles)
 }
 
 /// Views `eyes` = [left, right] of `frame`, each rendered at `eye` pixels, composed as
@@ -81,8 +84,8 @@ pub fn render_stereo<S: ?Sized>(
     eyes: [u32; 2],
 ) -> Result<RgbImage> {
     let [l, r] = eyes;
-    let left = render_view(device, queue, renderer, scene, frame, l, eye, false)?;
-    let right = render_view(device, queue, renderer, scene, frame, r, eye, false)?;
+    let left = render_view(device, queue, renderer, scene, frame, l, eye, None)?;
+    let right = render_view(device, queue, renderer, scene, frame, r, eye, None)?;
     let target = SpatialTarget::new(device, format.output_size(eye))?;
     let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
         label: Some("stereo output"),

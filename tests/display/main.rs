@@ -8,4 +8,5 @@ mod common;
 mod embedding;
 mod gl_backend;
 mod mask;
+mod quilts;
 mod refusals;

@@ -54,12 +54,12 @@ fn run(target: &str, data: &[u8]) {
             }
         }
         "quilt_name" => {
-            use autostereo::render::quilt::{parse_quilt_name, QuiltLayout};
-            if let Some((cols, rows, aspect)) = parse_quilt_name(&text) {
-                let views = cols.saturating_mul(rows).min(256);
-                let tile = [64, (64.0 / aspect).clamp(1.0, 1e6) as u32];
-                if let Ok(q) = QuiltLayout::with_grid(cols, rows, tile, views) {
-                    let _ = (q.size(), q.tile_origin(views.saturating_sub(1)), q.suffix());
+            use autostereo::render::quilt_image::{QuiltImage, QuiltName};
+            if let Some(n) = QuiltName::parse(&text) {
+                let views = n.cols.saturating_mul(n.rows).min(256);
+                let size = [n.cols.saturating_mul(64), n.rows.saturating_mul(64)];
+                if let Ok(q) = QuiltImage::in_size([n.cols, n.rows], size, views, n.aspect) {
+                    let _ = (q.layout.tile_origin(views.saturating_sub(1)), q.suffix());
                     let _ = q.file_name(Path::new(text.as_ref()));
                 }
             }
@@ -81,10 +81,11 @@ fn run(target: &str, data: &[u8]) {
                 let grid = (word(8) & 1 == 1).then(|| [word(8) >> 16, word(12) >> 16]);
                 let views = word(12) & 0xffff;
                 let name = String::from_utf8_lossy(&data[16..]);
-                let layout =
-                    autostereo::render::quilt::QuiltLayout::for_image(&name, size, grid, views);
-                if let Ok(q) = layout {
-                    let _ = (q.size(), q.tile_origin(views.saturating_sub(1)), q.suffix());
+                let read =
+                    autostereo::render::quilt_image::QuiltImage::read(&name, size, grid, views);
+                if let Ok(q) = read {
+                    let l = q.layout;
+                    let _ = (l.size(), l.tile_origin(views.saturating_sub(1)), q.suffix());
                 }
             }
         }

@@ -12,7 +12,8 @@ use autostereo::mesh::{MeshMrt, MeshNPass, MeshTiled, TileClip};
 use autostereo::points::{GroupCount, PointCloud, SplatScene};
 use autostereo::render::atlas::{Atlas, QuiltInterleaver};
 use autostereo::render::batches::batches;
-use autostereo::render::quilt::{parse_quilt_name, QuiltLayout};
+use autostereo::render::quilt::QuiltLayout;
+use autostereo::render::quilt_image::{QuiltImage, QuiltName};
 use autostereo::render::{Method, Renderer};
 use autostereo::target::SpatialTarget;
 use autostereo::{AnyRenderer, AnyScene, RendererOptions};
@@ -200,8 +201,7 @@ fn quilt_out_interleaved_again_is_the_tiled_image() {
             let spatial = common::render(&mut tiled, scene, &frame);
             let ctx = common::gpu();
             let atlas = tiled.atlas().unwrap();
-            let path = atlas
-                .layout
+            let path = QuiltImage::of_tiles(atlas.layout)
                 .file_name(&common::out_dir().join(format!("quilt-{}.png", scene.primitive())));
             atlas
                 .read(&ctx.device, &ctx.queue)
@@ -209,7 +209,8 @@ fn quilt_out_interleaved_again_is_the_tiled_image() {
                 .save_png(&path)
                 .unwrap();
             let name = path.file_name().unwrap().to_str().unwrap();
-            let (cols, rows, aspect) = parse_quilt_name(name).unwrap();
+            let named = QuiltName::parse(name).unwrap();
+            let (cols, rows, aspect) = (named.cols, named.rows, named.aspect);
             let quilt = RgbImage::load_png(&path).unwrap();
             let tile = [quilt.width / cols, quilt.height / rows];
             assert!((tile[0] as f32 / tile[1] as f32 - aspect).abs() < 1e-3);

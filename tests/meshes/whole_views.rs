@@ -10,6 +10,7 @@ use autostereo::frame::Frame;
 use autostereo::image_io::RgbImage;
 use autostereo::mesh::{Mesh, MeshBuffers, MeshNPass};
 use autostereo::render::quilt::QuiltLayout;
+use autostereo::render::quilt_image::QuiltImage;
 use autostereo::render::{render_quilt, render_stereo, Method, StereoFormat};
 use autostereo::{AnyRenderer, AnyScene, RendererOptions};
 
@@ -73,8 +74,11 @@ fn setup(views: u32) -> Setup {
     }
 }
 
+/// Looking Glass's quilt: tiles of any pixel aspect (20×30 here) hold views shown at the
+/// quilt's aspect (the frame's 4/3: stretched), laid from the bottom-left of an image with a
+/// remainder (61×61: the top row and right column unused, black, like the empty sixth tile).
 #[test]
-fn a_quilt_holds_every_view_at_its_tile_aspect_and_black_empty_tiles() {
+fn a_quilt_holds_every_view_at_the_quilts_aspect_and_black_empty_tiles() {
     let Setup {
         frame,
         buffers,
@@ -82,20 +86,30 @@ fn a_quilt_holds_every_view_at_its_tile_aspect_and_black_empty_tiles() {
         mut npass,
     } = setup(5);
     let ctx = common::gpu();
-    // 3×2 tiles of 20×30 (aspect 2/3, not the frame's 4/3): the sixth tile is empty.
     let layout = QuiltLayout::with_grid(3, 2, [20, 30], 5).unwrap();
-    let quilt = render_quilt(&ctx.device, &ctx.queue, &mut npass, &scene, &frame, &layout).unwrap();
+    let image = QuiltImage::new(layout, [61, 61], 4.0 / 3.0).unwrap();
+    let quilt = render_quilt(&ctx.device, &ctx.queue, &mut npass, &scene, &frame, &image).unwrap();
     drop(ctx);
-    assert_eq!([quilt.width, quilt.height], [60, 60]);
+    assert_eq!([quilt.width, quilt.height], [61, 61]);
+    let origin = |v: u32| {
+        let [x, y] = layout.tile_origin(v);
+        [x, y + 1]
+    };
     for v in 0..5 {
-        let tile = crop(&quilt, layout.tile_origin(v), layout.tile);
-        let oracle = npass_view(&buffers, &frame, v, layout.tile, 20.0 / 30.0);
+        let tile = crop(&quilt, origin(v), layout.tile);
+        let oracle = npass_view(&buffers, &frame, v, layout.tile, 4.0 / 3.0);
         common::assert_matches(&format!("quilt-tile-{v}"), &tile, &oracle);
     }
-    let empty = crop(&quilt, layout.tile_origin(5), layout.tile);
+    let empty = crop(&quilt, origin(5), layout.tile);
     assert!(
         empty.data.iter().all(|&b| b == 0),
         "the empty tile is not black"
+    );
+    let top = crop(&quilt, [0, 0], [61, 1]);
+    let right = crop(&quilt, [60, 0], [1, 61]);
+    assert!(
+        top.data.iter().chain(&right.data).all(|&b| b == 0),
+        "the remainder is not black"
     );
 }
 

@@ -193,12 +193,10 @@ impl State {
         if let Some([x, y]) = options.position {
             attributes = attributes.with_position(PhysicalPosition::new(x, y));
         }
-        if let Some(index) = options.fullscreen {
+        if let Some(choice) = options.fullscreen {
             let monitors: Vec<_> = event_loop.available_monitors().collect();
-            let monitor = monitors.get(index).cloned().ok_or(Error::NoMonitor {
-                index,
-                found: monitors.len(),
-            })?;
+            let (monitor, said) = crate::monitors::pick(&monitors, choice, &options.display)?;
+            eprintln!("{said}");
             // Also the monitor's position and size: without a window manager (Xvfb, a kiosk
             // panel) nothing acts on the fullscreen request.
             attributes = attributes
@@ -315,10 +313,13 @@ impl State {
         Ok(state)
     }
 
-    /// The mask's origin from where the client area sits on the screen.
+    /// The mask's origin from where the client area sits on its monitor (the panel: its pixels
+    /// are the mask's, wherever the monitor is on the desktop).
     fn update_position(&mut self) {
         if let Ok(p) = self.window.inner_position() {
-            self.position = [p.x, p.y];
+            let monitor = self.window.current_monitor().map(|m| m.position());
+            let [mx, my] = monitor.map_or([0, 0], |m| [m.x, m.y]);
+            self.position = [p.x - mx, p.y - my];
         }
     }
 
@@ -440,7 +441,7 @@ impl State {
             frames[0].0.camera.views,
             match self.preview {
                 Preview::Spatial => String::new(),
-                other => format!(", {other:?} preview"),
+                other => format!(", {} preview", other.name()),
             },
             self.last_ms
         ));

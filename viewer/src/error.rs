@@ -31,6 +31,15 @@ pub enum Error {
     /// `Options::fullscreen` names a monitor that is not there.
     #[error("monitor {index}: {found} monitor(s) found, numbered from 0")]
     NoMonitor { index: usize, found: usize },
+    /// `Monitor::Panel`: no monitor has the calibration's panel size.
+    #[error(
+        "no monitor is {}x{}, the calibration's panel: {}",
+        .panel[0], .panel[1], monitor_list(.monitors)
+    )]
+    NoPanelMonitor {
+        panel: [u32; 2],
+        monitors: Vec<crate::monitors::MonitorInfo>,
+    },
     /// A window larger than the adapter's largest surface (`fullscreen`: the monitor's size).
     #[error(
         "{} {}x{}: larger than this adapter's largest surface ({limit} per side on {adapter})",
@@ -67,4 +76,16 @@ pub(crate) fn names(methods: &[Method]) -> String {
         .map(|m| m.name())
         .collect::<Vec<_>>()
         .join(", ")
+}
+
+/// The monitors found, one clause each; "none found" where there are none.
+fn monitor_list(monitors: &[crate::monitors::MonitorInfo]) -> String {
+    match monitors.is_empty() {
+        true => "no monitors found".into(),
+        false => monitors
+            .iter()
+            .map(|m| m.line())
+            .collect::<Vec<_>>()
+            .join("; "),
+    }
 }

@@ -18,11 +18,13 @@
 
 mod app;
 mod error;
+mod monitors;
 mod options;
 mod orbit;
 mod scene;
 
 pub use error::{Error, Result};
+pub use monitors::{monitors, Monitor, MonitorInfo};
 pub use options::{Options, Preview, Switch};
 pub use scene::Scene;
 

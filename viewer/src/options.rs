@@ -45,7 +45,19 @@ impl Preview {
         }
     }
 
-    /// The next preview (key p).
+    /// The preview's name, as `--preview` spells it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Preview::Spatial => "spatial",
+            Preview::View => "view",
+            Preview::Anaglyph => "anaglyph",
+            Preview::SideBySide => "side-by-side",
+            Preview::Quilt => "quilt",
+        }
+    }
+
+    /// The next preview key `p` shows: spatial → view → anaglyph → side-by-side → quilt →
+    /// spatial.
     pub(crate) fn next(self) -> Self {
         match self {
             Preview::Spatial => Preview::View,
@@ -61,9 +73,8 @@ impl Preview {
 /// desktop, the single pass, the spatial preview, the default camera, running until closed.
 #[derive(Clone, Debug)]
 pub struct Options {
-    /// The display; its `origin` is the panel's offset from the window's position on the
-    /// desktop (minus the panel's position: `[-1920, 0]` for a panel right of a 1920-wide
-    /// monitor).
+    /// The display; the mask's origin is the window's position on the monitor it is on (the
+    /// panel) plus the display's own `origin`.
     pub display: Display,
     /// What the title and the report call the display (the spec it was made from).
     pub display_name: String,
@@ -72,8 +83,8 @@ pub struct Options {
     pub size: [u32; 2],
     /// Window position on the desktop (the mask's origin follows it).
     pub position: Option<[i32; 2]>,
-    /// Full screen on this monitor (0 = the first).
-    pub fullscreen: Option<usize>,
+    /// Full screen on this monitor (by number, or the display's panel).
+    pub fullscreen: Option<crate::Monitor>,
     /// The starting method (key m cycles through the scene's methods).
     pub method: Method,
     pub preview: Preview,

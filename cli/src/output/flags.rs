@@ -92,6 +92,11 @@ pub struct OutputArgs {
     /// views, the last tiles empty).
     #[arg(long = "quilt", value_name = "COLSxROWS", value_parser = crate::parse::parse_size)]
     pub quilt_grid: Option<[u32; 2]>,
+    /// With --output quilt: the quilt image's size WxH (default: a Looking Glass family's own,
+    /// e.g. 5999x5999 for the 16" Spatial Display; else the grid of --size views). Tiles are
+    /// floor(W/cols) x floor(H/rows), the remainder left black, as Looking Glass does.
+    #[arg(long, value_name = "WxH", value_parser = crate::parse::parse_size)]
+    pub quilt_size: Option<[u32; 2]>,
     /// With the stereo formats of --output (anaglyph…, side-by-side…, top-bottom…, rows,
     /// columns, checkerboard): the left and right views L,R (default: two views a quarter of
     /// the views apart, about the middle).
@@ -129,7 +134,16 @@ impl OutputArgs {
             );
         }
         match &self.out {
-            Some(out) => crate::parse::check_output(out)?,
+            Some(out) => {
+                crate::parse::check_output_or_video(out)?;
+                if super::video::is_video(out) && self.format == OutputArg::Views {
+                    bail!(
+                        "--out {}: --output views writes a file per view; a video holds one \
+                         image a frame (--output spatial, quilt or a stereo format)",
+                        out.display()
+                    );
+                }
+            }
             None if self.format != OutputArg::Spatial => bail!(
                 "--output {} writes to --out, which is missing",
                 self.format.name()
@@ -143,6 +157,12 @@ impl OutputArgs {
         if self.quilt_grid.is_some() && self.format != OutputArg::Quilt {
             bail!(
                 "--quilt sets the grid of --output quilt, not of --output {}",
+                self.format.name()
+            );
+        }
+        if self.quilt_size.is_some() && self.format != OutputArg::Quilt {
+            bail!(
+                "--quilt-size sets the size of --output quilt, not of --output {}",
                 self.format.name()
             );
         }
@@ -175,12 +195,15 @@ pub enum Axis {
 #[command(next_help_heading = "Output")]
 pub struct TurntableArgs {
     /// Render one full turn of the scene as FRAMES numbered files `{--out stem}_{k:04}.png`
-    /// (quilts: `{stem}_{k:04}_qs…png`) in --output's format, frame k turned by k/FRAMES·360°.
+    /// (quilts: `{stem}_{k:04}_qs…png`) in --output's format, frame k turned by k/FRAMES·360°;
+    /// with --out F.mp4 or F.gif, one video of the frames.
     #[arg(long, value_name = "FRAMES", value_parser = crate::parse::frames_parser())]
     pub turntable: Option<u32>,
     /// The turntable's axis through the scene's centre (y: upright, as on a real turntable).
     #[arg(long, value_enum, default_value = "y", requires = "turntable")]
     pub axis: Axis,
+    #[command(flatten)]
+    pub video: super::video::VideoArgs,
 }
 
 impl TurntableArgs {
@@ -189,6 +212,15 @@ impl TurntableArgs {
         if self.turntable.is_some() && out.is_none() {
             bail!("--turntable writes numbered files named after --out, which is missing");
         }
-        Ok(())
+        if let Some(out) = out.filter(|o| super::video::is_video(o)) {
+            if self.turntable.is_none() {
+                bail!(
+                    "--out {}: a video is a turntable's frames: give --turntable FRAMES (one \
+                     image is written as .png)",
+                    out.display()
+                );
+            }
+        }
+        self.video.check(out)
     }
 }

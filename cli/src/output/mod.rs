@@ -13,6 +13,7 @@ use autostereo::render::Renderer;
 
 pub mod flags;
 pub(crate) mod names;
+pub mod video;
 pub use names::{frame_quilt, planned, view_file};
 
 use flags::{OutputArg, OutputArgs};
@@ -79,50 +80,59 @@ pub fn write<S: ?Sized>(
 ) -> Result<Vec<PathBuf>> {
     let views = frame.camera.views;
     let (device, queue) = (&ctx.device, &ctx.queue);
-    let what = || format!("--output {}", output.format.name());
-    if let Some((format, eye)) = output.format.stereo(frame.size) {
-        claims.claim(out, "--out")?;
-        let eyes = eye_views(output.eyes, views)?;
-        autostereo::render::render_stereo(device, queue, renderer, scene, frame, format, eye, eyes)
-            .with_context(what)?
-            .save_png(out)?;
-        return Ok(vec![out.to_path_buf()]);
-    }
-    match output.format {
-        OutputArg::Views => {
-            let written: Vec<PathBuf> = (0..views).map(|v| view_file(out, v, views)).collect();
-            for path in &written {
-                claims.claim(path, "--out")?;
-            }
-            for (v, path) in (0..views).zip(&written) {
-                let size = frame.size;
-                autostereo::render::render_view(
-                    device, queue, renderer, scene, frame, v, size, false,
-                )
+    if output.format == OutputArg::Views {
+        let what = || format!("--output {}", output.format.name());
+        let written: Vec<PathBuf> = (0..views).map(|v| view_file(out, v, views)).collect();
+        for path in &written {
+            claims.claim(path, "--out")?;
+        }
+        for (v, path) in (0..views).zip(&written) {
+            let size = frame.size;
+            autostereo::render::render_view(device, queue, renderer, scene, frame, v, size, None)
                 .with_context(what)?
                 .read(device, queue)?
                 .save_png(path)?;
-            }
-            Ok(written)
         }
+        return Ok(written);
+    }
+    let named = match output.format {
+        OutputArg::Quilt => frame_quilt(frame, output)?.file_name(out),
+        _ => out.to_path_buf(),
+    };
+    claims.claim(&named, "--out")?;
+    image_of(ctx, renderer, scene, frame, output, spatial)?.save_png(&named)?;
+    Ok(vec![named])
+}
+
+/// The one image `--output`'s format makes of `frame` (every format but `views`): the spatial
+/// image (`spatial` where already rendered), the quilt, or the stereo pair composed.
+pub fn image_of<S: ?Sized>(
+    ctx: &GpuContext,
+    renderer: &mut dyn Renderer<S>,
+    scene: &S,
+    frame: &Frame,
+    output: &OutputArgs,
+    spatial: Option<&RgbImage>,
+) -> Result<RgbImage> {
+    let (device, queue) = (&ctx.device, &ctx.queue);
+    let what = || format!("--output {}", output.format.name());
+    if let Some((format, eye)) = output.format.stereo(frame.size) {
+        let eyes = eye_views(output.eyes, frame.camera.views)?;
+        return autostereo::render::render_stereo(
+            device, queue, renderer, scene, frame, format, eye, eyes,
+        )
+        .with_context(what);
+    }
+    match output.format {
         OutputArg::Quilt => {
-            let layout = frame_quilt(frame, output)?;
-            let named = layout.file_name(out);
-            claims.claim(&named, "--out")?;
-            autostereo::render::render_quilt(device, queue, renderer, scene, frame, &layout)
-                .with_context(what)?
-                .save_png(&named)?;
-            Ok(vec![named])
+            let quilt = frame_quilt(frame, output)?;
+            autostereo::render::render_quilt(device, queue, renderer, scene, frame, &quilt)
+                .with_context(what)
         }
-        _ => {
-            claims.claim(out, "--out")?;
-            match spatial {
-                Some(image) => image.save_png(out)?,
-                None => renderer
-                    .render_image(&ctx.device, &ctx.queue, scene, frame)?
-                    .save_png(out)?,
-            }
-            Ok(vec![out.to_path_buf()])
-        }
+        OutputArg::Views => bail!("--output views is a file per view, not one image"),
+        _ => match spatial {
+            Some(image) => Ok(image.clone()),
+            None => Ok(renderer.render_image(device, queue, scene, frame)?),
+        },
     }
 }

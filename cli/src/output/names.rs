@@ -5,56 +5,88 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Result};
-use autostereo::display::Display;
 use autostereo::frame::Frame;
-use autostereo::render::quilt::QuiltLayout;
+use autostereo::render::quilt_image::{strip_quilt_suffix, QuiltChoice, QuiltImage, QuiltName};
 
 use super::flags::{OutputArg, OutputArgs};
 
-/// The quilt of `views` views `--output quilt` writes for `display` at `size` (and the
-/// viewer's quilt preview shows): the `--quilt` grid, else a Looking Glass's own (the family's
-/// grid, tiles of the panel's aspect within the family's quilt size), else the grid for the
-/// view count; tiles of the Looking Glass's size, else of `size`.
-fn quilt_layout(
-    display: &Display,
-    views: u32,
-    size: [u32; 2],
-    grid: Option<[u32; 2]>,
-) -> Result<QuiltLayout> {
-    let Some([cols, rows]) = grid else {
-        return Ok(display.quilt(views, size));
-    };
-    let tile = display.default_quilt(views).map_or(size, |q| q.tile);
-    let layout = QuiltLayout::with_grid(cols, rows, tile, views)
-        .map_err(|e| anyhow::anyhow!("--quilt {cols}x{rows}: {e}"))?;
-    // A whole empty row plays as blank views in Looking Glass software.
-    let empty = u64::from(cols) * u64::from(rows) - u64::from(views);
-    if empty >= u64::from(cols) {
-        let fit = QuiltLayout::for_views(views, tile);
-        bail!(
-            "--quilt {cols}x{rows}: {empty} of its tiles would be empty for {views} \
-             views (a whole row or more); give a grid with fewer, e.g. --quilt {}x{}",
-            fit.cols,
-            fit.rows
-        );
-    }
-    Ok(layout)
+/// The size of the one image `--output`'s format makes of `frame` (every format but views).
+pub fn image_size(frame: &Frame, output: &OutputArgs) -> Result<[u32; 2]> {
+    Ok(match output.format.stereo(frame.size) {
+        Some((format, eye)) => format.output_size(eye),
+        None if output.format == OutputArg::Quilt => frame_quilt(frame, output)?.size,
+        None => frame.size,
+    })
 }
 
-/// The quilt `--output quilt` writes for `frame`: `--view-size` / `--view-scale` set the
-/// tiles' size, over a Looking Glass's own.
-pub fn frame_quilt(frame: &Frame, output: &OutputArgs) -> Result<QuiltLayout> {
+/// The quilt `--output quilt` writes for `frame` (the library's rule, `Display::quilt`):
+/// `--quilt` and `--quilt-size` override the grid and the image's size; `--view-size` /
+/// `--view-scale` set the tiles' size. An MP4 `--out` without `--quilt-size` gets a quilt
+/// H.264 encodes ([`h264_quilt_size`]).
+pub fn frame_quilt(frame: &Frame, output: &OutputArgs) -> Result<QuiltImage> {
     let scaled = frame.view_scale != [1.0; 2];
-    let size = if scaled {
-        frame.view_size()
-    } else {
-        frame.size
+    let mut choice = QuiltChoice {
+        grid: output.quilt_grid,
+        size: output.quilt_size,
+        tile: scaled.then(|| frame.view_size()),
     };
-    let mut layout = quilt_layout(&frame.display, frame.camera.views, size, output.quilt_grid)?;
-    if scaled {
-        layout.tile = size;
+    let mp4 = output
+        .out
+        .as_deref()
+        .and_then(autostereo::video::VideoFormat::of_path)
+        == Some(autostereo::video::VideoFormat::Mp4);
+    let quilt = quilt_for(frame, output, &choice)?;
+    match h264_quilt_size(quilt.size, frame.size).filter(|_| mp4 && choice.size.is_none()) {
+        Some(size) => {
+            choice = QuiltChoice {
+                size: Some(size),
+                tile: None,
+                ..choice
+            };
+            quilt_for(frame, output, &choice)
+        }
+        None => Ok(quilt),
     }
-    Ok(layout)
+}
+
+/// The size an H.264 quilt video gets where the quilt's own does not encode: one pixel more on
+/// an odd side (a remainder Looking Glass ignores), or, over openh264's largest frame, that
+/// frame in the views' orientation (Looking Glass stretches the tiles to the views' aspect).
+/// `None`: the quilt encodes as it is.
+pub fn h264_quilt_size(size: [u32; 2], shown: [u32; 2]) -> Option<[u32; 2]> {
+    let [long, short] = autostereo::video::H264_MAX_FRAME;
+    let even = size.map(|v| v.saturating_add(v % 2));
+    let fits = even[0].max(even[1]) <= long && even[0].min(even[1]) <= short;
+    match fits {
+        true => (even != size).then_some(even),
+        false if shown[0] >= shown[1] => Some([long, short]),
+        false => Some([short, long]),
+    }
+}
+
+fn quilt_for(frame: &Frame, output: &OutputArgs, choice: &QuiltChoice) -> Result<QuiltImage> {
+    frame
+        .display
+        .quilt(frame.camera.views, frame.size, choice)
+        .map_err(|e| match (&e, output.quilt_grid) {
+            (
+                autostereo::Error::InvalidParameter {
+                    param: autostereo::Param::Quilt,
+                    reason,
+                    ..
+                },
+                Some([c, r]),
+            ) => {
+                // The library says the grid and suggests one; here both as the flag.
+                let said = format!("{c}x{r}: ");
+                let reason = reason.strip_prefix(&said).unwrap_or(reason);
+                anyhow::anyhow!(
+                    "--quilt {c}x{r}: {}",
+                    reason.replace("e.g. ", "e.g. --quilt ")
+                )
+            }
+            _ => e.into(),
+        })
 }
 
 /// The files a run will write, each with the flag that names it: `out` in `output`'s format
@@ -76,9 +108,13 @@ pub fn planned(
         if let Some(layout) = &layout {
             check_quilt_name(out, layout)?;
         }
-        let outs: Vec<PathBuf> = match turntable {
-            Some(frames) => (0..frames).map(|k| numbered(out, k, quilt)).collect(),
-            None => vec![out.clone()],
+        let video = autostereo::video::VideoFormat::of_path(out);
+        if let Some(format) = video {
+            format.check_size(out, image_size(frame, output)?)?;
+        }
+        let outs: Vec<PathBuf> = match (turntable, video) {
+            (Some(frames), None) => (0..frames).map(|k| numbered(out, k, quilt)).collect(),
+            _ => vec![out.clone()],
         };
         let views = frame.camera.views;
         for out in outs {
@@ -100,33 +136,31 @@ pub fn planned(
 /// Refuses an `--out` whose name already says another quilt than `layout` (`x_qs5x9a0.75.png`
 /// for a 3×3 quilt): the name would promise Looking Glass software a grid or aspect the file
 /// does not have. An aspect within 1 % is this quilt's (as reading a quilt allows).
-fn check_quilt_name(out: &Path, layout: &QuiltLayout) -> Result<()> {
+fn check_quilt_name(out: &Path, quilt: &QuiltImage) -> Result<()> {
     let name = out
         .file_name()
         .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
     let stem = out
         .file_stem()
         .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
-    let base = autostereo::render::quilt::strip_quilt_suffix(&stem);
-    let Some(said) = (base != stem)
-        .then(|| autostereo::render::quilt::parse_quilt_name(&name))
-        .flatten()
-    else {
+    let base = strip_quilt_suffix(&stem);
+    let Some(said) = (base != stem).then(|| QuiltName::parse(&name)).flatten() else {
         return Ok(());
     };
     // The exact suffix this layout writes is its own even where rounding its aspect to four
     // decimals moves it by more than 1 % (tiles thinner than 1:200).
-    if layout.says(said) || stem.ends_with(&layout.suffix()) {
+    if quilt.says(&said) || stem.ends_with(&quilt.suffix()) {
         return Ok(());
     }
-    let (cols, rows, aspect) = said;
-    let ours = format!("{base}{}.png", layout.suffix());
+    let (cols, rows, aspect) = (said.cols, said.rows, said.aspect);
+    let layout = &quilt.layout;
+    let ours = format!("{base}{}.png", quilt.suffix());
     if (cols, rows) == (layout.cols, layout.rows) {
         bail!(
             "--out {}: the name says views of aspect {aspect}, but this quilt's are {:.4}; name \
              it {ours} (or {base}.png: the suffix is added)",
             out.display(),
-            layout.aspect()
+            quilt.aspect
         );
     }
     bail!(
@@ -155,7 +189,7 @@ pub fn numbered(out: &Path, k: u32, quilt: bool) -> PathBuf {
         .file_stem()
         .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
     let base = match quilt {
-        true => autostereo::render::quilt::strip_quilt_suffix(&stem),
+        true => strip_quilt_suffix(&stem),
         false => &stem,
     };
     out.with_file_name(format!("{base}_{k:04}.png"))

@@ -48,9 +48,15 @@ pub struct ViewArgs {
     /// monitor left of or above the primary (`--position -1920,0`).
     #[arg(long, value_name = "X,Y", value_parser = crate::parse::parse_point, allow_hyphen_values = true, help_heading = "Window")]
     position: Option<[i32; 2]>,
-    /// Full screen on monitor MONITOR (0 = the first; default 0).
-    #[arg(long, num_args = 0..=1, default_missing_value = "0", help_heading = "Window")]
-    fullscreen: Option<usize>,
+    /// Full screen: without a number on the display's panel (the monitor of a Looking Glass
+    /// calibration's size, said on stderr; other displays: the first monitor), else on monitor
+    /// MONITOR (0 = the first; --list-monitors lists them). The mask follows the window's
+    /// place on its monitor: no --origin needed for a panel beside another monitor.
+    #[arg(long, value_name = "MONITOR", num_args = 0..=1, default_missing_value = "panel", value_parser = parse_monitor, help_heading = "Window")]
+    fullscreen: Option<autostereo_viewer::Monitor>,
+    /// List the monitors (number, name, size, position on the desktop, scale) and exit.
+    #[arg(long, help_heading = "Window")]
+    list_monitors: bool,
     /// Starting method (keys: m cycles through the primitive's methods).
     #[arg(long, value_parser = crate::parse::method_parser(), default_value = "single-pass", help_heading = "Method")]
     method: Method,
@@ -127,8 +133,33 @@ impl ViewArgs {
     }
 }
 
+/// `--fullscreen` `panel` (no number given) or a monitor's number.
+fn parse_monitor(value: &str) -> Result<autostereo_viewer::Monitor, String> {
+    match value {
+        "panel" => Ok(autostereo_viewer::Monitor::Panel),
+        number => number
+            .parse()
+            .map(autostereo_viewer::Monitor::Index)
+            .map_err(|_| format!("'{number}' is not a monitor number (0 = the first)")),
+    }
+}
+
+/// `--list-monitors`: one line each on stdout (with `--json`, one object).
+fn list_monitors(json: bool) -> Result<()> {
+    let monitors = autostereo_viewer::monitors().map_err(in_flag_words)?;
+    match json {
+        true => println!("{}", serde_json::json!({ "monitors": monitors })),
+        false if monitors.is_empty() => println!("no monitors found"),
+        false => monitors.iter().for_each(|m| println!("{}", m.line())),
+    }
+    Ok(())
+}
+
 /// `given`: the `view` command's matches (which flags were typed, not defaulted).
 pub fn run(args: ViewArgs, given: &clap::ArgMatches) -> Result<()> {
+    if args.list_monitors {
+        return list_monitors(args.json);
+    }
     if let Some(path) = &args.screenshot {
         check_output(path)?;
     }
@@ -170,6 +201,10 @@ fn in_flag_words(error: autostereo_viewer::Error) -> anyhow::Error {
         Error::NoMonitor { index, found } => {
             anyhow::anyhow!("--fullscreen {index}: {found} monitor(s) found, numbered from 0")
         }
+        e @ Error::NoPanelMonitor { .. } => anyhow::anyhow!(
+            "--fullscreen: {e} (give --fullscreen MONITOR to choose one; --list-monitors lists \
+             them)"
+        ),
         Error::WindowTooLarge {
             size: [w, h],
             fullscreen,
@@ -204,8 +239,12 @@ fn in_flag_words(error: autostereo_viewer::Error) -> anyhow::Error {
 /// exercise report alone (cli/tests/viewer reads it).
 fn print_report(report: &autostereo_viewer::Report, json: bool) {
     match (json, &report.exercise) {
-        (false, Some(exercise)) => println!("{exercise}"),
-        (false, None) => {}
+        (false, exercise) => {
+            if let Some(exercise) = exercise {
+                println!("{exercise}");
+            }
+            crate::output::say_written(false, &report.written);
+        }
         (true, exercise) => {
             let mut fields = exercise.clone().unwrap_or_else(|| serde_json::json!({}));
             let own = serde_json::to_value(report).expect("a report is plain data");

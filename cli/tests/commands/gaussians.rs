@@ -127,7 +127,8 @@ fn every_method_and_output_renders() {
         &["--output", "quilt", "--out", quilt.to_str().unwrap()],
     );
     let layout = autostereo::render::quilt::QuiltLayout::for_views(8, [64, 48]);
-    let written = load(&layout.file_name(&quilt));
+    let written =
+        load(&autostereo::render::quilt_image::QuiltImage::of_tiles(layout).file_name(&quilt));
     assert_eq!([written.width, written.height], layout.size());
     let anaglyph = out("gaussians_anaglyph.png");
     render(

@@ -1,4 +1,5 @@
-//! The render commands end to end: outputs, quilts, turntables, interleave, Looking Glass, Gaussians.
+//! The render commands end to end: outputs, quilts, turntables, videos, interleave, Looking
+//! Glass, Gaussians.
 //! One test binary (fewer binaries: less linking, less disk); a module per theme.
 
 #[path = "../common/mod.rs"]
@@ -10,3 +11,4 @@ mod interleave;
 mod looking_glass;
 mod outputs;
 mod turntable;
+mod video;

@@ -227,7 +227,7 @@ fn quilt_tile(quilt: &RgbImage, layout: &QuiltLayout, v: u32) -> RgbImage {
 
 /// A quilt written with `extra` flags, named by `layout`, of `layout`'s size.
 fn quilt(name: &str, layout: &QuiltLayout, extra: &[&str]) -> RgbImage {
-    let path = layout.file_name(&out(name));
+    let path = autostereo::render::quilt_image::QuiltImage::of_tiles(*layout).file_name(&out(name));
     let mut args = vec!["--output", "quilt"];
     args.extend_from_slice(extra);
     run(name, layout.tile, &args);

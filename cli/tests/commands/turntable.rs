@@ -197,7 +197,8 @@ fn turntables_write_any_output_format_and_report_frame_times() {
     }
     let layout = QuiltLayout::for_views(8, [48, 32]);
     for k in 0..3 {
-        let quilt = layout.file_name(&out(&format!("turntable_quilt_{k:04}.png")));
+        let quilt = autostereo::render::quilt_image::QuiltImage::of_tiles(layout)
+            .file_name(&out(&format!("turntable_quilt_{k:04}.png")));
         let image = load(&quilt);
         assert_eq!([image.width, image.height], layout.size(), "{quilt:?}");
     }

@@ -160,7 +160,10 @@ fn cli_flags_are_refused_not_clamped_and_failures_leave_no_file() {
     let jpg = dir().join("o.jpg");
     let _ = std::fs::remove_file(&jpg);
     let (ok, stderr) = cli(&["mesh", "--size", "16x16", "--out", jpg.to_str().unwrap()]);
-    assert!(!ok && stderr.contains("only PNG"), "{stderr}");
+    assert!(
+        !ok && stderr.contains("PNG, MP4 or GIF is written"),
+        "{stderr}"
+    );
     assert!(!jpg.exists(), "no file is left behind");
     // --downsample 0 was silently 1.
     let (ok, stderr) = cli(&["volume", "--downsample", "0", "--size", "16x16", "--json"]);

@@ -8,6 +8,7 @@
 mod common;
 
 mod memory;
+mod monitors;
 mod presented;
 mod previews;
 

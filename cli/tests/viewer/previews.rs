@@ -25,6 +25,10 @@ fn the_quilt_preview_puts_each_view_in_its_tile() {
         shot.to_str().unwrap(),
     ]);
     assert!(ok, "{err}");
+    assert!(
+        err.contains(&format!("wrote {}", shot.display())),
+        "the screenshot is said: {err}"
+    );
     let quilt = RgbImage::load_png(&shot).unwrap();
     // 8 views on the squarest grid: 3×3 tiles of 100×80.
     for (view, [tx, ty]) in [(0u32, [0u32, 160u32]), (4, [100, 80]), (7, [100, 0])] {

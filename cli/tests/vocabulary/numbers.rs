@@ -248,7 +248,8 @@ fn a_larger_quilt_is_spread_over_the_display_views() {
             }
         }
     }
-    let path = layout.file_name(&out("vocabulary_quilt45.png"));
+    let path = autostereo::render::quilt_image::QuiltImage::of_tiles(layout)
+        .file_name(&out("vocabulary_quilt45.png"));
     quilt.save_png(&path).unwrap();
     let spatial = out("vocabulary_quilt45_on_8.png");
     let (ok, stderr) = cli(&[

@@ -328,15 +328,24 @@ fn a_looking_glass_quilt_of_fewer_views_has_no_empty_rows() {
         "64x36",
         "--output",
         "quilt",
+        // The family's 5999² would render four 2999² views: the grid is the point here.
+        "--quilt-size",
+        "400x400",
         "--json",
         "--out",
         quilt.to_str().unwrap(),
     ]);
+    assert_eq!(
+        report["quilt_size"],
+        serde_json::json!([400, 400]),
+        "{report}"
+    );
     let written = report["written"][0].as_str().unwrap();
     let name = std::path::Path::new(written)
         .file_name()
         .unwrap()
         .to_string_lossy();
-    let (cols, rows, _) = autostereo::render::quilt::parse_quilt_name(&name).unwrap();
+    let n = autostereo::render::quilt_image::QuiltName::parse(&name).unwrap();
+    let (cols, rows) = (n.cols, n.rows);
     assert!(cols * rows - 4 < cols, "{name}");
 }

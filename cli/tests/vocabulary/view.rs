@@ -46,8 +46,9 @@ fn display_spec_errors_name_the_flag_and_what_is_wrong() {
 }
 
 /// The viewer's quilt preview showed 45 views on a 7×7 grid while `--output quilt` wrote
-/// another (6×8 for tiles of 300×240): both now take the grid from one function. Tile 44 of
-/// the preview (its place differs between the two grids) is view 44 rendered alone.
+/// another (6×8 for tiles of 300×240): both now take the grid from one function, and the
+/// window is the quilt that `--output quilt` writes at the window's size (Looking Glass's rule:
+/// whole-pixel tiles, views shown at the quilt's aspect).
 #[test]
 fn the_quilt_preview_uses_the_grid_the_quilt_output_writes() {
     let Some(x) = xvfb_or_clear_error() else {
@@ -68,8 +69,8 @@ fn the_quilt_preview_uses_the_grid_the_quilt_output_writes() {
         .map(|e| e.file_name().to_string_lossy().into_owned())
         .find(|n| n.starts_with("q_qs"))
         .expect("the quilt written");
-    let (cols, rows, _) = autostereo::render::quilt::parse_quilt_name(&written).unwrap();
-    assert_eq!([cols, rows], [6, 8], "{written}");
+    let named = autostereo::render::quilt_image::QuiltName::parse(&written).unwrap();
+    assert_eq!([named.cols, named.rows], [6, 8], "{written}");
     let shot = dir.join("preview.png");
     let mut args = vec![
         "view",
@@ -90,34 +91,24 @@ fn the_quilt_preview_uses_the_grid_the_quilt_output_writes() {
     let (ok, _, err) = x.cli(&args);
     assert!(ok, "{err}");
     let preview = autostereo::image_io::RgbImage::load_png(&shot).unwrap();
-    // The window's tiles: 300/6 × 240/8 = 50×30; view 44 in column 44 mod 6, row 44 / 6 from
-    // the bottom.
-    let [tw, th] = [50u32, 30u32];
-    let layout = autostereo::render::quilt::QuiltLayout::with_grid(6, 8, [tw, th], 45).unwrap();
-    let [tx, ty] = layout.tile_origin(44);
-    let alone = dir.join("view44.png");
-    let (ok, err) = common::cli(&[
-        "mesh",
-        "--display",
-        "view:45,44",
-        "--size",
-        "50x30",
-        "--out",
-        alone.to_str().unwrap(),
-    ]);
+    // The window is the quilt `--output quilt --quilt-size 300x240` writes: tiles of
+    // 300/6 × 240/8 = 50×30, each view shown at the quilt's aspect (the window's, 1.25).
+    let small = dir.join("small.png");
+    let mut args = vec!["mesh", "--size", "300x240", "--output", "quilt"];
+    args.extend(display);
+    args.extend(["--quilt-size", "300x240", "--out", small.to_str().unwrap()]);
+    let (ok, err) = common::cli(&args);
     assert!(ok, "{err}");
-    let tile = autostereo::image_io::RgbImage::load_png(&alone).unwrap();
-    let drawn = tile
-        .data
-        .chunks(3)
-        .filter(|p| p != &&tile.data[..3])
-        .count();
+    let written = autostereo::image_io::RgbImage::load_png(&dir.join("small_qs6x8a1.25.png"))
+        .expect("the small quilt, named for its grid and the views' aspect");
+    let background = &written.data[..3];
+    let drawn = written.data.chunks(3).filter(|p| p != &background).count();
+    assert!(drawn > 45 * 150, "the views show the scene: {drawn} pixels");
+    let off = common::tile_subpixels_off(&preview, [0, 0], &written);
     assert!(
-        drawn > 150,
-        "view 44 shows the scene: {drawn} of 1500 pixels"
+        off <= 45 * 9,
+        "{off} of 216000 subpixels off the quilt file"
     );
-    let off = common::tile_subpixels_off(&preview, [tx, ty], &tile);
-    assert!(off <= 9, "view 44: {off} of 4500 subpixels off its tile");
 }
 
 /// `view --json` says what the window showed and the screenshot it wrote, as every other

@@ -4,7 +4,7 @@
 use crate::error::Result;
 use autostereo::display::Display;
 use autostereo::frame::Frame;
-use autostereo::render::quilt::QuiltLayout;
+use autostereo::render::quilt_image::{QuiltChoice, QuiltImage};
 use autostereo::render::StereoFormat;
 
 use super::State;
@@ -51,18 +51,19 @@ impl State {
             (Preview::View, _) => vec![(self.frame_on(options, one(centre)?, size)?, 0, None)],
             (Preview::Quilt, _) => {
                 // Looking Glass order: view 0 bottom-left, left to right, bottom to top. The
-                // grid `--output quilt` writes for this display (a Looking Glass's own), its
-                // tiles shrunk to fit the window.
-                let grid = panel.quilt(n, size);
-                let tile = [(size[0] / grid.cols).max(1), (size[1] / grid.rows).max(1)];
-                let layout = QuiltLayout { tile, ..grid };
+                // grid `--output quilt` writes for this display (a Looking Glass's own), in a
+                // quilt the window's size: whole-pixel tiles from the bottom-left, each view
+                // shown at the quilt's aspect (squeezed into its tile, as the file holds it).
+                let written = panel.quilt(n, size, &QuiltChoice::default())?;
+                let grid = [written.layout.cols, written.layout.rows];
+                let window = QuiltImage::in_size(grid, size, n, written.aspect)?;
+                let top = size[1] - window.layout.size()[1];
                 (0..n)
                     .map(|v| {
-                        Ok((
-                            self.frame_on(options, one(v)?, tile)?,
-                            1,
-                            Some(layout.tile_origin(v)),
-                        ))
+                        let mut frame = self.frame_on(options, one(v)?, window.layout.tile)?;
+                        frame.camera.aspect = window.aspect;
+                        let [x, y] = window.layout.tile_origin(v);
+                        Ok((frame, 1, Some([x, y + top])))
                     })
                     .collect::<Result<_>>()?
             }
