@@ -9,6 +9,7 @@ use autostereo::image_io::RgbImage;
 use autostereo::render::atlas::{Atlas, QuiltInterleaver};
 use autostereo::render::quilt::QuiltLayout;
 use autostereo::render::quilt_image::QuiltImage;
+use autostereo::render::quilt_views;
 use autostereo::target::SpatialTarget;
 
 use crate::args::DisplayArgs;
@@ -86,7 +87,7 @@ impl Interleaving<'_> {
     fn spatial(&mut self, tiles: RgbImage) -> Result<RgbImage> {
         let (device, queue) = (&self.ctx.device, &self.ctx.queue);
         let image = match &self.picked {
-            Some(picked) => pick_tiles(&tiles, &self.layout, picked),
+            Some(picked) => quilt_views::pick_tiles(&tiles, &self.layout, picked),
             None => tiles,
         };
         let atlas = Atlas::from_image(device, queue, &image, self.layout)?;
@@ -127,7 +128,7 @@ pub fn run(args: InterleaveArgs) -> Result<()> {
     let tiles = read.tiles(&first)?;
     let grid = read.layout;
     let n = display.views();
-    let q = quilt_views(&tiles, &grid).max(n.min(grid.cols * grid.rows));
+    let q = quilt_views::views_held(&tiles, &grid).max(n.min(grid.cols * grid.rows));
     if q < n {
         bail!(
             "{}: a {}x{} grid cannot hold {n} views: the quilt has {q} views, the display {} \
@@ -141,7 +142,7 @@ pub fn run(args: InterleaveArgs) -> Result<()> {
     let layout = QuiltLayout { views: n, ..grid };
     // Fewer display views than the quilt's: N views spread across the quilt's cone (not its
     // first N, one edge of it), copied into tiles 0..N of the quilt the atlas is made of.
-    let picked = spread_views(n, q);
+    let picked = quilt_views::spread_views(n, q);
     if q > n && !args.json {
         let list: Vec<String> = picked.iter().map(u32::to_string).collect();
         eprintln!(
@@ -233,65 +234,4 @@ pub fn run(args: InterleaveArgs) -> Result<()> {
         crate::output::say_written(false, &written);
     }
     Ok(())
-}
-
-/// The views a quilt of `grid` holds: its tiles up to the last one that is not all black.
-fn quilt_views(image: &RgbImage, grid: &QuiltLayout) -> u32 {
-    let tiles = grid.cols * grid.rows;
-    (0..tiles)
-        .rev()
-        .find(|&t| {
-            let [x0, y0] = grid.tile_origin(t);
-            (y0..y0 + grid.tile[1]).any(|y| {
-                let row = (y as usize * image.width as usize + x0 as usize) * 3;
-                image.data[row..row + grid.tile[0] as usize * 3]
-                    .iter()
-                    .any(|&b| b != 0)
-            })
-        })
-        .map_or(0, |t| t + 1)
-}
-
-/// The `n` quilt views of `q` (n ≤ q) a display of `n` views shows: view i ←
-/// round(i·(q−1)/(n−1)), spread across the quilt's cone; one view: the middle.
-fn spread_views(n: u32, q: u32) -> Vec<u32> {
-    if n == 1 {
-        return vec![(q - 1) / 2];
-    }
-    (0..n)
-        .map(|i| {
-            let num = u64::from(i) * u64::from(q - 1);
-            let den = u64::from(n - 1);
-            ((2 * num + den) / (2 * den)) as u32
-        })
-        .collect()
-}
-
-/// A quilt of `layout` whose tile i is `image`'s tile `picked[i]` (same grid).
-fn pick_tiles(image: &RgbImage, layout: &QuiltLayout, picked: &[u32]) -> RgbImage {
-    let mut out = RgbImage::new(image.width, image.height);
-    let row_bytes = layout.tile[0] as usize * 3;
-    for (i, &t) in picked.iter().enumerate() {
-        let [dx, dy] = layout.tile_origin(i as u32);
-        let [sx, sy] = layout.tile_origin(t);
-        for y in 0..layout.tile[1] {
-            let src = ((sy + y) as usize * image.width as usize + sx as usize) * 3;
-            let dst = ((dy + y) as usize * image.width as usize + dx as usize) * 3;
-            out.data[dst..dst + row_bytes].copy_from_slice(&image.data[src..src + row_bytes]);
-        }
-    }
-    out
-}
-
-#[cfg(test)]
-mod tests {
-    use super::spread_views;
-
-    #[test]
-    fn views_spread_across_the_cone() {
-        assert_eq!(spread_views(8, 45), [0, 6, 13, 19, 25, 31, 38, 44]);
-        assert_eq!(spread_views(8, 8), (0..8).collect::<Vec<_>>());
-        assert_eq!(spread_views(1, 45), [22]);
-        assert_eq!(spread_views(2, 45), [0, 44]);
-    }
 }

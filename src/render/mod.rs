@@ -34,6 +34,7 @@ pub(crate) mod output;
 pub(crate) mod pipeline_cache;
 pub mod quilt;
 pub mod quilt_image;
+pub mod quilt_views;
 mod renderer;
 pub(crate) mod specialize;
 pub(crate) mod stereo;

@@ -15,6 +15,21 @@ use crate::error::{Error, Result};
 use crate::image_io::RgbImage;
 use crate::param::Param;
 
+/// The size an H.264 quilt video gets where the quilt's own does not encode: one pixel more on
+/// an odd side (a remainder Looking Glass ignores), or, over openh264's largest frame, that
+/// frame in the views' orientation (Looking Glass stretches the tiles to the views' aspect).
+/// `None`: the quilt encodes as it is.
+pub fn h264_quilt_size(size: [u32; 2], shown: [u32; 2]) -> Option<[u32; 2]> {
+    let [long, short] = H264_MAX_FRAME;
+    let even = size.map(|v| v.saturating_add(v % 2));
+    let fits = even[0].max(even[1]) <= long && even[0].min(even[1]) <= short;
+    match fits {
+        true => (even != size).then_some(even),
+        false if shown[0] >= shown[1] => Some([long, short]),
+        false => Some([short, long]),
+    }
+}
+
 /// A video container this build writes and reads.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum VideoFormat {
@@ -253,5 +268,38 @@ fn io_error(path: &Path, error: std::io::Error) -> Error {
     Error::Io {
         path: path.to_path_buf(),
         error,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quilt_videos_get_a_size_h264_encodes() {
+        // The 16" Spatial Display's 5999² quilt: over the encoder's largest, so 3840×2160 for
+        // landscape views, 2160×3840 for upright ones.
+        assert_eq!(
+            h264_quilt_size([5999, 5999], [3840, 2160]),
+            Some([3840, 2160])
+        );
+        assert_eq!(
+            h264_quilt_size([4092, 4092], [1440, 2560]),
+            Some([2160, 3840])
+        );
+        // An odd side grows by the pixel Looking Glass ignores; an encodable quilt stays.
+        assert_eq!(h264_quilt_size([145, 96], [48, 32]), Some([146, 96]));
+        assert_eq!(h264_quilt_size([144, 96], [48, 32]), None);
+        let path = Path::new("x.mp4");
+        assert!(VideoFormat::Mp4.check_size(path, [3840, 2160]).is_ok());
+        assert!(VideoFormat::Mp4.check_size(path, [2160, 3840]).is_ok());
+        assert!(VideoFormat::Mp4.check_size(path, [3841, 2160]).is_err());
+        assert!(VideoFormat::Mp4.check_size(path, [4096, 2160]).is_err());
+        assert!(VideoFormat::Gif.check_size(path, [70000, 10]).is_err());
+        assert_eq!(
+            VideoFormat::of_path(Path::new("a/B.MP4")),
+            Some(VideoFormat::Mp4)
+        );
+        assert_eq!(VideoFormat::of_path(Path::new("a.png")), None);
     }
 }

@@ -22,7 +22,7 @@ pub fn image_size(frame: &Frame, output: &OutputArgs) -> Result<[u32; 2]> {
 /// The quilt `--output quilt` writes for `frame` (the library's rule, `Display::quilt`):
 /// `--quilt` and `--quilt-size` override the grid and the image's size; `--view-size` /
 /// `--view-scale` set the tiles' size. An MP4 `--out` without `--quilt-size` gets a quilt
-/// H.264 encodes ([`h264_quilt_size`]).
+/// H.264 encodes (`video::h264_quilt_size`).
 pub fn frame_quilt(frame: &Frame, output: &OutputArgs) -> Result<QuiltImage> {
     let scaled = frame.view_scale != [1.0; 2];
     let mut choice = QuiltChoice {
@@ -36,7 +36,9 @@ pub fn frame_quilt(frame: &Frame, output: &OutputArgs) -> Result<QuiltImage> {
         .and_then(autostereo::video::VideoFormat::of_path)
         == Some(autostereo::video::VideoFormat::Mp4);
     let quilt = quilt_for(frame, output, &choice)?;
-    match h264_quilt_size(quilt.size, frame.size).filter(|_| mp4 && choice.size.is_none()) {
+    match autostereo::video::h264_quilt_size(quilt.size, frame.size)
+        .filter(|_| mp4 && choice.size.is_none())
+    {
         Some(size) => {
             choice = QuiltChoice {
                 size: Some(size),
@@ -46,21 +48,6 @@ pub fn frame_quilt(frame: &Frame, output: &OutputArgs) -> Result<QuiltImage> {
             quilt_for(frame, output, &choice)
         }
         None => Ok(quilt),
-    }
-}
-
-/// The size an H.264 quilt video gets where the quilt's own does not encode: one pixel more on
-/// an odd side (a remainder Looking Glass ignores), or, over openh264's largest frame, that
-/// frame in the views' orientation (Looking Glass stretches the tiles to the views' aspect).
-/// `None`: the quilt encodes as it is.
-pub fn h264_quilt_size(size: [u32; 2], shown: [u32; 2]) -> Option<[u32; 2]> {
-    let [long, short] = autostereo::video::H264_MAX_FRAME;
-    let even = size.map(|v| v.saturating_add(v % 2));
-    let fits = even[0].max(even[1]) <= long && even[0].min(even[1]) <= short;
-    match fits {
-        true => (even != size).then_some(even),
-        false if shown[0] >= shown[1] => Some([long, short]),
-        false => Some([short, long]),
     }
 }
 
