@@ -94,9 +94,11 @@ struct State {
     /// The window's spatial image, and the stereo previews' left and right eyes.
     targets: [Option<SpatialTarget>; 3],
     stereo: StereoCompositor,
-    /// Window client area on the screen (the mask's origin; negative on a monitor left of or
-    /// above the primary).
+    /// Window client area on its monitor (the mask's origin).
     position: [i32; 2],
+    /// The monitor a full-screen window was put on (its position on the desktop): the panel,
+    /// whatever the window system says the window's monitor is before it has moved there.
+    fullscreen_on: Option<winit::monitor::MonitorHandle>,
     cursor: Option<PhysicalPosition<f64>>,
     buttons: (bool, bool),
     frames: u32,
@@ -193,10 +195,12 @@ impl State {
         if let Some([x, y]) = options.position {
             attributes = attributes.with_position(PhysicalPosition::new(x, y));
         }
+        let mut fullscreen_on = None;
         if let Some(choice) = options.fullscreen {
             let monitors: Vec<_> = event_loop.available_monitors().collect();
             let (monitor, said) = crate::monitors::pick(&monitors, choice, &options.display)?;
             eprintln!("{said}");
+            fullscreen_on = Some(monitor.clone());
             // Also the monitor's position and size: without a window manager (Xvfb, a kiosk
             // panel) nothing acts on the fullscreen request.
             attributes = attributes
@@ -276,7 +280,7 @@ impl State {
             &scene.scene,
             &scene.options(methods[method]),
         )?);
-        check_monitor(&window, &options.display);
+        check_monitor(&window, fullscreen_on.as_ref(), &options.display);
         let mut displays = vec![(options.display_name.clone(), options.display.clone())];
         for spec in MORE_DISPLAYS.iter().filter(|d| **d != options.display_name) {
             displays.push((spec.to_string(), Display::parse(spec)?));
@@ -301,6 +305,7 @@ impl State {
             targets: [None, None, None],
             stereo,
             position: [0, 0],
+            fullscreen_on,
             cursor: None,
             buttons: (false, false),
             frames: 0,
@@ -317,7 +322,11 @@ impl State {
     /// are the mask's, wherever the monitor is on the desktop).
     fn update_position(&mut self) {
         if let Ok(p) = self.window.inner_position() {
-            let monitor = self.window.current_monitor().map(|m| m.position());
+            let monitor = self
+                .fullscreen_on
+                .clone()
+                .or_else(|| self.window.current_monitor());
+            let monitor = monitor.map(|m| m.position());
             let [mx, my] = monitor.map_or([0, 0], |m| [m.x, m.y]);
             self.position = [p.x - mx, p.y - my];
         }

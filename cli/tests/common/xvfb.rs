@@ -1,5 +1,6 @@
 //! An X server of the tests' own (Xvfb; CI installs it: .ci/run), for the viewer's tests in a
-//! real window.
+//! real window; for two monitors, Xorg with the dummy driver (Xvfb has one CRTC, so one
+//! monitor, whatever its screens), its second output placed with xrandr.
 
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command};
@@ -43,6 +44,80 @@ impl Xvfb {
             child,
             display: format!(":{n}"),
         })
+    }
+
+    /// Two monitors side by side: 1024×768 at 0,0 and 640×480 at 1024,0 (Xorg's dummy driver
+    /// and xrandr), or `None` where the machine lacks them (CI installs them: .ci/run).
+    pub fn two_monitors() -> Option<Self> {
+        use std::io::BufRead;
+        let driver = Path::new("/usr/lib/xorg/modules/drivers/dummy_drv.so");
+        let xrandr = Command::new("xrandr").arg("--version").output().is_ok();
+        if !driver.exists() || !xrandr {
+            return None;
+        }
+        let dir = super::out_dir().join("xorg_dummy");
+        std::fs::create_dir_all(&dir).unwrap();
+        let config = dir.join("dummy.conf");
+        std::fs::write(
+            &config,
+            "Section \"Device\"\n Identifier \"dummy\"\n Driver \"dummy\"\n VideoRam 64000\nEndSection\n\
+             Section \"Screen\"\n Identifier \"screen\"\n Device \"dummy\"\n DefaultDepth 24\n \
+             SubSection \"Display\"\n  Depth 24\n  Virtual 2048 1024\n EndSubSection\nEndSection\n",
+        )
+        .unwrap();
+        let mut child = Command::new("Xorg")
+            .args(["-displayfd", "1", "-noreset", "-nolisten", "tcp", "-config"])
+            .arg(&config)
+            .arg("-logfile")
+            .arg(dir.join(format!("xorg-{}.log", std::process::id())))
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .ok()?;
+        let mut line = String::new();
+        let stdout = child.stdout.take().expect("piped");
+        std::io::BufReader::new(stdout)
+            .read_line(&mut line)
+            .unwrap();
+        let n: u32 = line
+            .trim()
+            .parse()
+            .unwrap_or_else(|_| panic!("Xorg (dummy) did not come up (said {line:?})"));
+        let x = Self {
+            child,
+            display: format!(":{n}"),
+        };
+        let xrandr = |args: &[&str]| {
+            let status = Command::new("xrandr")
+                .args(args)
+                .env("DISPLAY", &x.display)
+                .status()
+                .unwrap();
+            assert!(status.success(), "xrandr {args:?}");
+        };
+        let mode = [
+            "640x480_two",
+            "25.175",
+            "640",
+            "656",
+            "752",
+            "800",
+            "480",
+            "490",
+            "492",
+            "525",
+        ];
+        xrandr(&[&["--newmode"][..], &mode].concat());
+        xrandr(&["--addmode", "DUMMY1", mode[0]]);
+        xrandr(&[
+            "--output",
+            "DUMMY1",
+            "--mode",
+            mode[0],
+            "--right-of",
+            "DUMMY0",
+        ]);
+        Some(x)
     }
 
     /// Run the CLI on this display; (success, stdout, stderr).

@@ -8,8 +8,13 @@ use winit::window::Window;
 
 /// Say so when the window's monitor is not the display's panel (a Looking Glass calibration
 /// knows its panel's size): the mask then does not meet the lenses it was made for.
-pub(super) fn check_monitor(window: &Window, display: &Display) {
-    let (Some(panel), Some(monitor)) = (display.panel_size(), window.current_monitor()) else {
+pub(super) fn check_monitor(
+    window: &Window,
+    fullscreen_on: Option<&winit::monitor::MonitorHandle>,
+    display: &Display,
+) {
+    let monitor = fullscreen_on.cloned().or_else(|| window.current_monitor());
+    let (Some(panel), Some(monitor)) = (display.panel_size(), monitor) else {
         return;
     };
     let size = monitor.size();
@@ -22,8 +27,8 @@ pub(super) fn check_monitor(window: &Window, display: &Display) {
     } else {
         eprintln!(
             "note: this window is on monitor {name} ({}x{}), but the calibration's panel is \
-             {}x{}: the image matches the lenses only on the Looking Glass itself (--fullscreen \
-             N with N its monitor)",
+             {}x{}: the image matches the lenses only on the Looking Glass itself (full screen \
+             on its monitor)",
             size.width, size.height, panel[0], panel[1]
         );
     }
