@@ -120,8 +120,15 @@ pub fn render<S: ?Sized>(
         let t = Instant::now();
         match &mut video {
             Some(video) => {
-                let image =
-                    crate::output::image_of(ctx, renderer, scene, &this, &plan.output, None)?;
+                let image = crate::output::image_of(
+                    ctx,
+                    renderer,
+                    scene,
+                    &this,
+                    &plan.output,
+                    None,
+                    false,
+                )?;
                 video.push(&image)?;
             }
             None => written.extend(crate::output::write(

@@ -52,4 +52,4 @@ pub(crate) use renderer::{
 };
 pub use stereo::{default_eyes, StereoCompositor, StereoFormat};
 pub use view_layers::ViewLayers;
-pub use whole_views::{render_quilt, render_stereo, render_view};
+pub use whole_views::{render_quilt, render_quilt_counted, render_stereo, render_view};

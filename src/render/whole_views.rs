@@ -51,6 +51,20 @@ pub fn render_quilt<S: ?Sized>(
     frame: &Frame,
     quilt: &QuiltImage,
 ) -> Result<RgbImage> {
+    render_quilt_counted(device, queue, renderer, scene, frame, quilt, &mut |_| {})
+}
+
+/// [`render_quilt`], calling `done(v)` as each view `v` is in its tile (a progress bar's
+/// count: the views are the work).
+pub fn render_quilt_counted<S: ?Sized>(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    renderer: &mut dyn Renderer<S>,
+    scene: &S,
+    frame: &Frame,
+    quilt: &QuiltImage,
+    done: &mut dyn FnMut(u32),
+) -> Result<RgbImage> {
     let layout = &quilt.layout;
     let [w, h] = layout.size();
     RgbImage::check_size(quilt.size[0], quilt.size[1])?;
@@ -66,6 +80,7 @@ pub fn render_quilt<S: ?Sized>(
             let dst = (((ty + y) * w + tx) * 3) as usize;
             tiles.data[dst..dst + row].copy_from_slice(&tile.data[src..src + row]);
         }
+        done(v);
     }
     quilt.image(&tiles)
 }

@@ -100,12 +100,16 @@ pub fn write<S: ?Sized>(
         _ => out.to_path_buf(),
     };
     claims.claim(&named, "--out")?;
-    image_of(ctx, renderer, scene, frame, output, spatial)?.save_png(&named)?;
+    // A run's own output (its spatial image given) counts its quilt views; a turntable's
+    // frames (none given) are counted on the turntable's bar.
+    let counted = spatial.is_some();
+    image_of(ctx, renderer, scene, frame, output, spatial, counted)?.save_png(&named)?;
     Ok(vec![named])
 }
 
 /// The one image `--output`'s format makes of `frame` (every format but `views`): the spatial
-/// image (`spatial` where already rendered), the quilt, or the stereo pair composed.
+/// image (`spatial` where already rendered), the quilt (its views counted on a bar where
+/// `counted`: not inside a turntable's own), or the stereo pair composed.
 pub fn image_of<S: ?Sized>(
     ctx: &GpuContext,
     renderer: &mut dyn Renderer<S>,
@@ -113,6 +117,7 @@ pub fn image_of<S: ?Sized>(
     frame: &Frame,
     output: &OutputArgs,
     spatial: Option<&RgbImage>,
+    counted: bool,
 ) -> Result<RgbImage> {
     let (device, queue) = (&ctx.device, &ctx.queue);
     let what = || format!("--output {}", output.format.name());
@@ -126,8 +131,22 @@ pub fn image_of<S: ?Sized>(
     match output.format {
         OutputArg::Quilt => {
             let quilt = frame_quilt(frame, output)?;
-            autostereo::render::render_quilt(device, queue, renderer, scene, frame, &quilt)
-                .with_context(what)
+            let views = frame.camera.views.min(quilt.layout.views);
+            let bar = match counted {
+                true => crate::progress::bar(u64::from(views), "quilt views"),
+                false => indicatif::ProgressBar::hidden(),
+            };
+            let image = autostereo::render::render_quilt_counted(
+                device,
+                queue,
+                renderer,
+                scene,
+                frame,
+                &quilt,
+                &mut |_| bar.inc(1),
+            );
+            bar.finish_and_clear();
+            image.with_context(what)
         }
         OutputArg::Views => bail!("--output views is a file per view, not one image"),
         _ => match spatial {
