@@ -71,8 +71,9 @@ pub struct VolumeLoad {
     pub spacing: Option<[f32; 3]>,
     /// Average blocks of `downsample`³ voxels (1: as read).
     pub downsample: u32,
-    /// The transfer function; `None`: the preset for the file's format ([`default_preset`]).
-    pub transfer: Option<TransferFunction>,
+    /// The classification; `None`: the preset for the scan's modality, else its format
+    /// ([`default_preset`]).
+    pub transfer: Option<crate::volume::Transfer>,
     /// Placed by this matrix after the volume's own axes.
     pub model: Mat4,
 }
@@ -127,8 +128,8 @@ impl VolumeData {
     /// `volume` classified by `transfer` (a preset name), placed by `model`.
     pub fn with_preset(volume: Volume, preset: &'static str, model: Mat4) -> Result<Self> {
         Ok(Self {
+            transfer: TransferFunction::preset_for(preset, &volume.values)?,
             volume,
-            transfer: TransferFunction::preset(preset)?,
             preset: Some(preset),
             model,
         })
@@ -160,8 +161,19 @@ impl AnyData {
 /// The transfer-function preset a volume of `format` gets by default: `mri` for the formats
 /// of MR studies (NIfTI, VolPack's MRI brain), else `ct-skin`.
 pub fn default_preset(format: Option<Format>) -> &'static str {
-    match format {
-        Some(Format::Nifti | Format::Den) => "mri",
+    default_preset_for(format, None)
+}
+
+/// The preset for a scan of `modality` (where its file says: CT `ct-skin`, MR `mri`), else as
+/// [`default_preset`] for its format.
+pub fn default_preset_for(
+    format: Option<Format>,
+    modality: Option<crate::volume::Modality>,
+) -> &'static str {
+    use crate::volume::Modality;
+    match (modality, format) {
+        (Some(Modality::Ct), _) => "ct-skin",
+        (Some(Modality::Mr), _) | (_, Some(Format::Nifti | Format::Den)) => "mri",
         _ => "ct-skin",
     }
 }
@@ -223,18 +235,24 @@ fn volume(path: &Path, options: &VolumeLoad) -> Result<VolumeData> {
         None => load_any(path)?,
     };
     if let Some(spacing) = options.spacing {
-        volume = Volume::new(volume.dims, spacing, volume.data)?.with_axes(volume.axes)?;
+        let values = volume.values.clone();
+        volume = Volume::new(volume.dims, spacing, volume.data)?
+            .with_axes(volume.axes)?
+            .with_values(values);
     }
     volume = resampled(volume, options.downsample)?;
     let (transfer, preset) = match &options.transfer {
-        Some(transfer) => (transfer.clone(), None),
+        Some(choice) => choice.resolve(&volume.values)?,
         None => {
             let format = match options.raw {
                 Some(_) => Some(Format::Raw),
                 None => crate::formats::detect(path).ok(),
             };
-            let preset = default_preset(format);
-            (TransferFunction::preset(preset)?, Some(preset))
+            let preset = default_preset_for(format, volume.values.modality);
+            (
+                TransferFunction::preset_for(preset, &volume.values)?,
+                Some(preset),
+            )
         }
     };
     Ok(VolumeData {

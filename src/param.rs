@@ -67,6 +67,8 @@ pub enum Param {
     QuiltAtlas,
     /// A quilt image's size in pixels.
     QuiltSize,
+    /// A volume's display window (width, level).
+    Window,
     /// A video's frames per second.
     FrameRate,
     /// A video's bit rate.
@@ -143,7 +145,7 @@ pub enum Param {
 
 impl Param {
     /// Every parameter.
-    pub const ALL: [Param; 67] = [
+    pub const ALL: [Param; 68] = [
         Param::Aspect,
         Param::Bands,
         Param::Camera,
@@ -175,6 +177,7 @@ impl Param {
         Param::Quilt,
         Param::QuiltAtlas,
         Param::QuiltSize,
+        Param::Window,
         Param::FrameRate,
         Param::BitRate,
         Param::RadiusScale,
@@ -247,6 +250,7 @@ impl Param {
             Param::Quilt => "quilt",
             Param::QuiltAtlas => "quilt atlas",
             Param::QuiltSize => "quilt size",
+            Param::Window => "window",
             Param::FrameRate => "frame rate",
             Param::BitRate => "bit rate",
             Param::RadiusScale => "radius scale",

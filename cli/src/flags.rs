@@ -36,6 +36,7 @@ pub fn flag_of(param: Param) -> Option<&'static str> {
         Param::FieldOfView => "--fov",
         Param::QuiltSize => "--quilt-size",
         Param::FrameRate => "--fps",
+        Param::Window => "--window",
         Param::BitRate => "--bitrate",
         Param::Aspect
         | Param::Bands

@@ -6,7 +6,7 @@ use anyhow::{bail, Context, Result};
 use autostereo::render::Method;
 use autostereo::volume::load::{RawSpec, SampleType};
 use autostereo::volume::VolumeScene;
-use autostereo::volume::{generate, TransferFunction, Volume};
+use autostereo::volume::{generate, Transfer, TransferFunction, Volume};
 use autostereo::{AnyData, DataKind, LoadOptions, VolumeData, VolumeLoad};
 use glam::Mat4;
 
@@ -53,9 +53,16 @@ pub struct VolumeDataArgs {
     /// Voxels per axis of the built-in data set (4 to 1024) [default: 96].
     #[arg(long, value_parser = clap::value_parser!(u32).range(4..=1024))]
     builtin_size: Option<u32>,
-    /// Transfer function: a preset (ct-skin, ct-bone, mri, ml) or a file of `s r g b a` lines.
-    #[arg(long)]
+    /// Transfer function: a preset (ct-skin, ct-bone, mri, ml; the CT presets are in HU where
+    /// the scan is) or a file of `s r g b a` lines on the normalised scalar, or — after a line
+    /// `units` — `value r g b a` lines in the scan's units (HU for a CT).
+    #[arg(long, conflicts_with = "window")]
     tf: Option<String>,
+    /// A radiologist's window WIDTH,LEVEL in the scan's units (HU for a CT): grey and opacity
+    /// ramp from level − width/2 to level + width/2. Alone: the file's own window (DICOM's
+    /// WindowWidth/WindowCenter).
+    #[arg(long, value_name = "WIDTH,LEVEL", num_args = 0..=1, default_missing_value = "file", value_parser = parse_window)]
+    window: Option<WindowArg>,
     /// Rotate the volume by AX,AY,AZ degrees (about x, then y, then z); negative angles as
     /// they are (`--rotate -90,0,0`).
     #[arg(
@@ -158,9 +165,10 @@ impl VolumeDataArgs {
             };
             let volume = autostereo::resampled(volume, self.downsample)?;
             let mut data = VolumeData::with_preset(volume, preset, self.model())?;
-            if self.tf.is_some() {
-                data.transfer = self.transfer(preset)?;
-                data.preset = None;
+            if let Some(choice) = self.transfer()? {
+                let (transfer, preset) = choice.resolve(&data.volume.values)?;
+                data.transfer = transfer;
+                data.preset = preset;
             }
             return Ok(data);
         };
@@ -211,26 +219,35 @@ impl VolumeDataArgs {
             raw,
             spacing: self.spacing,
             downsample: self.downsample,
-            transfer: match self.tf {
-                Some(_) => Some(self.transfer("")?),
-                None => None,
-            },
+            transfer: self.transfer()?,
             model: self.model(),
         })
     }
 
-    /// The transfer function: --tf, else `default` (a preset name).
-    pub fn transfer(&self, default: &str) -> Result<TransferFunction> {
-        let name = self.tf.as_deref().unwrap_or(default);
+    /// The classification --tf or --window asks for, if either.
+    pub fn transfer(&self) -> Result<Option<Transfer>> {
+        if let Some(window) = self.window {
+            return Ok(Some(Transfer::Window(match window {
+                WindowArg::File => None,
+                WindowArg::Given(w) => Some(w),
+            })));
+        }
+        let Some(name) = self.tf.as_deref() else {
+            return Ok(None);
+        };
         let path = Path::new(name);
         // A name with a path separator or an extension is a file, even when it is missing:
         // "no such file" is the error then, not "unknown preset".
         let looks_like_file =
             name.contains(std::path::MAIN_SEPARATOR) || path.extension().is_some();
         if path.exists() || looks_like_file {
-            Ok(TransferFunction::load(path).with_context(|| format!("--tf {name}"))?)
+            Ok(Some(
+                Transfer::load(path).with_context(|| format!("--tf {name}"))?,
+            ))
         } else {
-            Ok(TransferFunction::preset(name).with_context(|| format!("--tf {name}"))?)
+            // Checked here, before loading: a misspelt preset fails at once.
+            TransferFunction::preset(name).with_context(|| format!("--tf {name}"))?;
+            Ok(Some(Transfer::Preset(name.to_string())))
         }
     }
 
@@ -295,6 +312,7 @@ pub fn run(args: VolumeArgs) -> Result<()> {
             (PathArg::Slices, alpha) => alpha.name(),
         },
         "volume_dims": volume.dims,
+        "values": volume.values,
         "spacing": volume.spacing,
         "step": step,
         "compare_step": plan.compare.then(|| oracle.step_length(&scene)),
@@ -328,10 +346,37 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         extra,
     )?;
     let summary = format!(
-        "{method}: volume {:?}, {}",
+        "{method}: volume {:?}, values {}, {}",
         volume.dims,
+        volume.values.described(),
         run_summary(&ctx, &plan, &frame, &run)
     );
     report(plan.output.json, fields, diff, &summary);
     Ok(())
+}
+
+/// `--window`: the file's own, or WIDTH,LEVEL.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum WindowArg {
+    File,
+    Given([f64; 2]),
+}
+
+fn parse_window(value: &str) -> std::result::Result<WindowArg, String> {
+    if value == "file" {
+        return Ok(WindowArg::File);
+    }
+    let parts: Vec<f64> = value
+        .split(',')
+        .map(|p| p.trim().parse::<f64>())
+        .collect::<std::result::Result<_, _>>()
+        .map_err(|_| format!("'{value}' is not WIDTH,LEVEL (e.g. 400,40 for soft tissue in HU)"))?;
+    match parts[..] {
+        [width, level] if width > 0.0 && width.is_finite() && level.is_finite() => {
+            Ok(WindowArg::Given([width, level]))
+        }
+        _ => Err(format!(
+            "'{value}' is not WIDTH,LEVEL with a positive width (e.g. 400,40 for soft tissue in HU)"
+        )),
+    }
 }

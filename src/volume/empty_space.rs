@@ -367,6 +367,7 @@ mod tests {
             spacing: [1.0; 3],
             data: vec![0.0; 6],
             axes: glam::Mat3::IDENTITY,
+            values: Default::default(),
         };
         assert_eq!(CellRanges::new(&v).grid, [1, 2, 1]);
     }

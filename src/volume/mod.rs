@@ -11,6 +11,7 @@ pub mod orientation;
 pub(crate) mod passes;
 mod scene;
 pub(crate) mod transfer;
+pub mod values;
 
 pub use empty_space::{CellRanges, MAX_DISTANCE};
 pub use options::{AlphaMode, VolumeOptions, VolumePath, VolumeSettings};
@@ -19,7 +20,8 @@ pub use scene::{
     EmptyDistanceTexture, PreintegrationTexture, VolumeScene, VolumeTexture, MAX_EMPTY_STRIDE,
     MAX_SAMPLES_PER_RAY, SUGGESTED_EMPTY_STRIDE, SUGGESTED_SHARE_SAMPLES,
 };
-pub use transfer::{PreintegrationTable, TransferFunction, PRESETS};
+pub use transfer::{PreintegrationTable, Transfer, TransferFunction, PRESETS};
+pub use values::{Modality, Units, Values};
 
 use glam::{Mat3, Vec3};
 
@@ -56,6 +58,9 @@ pub struct Volume {
     /// The identity for files without a patient geometry; from the file's geometry for the
     /// others ([`orientation`], docs/VOLUMES.md "Where a volume is"). Orthonormal.
     pub axes: Mat3,
+    /// What the scalars stand for: the values at 0 and 1 in the scan's units, its modality and
+    /// window ([`values`]); normalised for data given in 0..1.
+    pub values: Values,
 }
 
 /// Peak CPU bytes per voxel from file to GPU upload: the decoded samples (f32), their
@@ -110,6 +115,7 @@ impl Volume {
             spacing,
             data,
             axes: Mat3::IDENTITY,
+            values: Values::NORMALISED,
         };
         volume.validate()?;
         Ok(volume)
@@ -144,8 +150,15 @@ impl Volume {
         Ok(())
     }
 
-    /// A volume from raw samples of any range, mapped linearly from [min, max] to [0, 1]
-    /// (a constant volume maps to 0).
+    /// This volume's scalars standing for `values` ([`Volume::values`]).
+    pub fn with_values(mut self, values: Values) -> Self {
+        self.values = values;
+        self
+    }
+
+    /// A volume from raw samples of any range, mapped linearly from [min, max] (or `range`)
+    /// to [0, 1] (a constant volume maps to 0); its [`Volume::values`] say the range, in the
+    /// file's units.
     pub fn from_samples(
         dims: [u32; 3],
         spacing: [f32; 3],
@@ -171,7 +184,11 @@ impl Volume {
                 }
             })
             .collect();
-        Self::new(dims, spacing, data)
+        Ok(Self::new(dims, spacing, data)?.with_values(Values {
+            range: [lo, hi],
+            units: Units::File,
+            ..Values::NORMALISED
+        }))
     }
 
     /// Scalar at integer voxel (clamped to the volume).
@@ -235,7 +252,11 @@ impl Volume {
                 }
             }
         }
-        Volume::new(dims, self.spacing.map(|s| s * factor as f32), data)?.with_axes(self.axes)
+        Ok(
+            Volume::new(dims, self.spacing.map(|s| s * factor as f32), data)?
+                .with_axes(self.axes)?
+                .with_values(self.values.clone()),
+        )
     }
 
     /// Smallest voxel spacing: the natural sampling distance.

@@ -5,6 +5,7 @@ use std::path::Path;
 
 use crate::error::{Error, Result};
 use crate::param::Param;
+use crate::volume::values::{Units, Values};
 
 /// Piecewise-linear colour and opacity. Opacity is per unit step of one voxel (the smallest
 /// voxel spacing); the pre-integration table rescales it to the actual sampling distance.
@@ -161,6 +162,87 @@ impl TransferFunction {
         Self::new(points)
     }
 
+    /// The normalised function of control points given in a volume's units (`values`): exact,
+    /// as the mapping from values to scalars is linear — the function at the range's ends and
+    /// at every point inside it; points outside the range fall away. Values must be finite
+    /// and ascending, RGBA in 0..1.
+    pub fn in_units(points: &[(f64, [f32; 4])], values: &Values) -> Result<Self> {
+        if points.is_empty() {
+            return Err(Error::invalid(
+                Param::TransferFunction,
+                "needs at least one control point",
+            ));
+        }
+        for (u, c) in points {
+            if !u.is_finite() || c.iter().any(|v| !(0.0..=1.0).contains(v)) {
+                return Err(Error::invalid(
+                    Param::TransferFunction,
+                    format!("point {u} {c:?}: a finite value and RGBA in 0..1"),
+                ));
+            }
+        }
+        if points.windows(2).any(|w| w[1].0 < w[0].0) {
+            return Err(Error::invalid(
+                Param::TransferFunction,
+                "control point values must be in ascending order",
+            ));
+        }
+        let at = |u: f64| -> [f32; 4] {
+            let (first, last) = (points[0], points[points.len() - 1]);
+            if u <= first.0 {
+                return first.1;
+            }
+            if u >= last.0 {
+                return last.1;
+            }
+            let w = points
+                .windows(2)
+                .find(|w| u <= w[1].0)
+                .expect("u inside the points");
+            let ((u0, c0), (u1, c1)) = (w[0], w[1]);
+            let t = if u1 > u0 {
+                ((u - u0) / (u1 - u0)) as f32
+            } else {
+                1.0
+            };
+            [0, 1, 2, 3].map(|i| c0[i] + (c1[i] - c0[i]) * t)
+        };
+        let [lo, hi] = values.range;
+        let mut normalised = vec![(0.0, at(lo))];
+        for &(u, c) in points.iter().filter(|(u, _)| *u > lo && *u < hi) {
+            normalised.push((values.normalise(u), c));
+        }
+        normalised.push((1.0, at(hi)));
+        Self::new(normalised)
+    }
+
+    /// `--window WIDTH,LEVEL` in a volume's units: grey and opacity ramp from 0 at
+    /// level − width/2 to 1 at level + width/2, as a radiologist's window maps values to grey.
+    pub fn window(width: f64, level: f64, values: &Values) -> Result<Self> {
+        if !(width.is_finite() && width > 0.0 && level.is_finite()) {
+            return Err(Error::invalid(
+                Param::Window,
+                format!("width {width}, level {level}: a positive width and a finite level"),
+            ));
+        }
+        let half = width / 2.0;
+        Self::in_units(
+            &[(level - half, [0.0; 4]), (level + half, [1.0; 4])],
+            values,
+        )
+    }
+
+    /// The preset `name` for a volume whose scalars stand for `values`: the CT presets in
+    /// Hounsfield units where the volume is in them (so a scanner's padding outside the field
+    /// of view changes nothing), else every preset on the normalised scalar as
+    /// [`TransferFunction::preset`] defines it.
+    pub fn preset_for(name: &str, values: &Values) -> Result<Self> {
+        match (hounsfield_preset(name), values.units) {
+            (Some(points), Units::Hounsfield) => Self::in_units(&points, values),
+            _ => Self::preset(name),
+        }
+    }
+
     /// RGBA at scalar `s` (clamped at the ends; transparent black without control points).
     pub fn eval(&self, s: f32) -> [f32; 4] {
         let pts = &self.points;
@@ -179,6 +261,118 @@ impl TransferFunction {
         }
         pts[pts.len() - 1].1
     }
+}
+
+/// How a volume is classified: what a user gives, resolved against the loaded volume's values
+/// ([`Transfer::resolve`]) since control points in the scan's units, a window and the CT
+/// presets need its range.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Transfer {
+    /// Control points on the normalised scalar.
+    Normalised(TransferFunction),
+    /// Control points in the scan's units ([`TransferFunction::in_units`]).
+    InUnits(Vec<(f64, [f32; 4])>),
+    /// A preset by name ([`PRESETS`], [`TransferFunction::preset_for`]).
+    Preset(String),
+    /// A window `[width, level]` in the scan's units; `None`: the file's own (DICOM's
+    /// WindowWidth and WindowCenter).
+    Window(Option<[f64; 2]>),
+}
+
+impl Transfer {
+    /// The normalised function for a volume of `values`, and the preset it is, if one.
+    pub fn resolve(&self, values: &Values) -> Result<(TransferFunction, Option<&'static str>)> {
+        Ok(match self {
+            Transfer::Normalised(tf) => (tf.clone(), None),
+            Transfer::InUnits(points) => (TransferFunction::in_units(points, values)?, None),
+            Transfer::Preset(name) => {
+                let known = PRESETS.iter().find(|p| **p == name.as_str()).copied();
+                (TransferFunction::preset_for(name, values)?, known)
+            }
+            Transfer::Window(Some([width, level])) => {
+                (TransferFunction::window(*width, *level, values)?, None)
+            }
+            Transfer::Window(None) => {
+                let [width, level] = values.window.ok_or_else(|| {
+                    Error::invalid(
+                        Param::Window,
+                        "the file has no window of its own (DICOM's WindowWidth and \
+                         WindowCenter): give one, WIDTH,LEVEL in the scan's units",
+                    )
+                })?;
+                (TransferFunction::window(width, level, values)?, None)
+            }
+        })
+    }
+
+    /// A transfer-function file: `s r g b a` lines on the normalised scalar, or — after a line
+    /// `units` — `value r g b a` lines in the scan's units (HU for a CT).
+    pub fn load(path: &Path) -> Result<Self> {
+        let text = crate::file::read_text(path)?;
+        let in_units = text
+            .lines()
+            .map(|l| l.split('#').next().unwrap_or("").trim())
+            .find(|l| !l.is_empty())
+            == Some("units");
+        if !in_units {
+            return Ok(Transfer::Normalised(TransferFunction::load(path)?));
+        }
+        let mut points = Vec::new();
+        let mut header = true;
+        for (n, line) in text.lines().enumerate() {
+            let line = line.split('#').next().unwrap_or("").trim();
+            if line.is_empty() || std::mem::take(&mut header) && line == "units" {
+                continue;
+            }
+            let v: Vec<f64> = line
+                .split_whitespace()
+                .map(str::parse)
+                .collect::<std::result::Result<_, _>>()
+                .ok()
+                .filter(|v: &Vec<f64>| v.len() == 5)
+                .ok_or_else(|| {
+                    Error::invalid(
+                        Param::TransferFunction,
+                        format!(
+                            "{}: line {}: {} is not 5 numbers (value r g b a)",
+                            path.display(),
+                            n + 1,
+                            crate::error::quote(line)
+                        ),
+                    )
+                })?;
+            points.push((v[0], [v[1], v[2], v[3], v[4]].map(|x| x as f32)));
+        }
+        points.sort_by(|a, b| a.0.total_cmp(&b.0));
+        Ok(Transfer::InUnits(points))
+    }
+}
+
+/// The CT presets in Hounsfield units: air (−1000) and a scanner's padding below clear; skin
+/// as a thin translucent surface where air meets tissue (−600…−100, the partial-volume band the
+/// skin's edge passes through) so that bulk soft tissue (0…100) stays clear; contrast-filled
+/// vessels (150…300) red; bone (from 300, cortical 1000 and more) opaque.
+fn hounsfield_preset(name: &str) -> Option<Vec<(f64, [f32; 4])>> {
+    let p = |u: f64, c: [f32; 4]| (u, c);
+    Some(match name {
+        "ct-skin" => vec![
+            p(-1000.0, [0.0; 4]),
+            p(-600.0, [0.9, 0.6, 0.5, 0.0]),
+            p(-350.0, [0.95, 0.72, 0.62, 0.2]),
+            p(-100.0, [0.9, 0.6, 0.5, 0.0]),
+            p(150.0, [0.8, 0.3, 0.3, 0.0]),
+            p(250.0, [0.9, 0.3, 0.2, 0.5]),
+            p(400.0, [1.0, 1.0, 0.95, 0.3]),
+            p(1200.0, [1.0, 1.0, 0.95, 0.9]),
+        ],
+        "ct-bone" => vec![
+            p(-1000.0, [0.0; 4]),
+            p(150.0, [0.8, 0.7, 0.6, 0.0]),
+            p(400.0, [0.95, 0.9, 0.8, 0.6]),
+            p(1500.0, [1.0, 1.0, 1.0, 0.95]),
+        ],
+        _ => return None,
+    })
 }
 
 /// Entries per axis of the pre-integration table.

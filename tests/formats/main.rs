@@ -6,6 +6,7 @@
 mod common;
 
 mod bad_input;
+mod ct_windows;
 mod every_format;
 mod fuzz_regressions;
 mod gaussians_formats;

@@ -7,6 +7,7 @@ use crate::common;
 
 mod images;
 mod kinds;
+mod windows;
 
 use std::path::{Path, PathBuf};
 

@@ -21,7 +21,7 @@ mod scan;
 use super::{data_bytes, decode, format_error, to_volume, SampleType};
 use crate::error::Result;
 use crate::volume::orientation::{screen_axes_from_ras, LPS_TO_RAS};
-use crate::volume::Volume;
+use crate::volume::{Modality, Units, Values, Volume};
 
 /// Files looked at in one folder (a guard; a CT series has hundreds, rarely thousands).
 const MAX_FILES: usize = 20_000;
@@ -111,6 +111,10 @@ struct Slice {
     big_endian: bool,
     pixels: Vec<u8>,
     rescale: [f64; 2],
+    /// Modality (0008,0060), e.g. `CT`, `MR`.
+    modality: Option<String>,
+    /// WindowWidth and WindowCenter (their first values), in the rescaled units.
+    window: Option<[f64; 2]>,
 }
 
 fn is_dicom(path: &Path) -> bool {
@@ -260,6 +264,18 @@ fn slice_of(obj: DefaultDicomObject, path: &Path) -> Result<Slice> {
             .and_then(|v| v.first().copied())
             .unwrap_or(0.0),
     ];
+    let first = |tag: Tag| {
+        floats(tag)
+            .and_then(|v| v.first().copied())
+            .filter(|v| v.is_finite())
+    };
+    let window = match (first(tags::WINDOW_WIDTH), first(tags::WINDOW_CENTER)) {
+        (Some(width), Some(level)) if width > 0.0 => Some([width, level]),
+        _ => None,
+    };
+    let modality = text(tags::MODALITY, "Modality")
+        .ok()
+        .filter(|m| !m.is_empty());
     let expected = super::data_bytes([size[0], size[1], frames].map(u64::from), kind)
         .map_err(|e| err(e.to_string()))?;
     let pixels = obj
@@ -289,6 +305,8 @@ fn slice_of(obj: DefaultDicomObject, path: &Path) -> Result<Slice> {
         big_endian,
         pixels: pixels[..expected as usize].to_vec(),
         rescale,
+        modality,
+        window,
     })
 }
 
@@ -375,10 +393,30 @@ fn stack(path: &Path, mut slices: Vec<Slice>) -> Result<Volume> {
                 .map(|&v| (f64::from(v) * slope + intercept) as f32),
         );
     }
+    // The series' modality and window (its first slice's); a CT's rescaled values are
+    // Hounsfield units.
+    let modality = match slices[0].modality.as_deref() {
+        Some("CT") => Some(Modality::Ct),
+        Some("MR") => Some(Modality::Mr),
+        Some(_) => Some(Modality::Other),
+        None => None,
+    };
+    let window = slices[0].window;
     drop(slices);
-    // Rescaled values (Hounsfield units) are normalised by their range (VOLUMES.md "Data").
+    // Rescaled values are normalised by their range (VOLUMES.md "Data"); the volume's
+    // `values` keep that range, so windows and presets are given in the scan's units.
     let spacing = [pixel_spacing[1] as f32, pixel_spacing[0] as f32, gap as f32];
     let volume = to_volume(path, dims, spacing, samples, SampleType::F32)?;
+    let values = Values {
+        units: match modality {
+            Some(Modality::Ct) => Units::Hounsfield,
+            _ => Units::File,
+        },
+        modality,
+        window,
+        ..volume.values.clone()
+    };
+    let volume = volume.with_values(values);
     let ras = |d: DVec3| LPS_TO_RAS * d.as_vec3();
     let axes = Mat3::from_cols(ras(orientation[0]), ras(orientation[1]), ras(normal));
     volume.with_axes(screen_axes_from_ras(axes).map_err(|e| err(e.to_string()))?)

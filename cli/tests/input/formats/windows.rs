@@ -1,0 +1,95 @@
+//! A volume's values in its own units on the command line: the summary and `--json` say the
+//! range; `--window WIDTH,LEVEL` is the same window as a `--tf` of normalised points and as a
+//! `--tf` file whose points are in the scan's units (a `units` line first).
+
+use super::*;
+
+/// A 24³ NRRD of floats: −3024 outside a sphere's field of view, −1000 air, 40 tissue, 1000
+/// bone shell (a CT's values; NRRD carries no units, so they are the file's own).
+fn ct_nrrd() -> PathBuf {
+    let n = 24usize;
+    let mut bytes = format!(
+        "NRRD0004\ntype: float\ndimension: 3\nsizes: {n} {n} {n}\nendian: little\nencoding: raw\n\n"
+    )
+    .into_bytes();
+    for i in 0..n * n * n {
+        let c = |v: usize| v as f32 + 0.5 - n as f32 / 2.0;
+        let (x, y, z) = (c(i % n), c(i / n % n), c(i / (n * n)));
+        let r = (x * x + y * y + z * z).sqrt();
+        let hu: f32 = match () {
+            _ if (x * x + y * y).sqrt() > 11.5 => -3024.0,
+            _ if r < 6.0 => 40.0,
+            _ if r < 8.0 => 1000.0,
+            _ => -1000.0,
+        };
+        bytes.extend_from_slice(&hu.to_le_bytes());
+    }
+    write("ct.nrrd", &bytes)
+}
+
+fn render(file: &Path, flags: &[&str], name: &str) -> (RgbImage, serde_json::Value) {
+    let png = out(name);
+    let mut args = vec![
+        "volume",
+        s(file),
+        "--size",
+        "64x48",
+        "--json",
+        "--out",
+        s(&png),
+    ];
+    args.extend_from_slice(flags);
+    let (ok, stdout, stderr) = common::cli_out(&args);
+    assert!(ok, "{args:?}: {stderr}");
+    let json = serde_json::from_str(&stdout).unwrap();
+    (RgbImage::load_png(&png).unwrap(), json)
+}
+
+#[test]
+fn a_window_in_the_scans_units_is_that_window_as_a_transfer_function() {
+    let file = ct_nrrd();
+    let (windowed, json) = render(&file, &["--window", "400,40"], "window.png");
+    assert_eq!(
+        json["values"]["range"],
+        serde_json::json!([-3024.0, 1000.0]),
+        "{json}"
+    );
+    assert_eq!(json["values"]["units"], "File");
+    let norm = |v: f64| (v + 3024.0) / 4024.0;
+    let tf = write(
+        "window_tf.txt",
+        format!("{} 0 0 0 0\n{} 1 1 1 1\n", norm(-160.0), norm(240.0)).as_bytes(),
+    );
+    let (normalised, _) = render(&file, &["--tf", s(&tf)], "window_tf.png");
+    let units = write("window_units.txt", b"units\n-160 0 0 0 0\n240 1 1 1 1\n");
+    let (in_units, _) = render(&file, &["--tf", s(&units)], "window_units.png");
+    let diff = compare(&windowed, &normalised).unwrap();
+    assert!(
+        diff.max_abs_err <= 1,
+        "--window vs the normalised --tf: {diff:?}"
+    );
+    assert_eq!(
+        windowed.data, in_units.data,
+        "--window vs the --tf in units"
+    );
+    let lit = windowed
+        .data
+        .chunks(3)
+        .filter(|p| p != &&windowed.data[..3])
+        .count();
+    assert!(lit > 200, "the window shows the sphere ({lit} pixels)");
+    // The summary says the range.
+    let png = out("window_summary.png");
+    let (ok, _, stderr) =
+        common::cli_out(&["volume", s(&file), "--size", "32x24", "--out", s(&png)]);
+    assert!(ok && stderr.contains("values -3024…1000"), "{stderr}");
+    // A file without a window of its own, and a window of no width, are refused by flag.
+    let (ok, _, stderr) = common::cli_out(&["volume", s(&file), "--window", "--out", s(&png)]);
+    assert!(
+        !ok && stderr.contains("--window") && stderr.contains("no window of its own"),
+        "{stderr}"
+    );
+    let (ok, _, stderr) =
+        common::cli_out(&["volume", s(&file), "--window", "0,40", "--out", s(&png)]);
+    assert!(!ok && stderr.contains("--window"), "{stderr}");
+}
