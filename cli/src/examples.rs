@@ -21,8 +21,11 @@ pub const POINTS: &str = "Examples:
 pub const VOLUME: &str = "Examples:
   autostereo volume --out head.png
       the built-in CT head
-  autostereo volume series/ --tf ct-bone --rotate -90,0,0 --out ct.png
-      a DICOM folder (also .nrrd, .nii.gz, .mha/.mhd, .vti, .vtk)
+  autostereo volume series/ --tf ct-bone --out ct.png
+      a DICOM folder (also .nrrd, .nii.gz, .mha/.mhd, .vti, .vtk), the patient upright,
+      face to the viewer
+  autostereo volume series/ --window 400,40 --out soft.png
+      a radiologist's window in HU (--window alone: the file's own)
   autostereo volume brain.nii.gz --display lkg --output views --out views/brain.png
       every view as views/brain_00.png, views/brain_01.png, …
   autostereo volume --path slices --alpha paper --out head_slices.png

@@ -317,3 +317,58 @@ fn an_element_claiming_gigabytes_is_refused_before_it_is_read() {
         "{e}"
     );
 }
+
+/// One file names its series: a copy of the same series in another transfer syntax beside it
+/// (as archives keep them) is skipped, not an error about the other file; a DICOMDIR is named
+/// as such, not "no Rows"; the series' modality and units are kept.
+#[test]
+fn a_file_names_its_series_and_a_dicomdir_is_named() {
+    let d = dir("copies");
+    series(&d, "1.2.3.300");
+    for k in 0..SLICES {
+        write_slice(
+            &d.join(format!("copy_{k}.dcm")),
+            &SliceSpec {
+                series: "1.2.3.300",
+                position_z: -50.0 + SLICE_GAP * k as f64,
+                frames: 1,
+                pixels: stored(k),
+                intercept: -1024.0 + 10.0 * k as f64,
+                transfer_syntax: "1.2.840.10008.1.2",
+            },
+        );
+    }
+    let named = load_any(&d.join("a.dcm")).unwrap();
+    assert_eq!(
+        named.dims[2], SLICES as u32,
+        "the named file's copy of the series only"
+    );
+    assert_eq!(named.values.units, autostereo::volume::Units::Hounsfield);
+    assert_eq!(
+        named.values.modality,
+        Some(autostereo::volume::Modality::Ct)
+    );
+    // A DICOMDIR as media writers make it: the meta group of the Media Storage Directory class
+    // (its directory records do not matter here: it has no Rows, no pixels).
+    let dicomdir = d.join("DICOMDIR");
+    let mut index = InMemDicomObject::new_empty();
+    index.put(DataElement::new(
+        tags::FILE_SET_ID,
+        VR::CS,
+        PrimitiveValue::from("ARCHIVE"),
+    ));
+    let meta = FileMetaTableBuilder::new()
+        .transfer_syntax(EXPLICIT_LE)
+        .media_storage_sop_class_uid("1.2.840.10008.1.3.10")
+        .media_storage_sop_instance_uid("1.2.3.300.9");
+    index
+        .with_meta(meta)
+        .unwrap()
+        .write_to_file(&dicomdir)
+        .unwrap();
+    let error = load_any(&dicomdir).unwrap_err().to_string();
+    assert!(
+        error.contains("a DICOMDIR") && error.contains("give the folder"),
+        "{error}"
+    );
+}

@@ -37,13 +37,23 @@ pub fn load_dicom(path: &Path) -> Result<Volume> {
         (path.to_path_buf(), None)
     } else {
         crate::file::check_regular(path)?;
+        if is_dicomdir(path) {
+            return Err(err(
+                "a DICOMDIR: the index of a medium's files, no pixels of its own; give the \
+                 folder of one series, or one of its slice files"
+                    .into(),
+            ));
+        }
         let slice = read_slice(path)?;
         // A bare file name's folder is the working directory.
         let dir = match path.parent() {
             Some(p) if !p.as_os_str().is_empty() => p,
             _ => Path::new("."),
         };
-        (dir.to_path_buf(), Some(slice.series.clone()))
+        (
+            dir.to_path_buf(),
+            Some((slice.series.clone(), syntax_of(path))),
+        )
     };
     let mut series: BTreeMap<String, Vec<Slice>> = BTreeMap::new();
     let mut names: Vec<PathBuf> = std::fs::read_dir(&dir)
@@ -66,8 +76,19 @@ pub fn load_dicom(path: &Path) -> Result<Volume> {
             || format!("DICOM files of {budget} bytes"),
             budget.saturating_mul(3),
         )?;
-        if wanted.is_some() && series_of(&file) != wanted {
-            continue; // another series beside the file given
+        if let Some((series, syntax)) = &wanted {
+            if series_of(&file).as_ref() != Some(series) {
+                continue; // another series beside the file given
+            }
+            if syntax_of(&file) != *syntax {
+                // A copy of the series in another transfer syntax (the same slices again).
+                log::info!(
+                    "{}: skipped, the series in another transfer syntax than {}",
+                    file.display(),
+                    path.display()
+                );
+                continue;
+            }
         }
         let slice = match read_slice(&file) {
             Ok(slice) => slice,
@@ -130,6 +151,31 @@ fn series_of(path: &Path) -> Option<String> {
     let obj = open(path, false).ok()?;
     let uid = obj.element(tags::SERIES_INSTANCE_UID).ok()?.to_str().ok()?;
     Some(uid.trim().to_string())
+}
+
+/// The transfer syntax a file's meta group names (its header only).
+fn syntax_of(path: &Path) -> Option<String> {
+    let obj = open(path, false).ok()?;
+    Some(
+        obj.meta()
+            .transfer_syntax()
+            .trim_end_matches('\0')
+            .to_string(),
+    )
+}
+
+/// Whether `path` is a DICOMDIR (its name, or its media storage class 1.2.840.10008.1.3.10).
+fn is_dicomdir(path: &Path) -> bool {
+    let named = path
+        .file_name()
+        .is_some_and(|n| n.eq_ignore_ascii_case("DICOMDIR"));
+    named
+        || open(path, false).is_ok_and(|o| {
+            o.meta()
+                .media_storage_sop_class_uid()
+                .trim_end_matches('\0')
+                == "1.2.840.10008.1.3.10"
+        })
 }
 
 fn has_pixels(path: &Path) -> bool {
@@ -402,6 +448,13 @@ fn stack(path: &Path, mut slices: Vec<Slice>) -> Result<Volume> {
         None => None,
     };
     let window = slices[0].window;
+    if depth <= 2 {
+        log::warn!(
+            "{}: a series of {depth} slice(s) is {depth} voxel(s) thick: it renders as a thin \
+             slab, not a volume",
+            path.display()
+        );
+    }
     drop(slices);
     // Rescaled values are normalised by their range (VOLUMES.md "Data"); the volume's
     // `values` keep that range, so windows and presets are given in the scan's units.
