@@ -187,6 +187,15 @@ pub(super) fn parse_mtl(
                     None => return Err(fail(i + 1, "Kd before any newmtl".into())),
                 }
             }
+            Some("map_Kd") => {
+                let material = materials.last().map_or("(none)", |m| m.name.as_str());
+                log::warn!(
+                    "{}: material {material}'s texture {} is not shown (the renderers draw \
+                     vertex and material colours only; its Kd colour is used)",
+                    path.display(),
+                    words.collect::<Vec<_>>().join(" ")
+                );
+            }
             _ => {}
         }
     }

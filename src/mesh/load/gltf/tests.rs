@@ -70,3 +70,29 @@ fn hostile_documents_are_refused_by_name() {
         assert!(e.contains(expected), "'{e}' lacks '{expected}'");
     }
 }
+
+/// glTF 1.0 and required extensions are named (before: a serde message, and "accessor 0:
+/// sparse accessors are not read" for a Draco file).
+#[test]
+fn gltf_1_and_required_extensions_are_named() {
+    let path = std::path::Path::new("old.gltf");
+    let v1 = r#"{"asset": {"version": "1.0"}, "meshes": {"m": {"primitives": []}}}"#;
+    let error = parse(v1.as_bytes(), path, None).unwrap_err().to_string();
+    assert!(
+        error.contains("glTF 1.0") && error.contains("only glTF 2.0"),
+        "{error}"
+    );
+    let draco = r#"{"asset": {"version": "2.0"}, "extensionsUsed": ["KHR_draco_mesh_compression"],
+        "extensionsRequired": ["KHR_draco_mesh_compression"], "meshes": [], "accessors": []}"#;
+    let error = parse(draco.as_bytes(), path, None).unwrap_err().to_string();
+    assert!(
+        error.contains("requires KHR_draco_mesh_compression") && error.contains("gltf-transform"),
+        "{error}"
+    );
+    let other = r#"{"asset": {"version": "2.0"}, "extensionsRequired": ["EXT_unheard_of"]}"#;
+    let error = parse(other.as_bytes(), path, None).unwrap_err().to_string();
+    assert!(
+        error.contains("requires EXT_unheard_of (this reader does not decode it)"),
+        "{error}"
+    );
+}
