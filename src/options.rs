@@ -97,6 +97,22 @@ impl RendererOptions {
     /// The volume renderer these options describe.
     pub fn volume_renderer(&self, device: &wgpu::Device) -> Result<Box<dyn Renderer<VolumeScene>>> {
         let settings = self.volume.settings;
+        if settings.projection != crate::volume::Projection::Composite {
+            let refused = match (self.volume.path, self.method) {
+                (VolumePath::Slices(_), _) => Some("the paper's proxy slices composite"),
+                (_, Method::Warp) => Some("the warp's references need a depth to warp by"),
+                _ => None,
+            };
+            if let Some(why) = refused {
+                return Err(Error::invalid(
+                    Param::Projection,
+                    format!(
+                        "{}: ray marching only ({why}); every other method projects",
+                        settings.projection.name()
+                    ),
+                ));
+            }
+        }
         if let VolumePath::Slices(alpha) = self.volume.path {
             if self.method != Method::SinglePass {
                 return Err(Error::invalid(

@@ -69,6 +69,8 @@ pub enum Param {
     QuiltSize,
     /// A volume's display window (width, level).
     Window,
+    /// What a volume ray shows (compositing or a projection).
+    Projection,
     /// A video's frames per second.
     FrameRate,
     /// A video's bit rate.
@@ -145,7 +147,7 @@ pub enum Param {
 
 impl Param {
     /// Every parameter.
-    pub const ALL: [Param; 68] = [
+    pub const ALL: [Param; 69] = [
         Param::Aspect,
         Param::Bands,
         Param::Camera,
@@ -178,6 +180,7 @@ impl Param {
         Param::QuiltAtlas,
         Param::QuiltSize,
         Param::Window,
+        Param::Projection,
         Param::FrameRate,
         Param::BitRate,
         Param::RadiusScale,
@@ -251,6 +254,7 @@ impl Param {
             Param::QuiltAtlas => "quilt atlas",
             Param::QuiltSize => "quilt size",
             Param::Window => "window",
+            Param::Projection => "projection",
             Param::FrameRate => "frame rate",
             Param::BitRate => "bit rate",
             Param::RadiusScale => "radius scale",

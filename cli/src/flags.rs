@@ -37,6 +37,7 @@ pub fn flag_of(param: Param) -> Option<&'static str> {
         Param::QuiltSize => "--quilt-size",
         Param::FrameRate => "--fps",
         Param::Window => "--window",
+        Param::Projection => "--projection",
         Param::BitRate => "--bitrate",
         Param::Aspect
         | Param::Bands

@@ -311,6 +311,7 @@ pub fn run(args: VolumeArgs) -> Result<()> {
             (PathArg::Compute, _) => "exact",
             (PathArg::Slices, alpha) => alpha.name(),
         },
+        "projection": settings.projection.name(),
         "volume_dims": volume.dims,
         "values": volume.values,
         "spacing": volume.spacing,

@@ -18,6 +18,11 @@ pub enum PathArg {
 /// How a volume is rendered: the flags `volume` and `view` share.
 #[derive(clap::Args, Clone, Debug, PartialEq)]
 pub struct VolumeRenderArgs {
+    /// What a ray shows: composite (direct volume rendering), mip (maximum intensity), minip
+    /// (minimum intensity) or average, each through the transfer function's colour (e.g.
+    /// --projection mip --window 600,300 for contrast-filled vessels in HU).
+    #[arg(long, value_enum, default_value = "composite")]
+    pub(crate) projection: autostereo::volume::Projection,
     /// Single-pass path.
     #[arg(long, value_enum, default_value = "compute")]
     pub(crate) path: PathArg,
@@ -140,6 +145,7 @@ impl VolumeRenderArgs {
             share_samples: self.share_samples,
             empty_stride: self.empty_stride,
             thin_alpha: self.thin_alpha,
+            projection: self.projection,
         };
         let path = match (self.path, self.alpha) {
             (PathArg::Compute, _) => VolumePath::RayMarch,

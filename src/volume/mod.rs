@@ -14,7 +14,7 @@ pub(crate) mod transfer;
 pub mod values;
 
 pub use empty_space::{CellRanges, MAX_DISTANCE};
-pub use options::{AlphaMode, VolumeOptions, VolumePath, VolumeSettings};
+pub use options::{AlphaMode, Projection, VolumeOptions, VolumePath, VolumeSettings};
 pub use passes::{VolumeRaycaster, VolumeSlicer};
 pub use scene::{
     EmptyDistanceTexture, PreintegrationTexture, VolumeScene, VolumeTexture, MAX_EMPTY_STRIDE,

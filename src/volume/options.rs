@@ -54,6 +54,49 @@ pub struct VolumeSettings {
     /// `empty_stride` steps long (opacity `1 − (1 − α)^P`, colour alike). 0: only transparent
     /// material.
     pub thin_alpha: f32,
+    /// What a ray shows: the composited classification (direct volume rendering), or a
+    /// projection of its scalars (MIP, MinIP, the mean), each through the transfer function's
+    /// colour. Ray marching only (every method but the warp).
+    pub projection: Projection,
+}
+
+/// What a volume ray shows.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+pub enum Projection {
+    /// Front-to-back compositing of the classified, shaded samples (direct volume rendering).
+    #[default]
+    Composite,
+    /// Maximum intensity projection: the largest scalar on the ray.
+    #[cfg_attr(feature = "clap", value(name = "mip"))]
+    Maximum,
+    /// Minimum intensity projection: the smallest scalar on the ray (airways, vessels in MR).
+    #[cfg_attr(feature = "clap", value(name = "minip"))]
+    Minimum,
+    /// The mean scalar along the ray (a radiograph-like summation).
+    Average,
+}
+
+impl Projection {
+    /// Lower-case name (CLI, reports).
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Composite => "composite",
+            Self::Maximum => "mip",
+            Self::Minimum => "minip",
+            Self::Average => "average",
+        }
+    }
+
+    /// The shader's number for it (`PROJECTION` in wgsl/volume/shared/march.wgsl).
+    pub(crate) fn code(self) -> u32 {
+        match self {
+            Self::Composite => 0,
+            Self::Maximum => 1,
+            Self::Minimum => 2,
+            Self::Average => 3,
+        }
+    }
 }
 
 impl Default for VolumeSettings {
@@ -65,6 +108,7 @@ impl Default for VolumeSettings {
             share_samples: 0.0,
             empty_stride: 1,
             thin_alpha: 0.0,
+            projection: Projection::Composite,
         }
     }
 }

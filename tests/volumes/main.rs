@@ -5,5 +5,6 @@
 mod common;
 
 mod duplication;
+mod projections;
 mod share_samples;
 mod volume;

@@ -176,6 +176,7 @@ impl VolumeRaycaster {
             }
             extra.push(("EMPTY_STRIDE", f64::from(key.empty_stride)));
             extra.push(("THIN_ALPHA", f64::from(f32::from_bits(key.thin_alpha_bits))));
+            extra.push(("PROJECTION", f64::from(key.projection)));
             let constants = key.spec.constants(&extra);
             Ok(
                 device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
@@ -228,6 +229,8 @@ struct RaycastPipelineKey {
     empty_stride: u32,
     /// Thin-material threshold of the probes (`f32::to_bits`: a key must hash).
     thin_alpha_bits: u32,
+    /// `Projection::code` (0: compositing).
+    projection: u32,
 }
 
 impl From<PreparedFor> for RaycastPipelineKey {
@@ -238,6 +241,7 @@ impl From<PreparedFor> for RaycastPipelineKey {
             share_samples: prepared.share_samples,
             empty_stride: prepared.empty_stride,
             thin_alpha_bits: prepared.thin_alpha_bits,
+            projection: prepared.projection,
         }
     }
 }

@@ -30,6 +30,35 @@ override EMPTY_STRIDE: u32 = 1u;
 // one segment P steps long (opacity 1 − (1 − α)^P, colour scaled alike: exact where the scalar
 // changes linearly over the P steps and the colour is constant), and probing goes on after it. 0: only transparent material.
 override THIN_ALPHA: f32 = 0.0;
+// What a ray shows (`Projection::code`, src/volume/options.rs): 0 the composited
+// classification; 1 the maximum, 2 the minimum, 3 the mean scalar over the ray's samples,
+// through the transfer function's colour at that scalar, opaque within the box (a projection
+// has no depth order, so nothing to skip or probe: SKIP_EMPTY and EMPTY_STRIDE are off then).
+override PROJECTION: u32 = 0u;
+
+// The projection (PROJECTION ≠ 0) of the scalars on sample planes k0 … k0 + count of the ray
+// o + u·d (texture space): the samples the compositing march takes.
+fn project(o: vec3<f32>, d: vec3<f32>, k0: f32, count: u32) -> vec4<f32> {
+    var m = sample_plane(o, d, k0).a;
+    var sum = m;
+    for (var i = 1u; i <= count; i++) {
+        let s = sample_plane(o, d, k0 + f32(i)).a;
+        if (PROJECTION == 1u) {
+            m = max(m, s);
+        } else if (PROJECTION == 2u) {
+            m = min(m, s);
+        }
+        sum += s;
+    }
+    if (PROJECTION == 3u) {
+        m = sum / f32(count + 1u);
+    }
+    // The pre-integrated segment of constant scalar m: premultiplied colour over its opacity
+    // is the transfer function's colour at m (black where it is transparent).
+    let c = textureSampleLevel(preintegration, linear_clamp, vec2<f32>(table_coord(m), table_coord(m)), 0.0);
+    let rgb = select(vec3<f32>(0.0), c.rgb / max(c.a, 1e-6), c.a > 0.0);
+    return vec4<f32>(min(rgb, vec3<f32>(1.0)), 1.0);
+}
 
 // A warp's reference views (volume/raycast_reference.wgsl, src/warp) need one representative
 // depth per ray: the eye depth where the accumulated opacity crosses ½ (interpolated within
@@ -165,6 +194,9 @@ fn march_planes(origin: vec3<f32>, dir: vec3<f32>, planes: vec2<f32>, opaque: f3
     let k0 = max(ceil(d_in / params.step), planes.x);
     let k1 = min(floor(d_out / params.step), planes.y);
     let count = min(u32(max(k1 - k0, 0.0)), params.max_samples);
+    if (PROJECTION != 0u) {
+        return project(o, d, k0, count);
+    }
     var front = sample_plane(o, d, k0);
     var acc = vec4<f32>(0.0);
     if (!SKIP_EMPTY) {

@@ -21,6 +21,9 @@ pub(crate) struct PreparedFor {
     pub empty_stride: u32,
     /// Thin-material threshold of the probes (`VolumeSettings::thin_alpha`, as bits).
     pub thin_alpha_bits: u32,
+    /// `Projection::code`: 0 composites; a projection samples every plane (no skipping,
+    /// sharing or probes: transparency means nothing to it).
+    pub projection: u32,
     pub size: [u32; 2],
     pub views: u32,
 }
@@ -28,14 +31,21 @@ pub(crate) struct PreparedFor {
 impl PreparedFor {
     pub fn of(settings: &VolumeSettings, frame: &Frame, method: Method) -> Self {
         let spec = Specialization::of(frame);
+        let composite = settings.projection == crate::volume::Projection::Composite;
         Self {
             spec,
-            skip_empty: settings.skip_empty,
+            skip_empty: settings.skip_empty && composite,
             share_samples: method == Method::SinglePass
                 && spec.views_per_pixel == 3
-                && settings.share_samples > 0.0,
-            empty_stride: settings.empty_stride,
-            thin_alpha_bits: settings.thin_alpha.to_bits(),
+                && settings.share_samples > 0.0
+                && composite,
+            empty_stride: if composite { settings.empty_stride } else { 1 },
+            thin_alpha_bits: if composite {
+                settings.thin_alpha.to_bits()
+            } else {
+                0
+            },
+            projection: settings.projection.code(),
             size: frame.size,
             views: frame.camera.views,
         }
@@ -49,6 +59,7 @@ impl PreparedFor {
             share_samples: false,
             empty_stride: 1,
             thin_alpha_bits: 0,
+            projection: 0,
             ..Self::of(settings, frame, Method::SinglePass)
         }
     }
