@@ -285,8 +285,10 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     let scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, transfer, model)?;
     // The settings are checked where the renderer is built (src/volume/options.rs, the
     // renderers' constructors); cli/src/flags.rs names the flags in their errors.
+    let mut volume_options = args.render.options(step);
+    volume_options.settings.isovalue = args.render.isovalue(&volume.values)?;
     let options = RendererOptions {
-        volume: args.render.options(step),
+        volume: volume_options,
         ..plan.options
     };
     let settings = options.volume.settings;

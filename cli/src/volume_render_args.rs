@@ -23,6 +23,10 @@ pub struct VolumeRenderArgs {
     /// --projection mip --window 600,300 for contrast-filled vessels in HU).
     #[arg(long, value_enum, default_value = "composite")]
     pub(crate) projection: autostereo::volume::Projection,
+    /// With --projection iso: the surface's value in the scan's units (HU for a CT: e.g. 300
+    /// for bone, -500 for the skin).
+    #[arg(long, value_name = "VALUE", allow_hyphen_values = true)]
+    pub(crate) iso: Option<f64>,
     /// Single-pass path.
     #[arg(long, value_enum, default_value = "compute")]
     pub(crate) path: PathArg,
@@ -136,6 +140,29 @@ impl VolumeRenderArgs {
         }
     }
 
+    /// `--iso` as the normalised scalar of a volume of `values`, checked against its range.
+    pub fn isovalue(&self, values: &autostereo::volume::Values) -> Result<f32> {
+        use autostereo::volume::Projection;
+        match (self.projection, self.iso) {
+            (Projection::Isosurface, None) => bail!(
+                "--projection iso needs --iso VALUE (in the scan's units; its values are {})",
+                values.described()
+            ),
+            (Projection::Isosurface, Some(v)) => {
+                let [lo, hi] = values.range;
+                if !(lo..=hi).contains(&v) {
+                    bail!(
+                        "--iso {v}: outside the scan's values {}",
+                        values.described()
+                    );
+                }
+                Ok(values.normalise(v))
+            }
+            (_, Some(_)) => bail!("--iso sets the surface of --projection iso"),
+            (_, None) => Ok(0.5),
+        }
+    }
+
     /// The volume options the flags say, `step` from [`Self::step`].
     pub fn options(&self, step: Option<f32>) -> VolumeOptions {
         let settings = VolumeSettings {
@@ -146,6 +173,7 @@ impl VolumeRenderArgs {
             empty_stride: self.empty_stride,
             thin_alpha: self.thin_alpha,
             projection: self.projection,
+            isovalue: 0.5,
         };
         let path = match (self.path, self.alpha) {
             (PathArg::Compute, _) => VolumePath::RayMarch,

@@ -58,6 +58,8 @@ pub struct VolumeSettings {
     /// projection of its scalars (MIP, MinIP, the mean), each through the transfer function's
     /// colour. Ray marching only (every method but the warp).
     pub projection: Projection,
+    /// The normalised scalar of [`Projection::Isosurface`]'s surface (in 0..1).
+    pub isovalue: f32,
 }
 
 /// What a volume ray shows.
@@ -75,6 +77,11 @@ pub enum Projection {
     Minimum,
     /// The mean scalar along the ray (a radiograph-like summation).
     Average,
+    /// The first place the ray reaches `VolumeSettings::isovalue`, lit (Blinn-Phong from the
+    /// gradient there), in the transfer function's colour at that value (white where it is
+    /// transparent).
+    #[cfg_attr(feature = "clap", value(name = "iso"))]
+    Isosurface,
 }
 
 impl Projection {
@@ -85,6 +92,7 @@ impl Projection {
             Self::Maximum => "mip",
             Self::Minimum => "minip",
             Self::Average => "average",
+            Self::Isosurface => "iso",
         }
     }
 
@@ -95,6 +103,7 @@ impl Projection {
             Self::Maximum => 1,
             Self::Minimum => 2,
             Self::Average => 3,
+            Self::Isosurface => 4,
         }
     }
 }
@@ -109,6 +118,7 @@ impl Default for VolumeSettings {
             empty_stride: 1,
             thin_alpha: 0.0,
             projection: Projection::Composite,
+            isovalue: 0.5,
         }
     }
 }

@@ -326,6 +326,15 @@ impl VolumeSettings {
 
     /// Check the values that need no scene (renderer construction).
     pub fn validate(&self) -> Result<()> {
+        if !(self.isovalue.is_finite() && (0.0..=1.0).contains(&self.isovalue)) {
+            return Err(Error::invalid(
+                Param::Projection,
+                format!(
+                    "isovalue {}: a normalised scalar in 0..1 (the scan's range maps to it)",
+                    self.isovalue
+                ),
+            ));
+        }
         if let Some(step) = self.step {
             if !(step.is_finite() && step > 0.0) {
                 return Err(Error::invalid(

@@ -36,12 +36,25 @@ fn render(
     projection: Projection,
     spec: &str,
 ) -> autostereo::image_io::RgbImage {
+    render_at(scene, method, projection, 0.5, spec)
+}
+
+/// One frame of `scene` (a 32³ box) by `method`, projecting with `isovalue` for the
+/// isosurface.
+fn render_at(
+    scene: &VolumeScene,
+    method: Method,
+    projection: Projection,
+    isovalue: f32,
+    spec: &str,
+) -> autostereo::image_io::RgbImage {
     let ctx = common::gpu();
     let options = RendererOptions {
         method,
         volume: VolumeOptions {
             settings: VolumeSettings {
                 projection,
+                isovalue,
                 ..Default::default()
             },
             ..Default::default()
@@ -155,4 +168,43 @@ fn the_slices_path_and_the_warp_refuse_a_projection_by_name() {
             "{error}"
         );
     }
+}
+
+/// The isosurface of a radial ramp (1 at the centre to 0 at 14 voxels) is a sphere of radius
+/// 14·(1 − value): lit where the rays meet it, background elsewhere, its area growing as the
+/// value falls as the sphere's does (radius 11.2 at 0.2 against 7 at 0.5: about 2.6×).
+#[test]
+fn an_isosurface_is_the_sphere_of_its_value() {
+    let c = |v: u32| v as f32 + 0.5 - N as f32 / 2.0;
+    let mut data = Vec::new();
+    for z in 0..N {
+        for y in 0..N {
+            for x in 0..N {
+                let r = (c(x) * c(x) + c(y) * c(y) + c(z) * c(z)).sqrt();
+                data.push((1.0 - r / 14.0).clamp(0.0, 1.0));
+            }
+        }
+    }
+    let ramp = scene(&Volume::new([N; 3], [1.0; 3], data).unwrap());
+    let lit = |value: f32| {
+        let image = render_at(
+            &ramp,
+            Method::SinglePass,
+            Projection::Isosurface,
+            value,
+            "view:8,4",
+        );
+        let background = image.get(0, 0, 0);
+        assert!(
+            image.get(32, 32, 0) != background,
+            "the centre ray meets the surface"
+        );
+        (0..64 * 64)
+            .filter(|i| image.get(i % 64, i / 64, 0) != background)
+            .count() as f64
+    };
+    let (small, large) = (lit(0.5), lit(0.2));
+    let ratio = large / small;
+    println!("isosurface areas: {small} px at 0.5, {large} px at 0.2 (ratio {ratio:.2})");
+    assert!((2.0..=3.2).contains(&ratio), "ratio {ratio:.2}");
 }

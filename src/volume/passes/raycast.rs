@@ -177,6 +177,7 @@ impl VolumeRaycaster {
             extra.push(("EMPTY_STRIDE", f64::from(key.empty_stride)));
             extra.push(("THIN_ALPHA", f64::from(f32::from_bits(key.thin_alpha_bits))));
             extra.push(("PROJECTION", f64::from(key.projection)));
+            extra.push(("ISO_VALUE", f64::from(f32::from_bits(key.iso_bits))));
             let constants = key.spec.constants(&extra);
             Ok(
                 device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
@@ -231,6 +232,8 @@ struct RaycastPipelineKey {
     thin_alpha_bits: u32,
     /// `Projection::code` (0: compositing).
     projection: u32,
+    /// The isosurface's scalar (`f32::to_bits`).
+    iso_bits: u32,
 }
 
 impl From<PreparedFor> for RaycastPipelineKey {
@@ -242,6 +245,7 @@ impl From<PreparedFor> for RaycastPipelineKey {
             empty_stride: prepared.empty_stride,
             thin_alpha_bits: prepared.thin_alpha_bits,
             projection: prepared.projection,
+            iso_bits: prepared.iso_bits,
         }
     }
 }

@@ -35,6 +35,52 @@ override THIN_ALPHA: f32 = 0.0;
 // through the transfer function's colour at that scalar, opaque within the box (a projection
 // has no depth order, so nothing to skip or probe: SKIP_EMPTY and EMPTY_STRIDE are off then).
 override PROJECTION: u32 = 0u;
+// PROJECTION 4: the isosurface's normalised scalar.
+override ISO_VALUE: f32 = 0.5;
+
+// The isosurface (PROJECTION 4) on the ray o + u·d from sample plane k0 (texture space; the
+// eye ray origin + t·dir for the light): the first pair of samples that crosses ISO_VALUE from
+// below (or the first sample, where the ray enters inside), the hit interpolated between them,
+// lit with the gradient there; transparent where the ray never reaches the value.
+fn isosurface(o: vec3<f32>, d: vec3<f32>, k0: f32, count: u32, origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
+    var front = sample_plane(o, d, k0);
+    if (front.a >= ISO_VALUE) {
+        return lit_hit(front, k0, origin, dir);
+    }
+    for (var i = 1u; i <= count; i++) {
+        let back = sample_plane(o, d, k0 + f32(i));
+        if (back.a >= ISO_VALUE) {
+            let t = clamp((ISO_VALUE - front.a) / max(back.a - front.a, 1e-6), 0.0, 1.0);
+            return lit_hit(mix(front, back, t), k0 + f32(i) - 1.0 + t, origin, dir);
+        }
+        front = back;
+    }
+    return vec4<f32>(0.0);
+}
+
+// The surface at plane k (fractional) of the eye ray origin + t·dir, gradient g.xyz: the
+// transfer function's colour at ISO_VALUE (white where it is transparent), Blinn-Phong lit as
+// `shaded_segment` lights a segment (two-sided).
+fn lit_hit(g: vec4<f32>, k: f32, origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
+    let c = textureSampleLevel(preintegration, linear_clamp, vec2<f32>(table_coord(ISO_VALUE), table_coord(ISO_VALUE)), 0.0);
+    let base = select(vec3<f32>(1.0), min(c.rgb / max(c.a, 1e-6), vec3<f32>(1.0)), c.a > 0.0);
+    let normal = (params.normal_from_tex * vec4<f32>(g.xyz, 0.0)).xyz;
+    if (params.shade == 0u || dot(normal, normal) <= 1e-12) {
+        return vec4<f32>(base, 1.0);
+    }
+    let position = origin + (k * params.step / frame.camera.focal_distance) * dir;
+    let light = frame.light;
+    let to_eye = normalize(origin - position);
+    var n = normalize(-normal);
+    if (dot(n, to_eye) < 0.0) {
+        n = -n;
+    }
+    let h = normalize(light.direction.xyz + to_eye);
+    let diffuse = max(dot(n, light.direction.xyz), 0.0);
+    let specular = pow(max(dot(n, h), 0.0), light.specular.w);
+    let rgb = base * (light.ambient.rgb + light.diffuse.rgb * diffuse + light.specular.rgb * specular);
+    return vec4<f32>(min(rgb, vec3<f32>(1.0)), 1.0);
+}
 
 // The projection (PROJECTION ≠ 0) of the scalars on sample planes k0 … k0 + count of the ray
 // o + u·d (texture space): the samples the compositing march takes.
@@ -194,6 +240,9 @@ fn march_planes(origin: vec3<f32>, dir: vec3<f32>, planes: vec2<f32>, opaque: f3
     let k0 = max(ceil(d_in / params.step), planes.x);
     let k1 = min(floor(d_out / params.step), planes.y);
     let count = min(u32(max(k1 - k0, 0.0)), params.max_samples);
+    if (PROJECTION == 4u) {
+        return isosurface(o, d, k0, count, origin, dir);
+    }
     if (PROJECTION != 0u) {
         return project(o, d, k0, count);
     }

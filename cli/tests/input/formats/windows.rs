@@ -93,3 +93,42 @@ fn a_window_in_the_scans_units_is_that_window_as_a_transfer_function() {
         common::cli_out(&["volume", s(&file), "--window", "0,40", "--out", s(&png)]);
     assert!(!ok && stderr.contains("--window"), "{stderr}");
 }
+
+/// `--projection iso --iso VALUE` takes the value in the scan's units, checked against its range.
+#[test]
+fn an_isosurface_value_is_in_the_scans_units() {
+    let file = ct_nrrd();
+    let png = out("iso.png");
+    let run = |flags: &[&str]| {
+        let mut args = vec!["volume", s(&file), "--size", "48x32", "--out", s(&png)];
+        args.extend_from_slice(flags);
+        common::cli_out(&args)
+    };
+    let (ok, _, stderr) = run(&["--projection", "iso", "--iso", "300"]);
+    assert!(ok, "{stderr}");
+    let image = RgbImage::load_png(&png).unwrap();
+    let lit = image
+        .data
+        .chunks(3)
+        .filter(|p| p != &&image.data[..3])
+        .count();
+    assert!(
+        lit > 100,
+        "the bone shell at 300 HU is drawn ({lit} pixels)"
+    );
+    let (ok, _, stderr) = run(&["--projection", "iso"]);
+    assert!(
+        !ok && stderr.contains("needs --iso VALUE") && stderr.contains("-3024…1000"),
+        "{stderr}"
+    );
+    let (ok, _, stderr) = run(&["--projection", "iso", "--iso", "5000"]);
+    assert!(
+        !ok && stderr.contains("--iso 5000: outside the scan's values"),
+        "{stderr}"
+    );
+    let (ok, _, stderr) = run(&["--iso", "40"]);
+    assert!(
+        !ok && stderr.contains("--iso sets the surface of --projection iso"),
+        "{stderr}"
+    );
+}

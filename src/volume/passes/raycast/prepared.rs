@@ -24,6 +24,8 @@ pub(crate) struct PreparedFor {
     /// `Projection::code`: 0 composites; a projection samples every plane (no skipping,
     /// sharing or probes: transparency means nothing to it).
     pub projection: u32,
+    /// `VolumeSettings::isovalue` as bits where the projection is the isosurface, else 0.
+    pub iso_bits: u32,
     pub size: [u32; 2],
     pub views: u32,
 }
@@ -46,6 +48,10 @@ impl PreparedFor {
                 0
             },
             projection: settings.projection.code(),
+            iso_bits: match settings.projection {
+                crate::volume::Projection::Isosurface => settings.isovalue.to_bits(),
+                _ => 0,
+            },
             size: frame.size,
             views: frame.camera.views,
         }
@@ -60,6 +66,7 @@ impl PreparedFor {
             empty_stride: 1,
             thin_alpha_bits: 0,
             projection: 0,
+            iso_bits: 0,
             ..Self::of(settings, frame, Method::SinglePass)
         }
     }
