@@ -69,6 +69,8 @@ pub struct VolumeLoad {
     pub raw: Option<RawSpec>,
     /// Voxel spacing overriding the file's.
     pub spacing: Option<[f32; 3]>,
+    /// Keep this box of the volume (before `downsample`).
+    pub crop: Option<crate::volume::Crop>,
     /// Average blocks of `downsample`³ voxels (1: as read).
     pub downsample: u32,
     /// The classification; `None`: the preset for the scan's modality, else its format
@@ -83,6 +85,7 @@ impl Default for VolumeLoad {
         Self {
             raw: None,
             spacing: None,
+            crop: None,
             downsample: 1,
             transfer: None,
             model: Mat4::IDENTITY,
@@ -239,6 +242,9 @@ fn volume(path: &Path, options: &VolumeLoad) -> Result<VolumeData> {
         volume = Volume::new(volume.dims, spacing, volume.data)?
             .with_axes(volume.axes)?
             .with_values(values);
+    }
+    if let Some(crop) = options.crop {
+        volume = volume.cropped(crop)?;
     }
     volume = resampled(volume, options.downsample)?;
     let (transfer, preset) = match &options.transfer {

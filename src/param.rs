@@ -71,6 +71,8 @@ pub enum Param {
     Window,
     /// What a volume ray shows (compositing or a projection).
     Projection,
+    /// A box of the data to keep.
+    Crop,
     /// A video's frames per second.
     FrameRate,
     /// A video's bit rate.
@@ -147,7 +149,7 @@ pub enum Param {
 
 impl Param {
     /// Every parameter.
-    pub const ALL: [Param; 69] = [
+    pub const ALL: [Param; 70] = [
         Param::Aspect,
         Param::Bands,
         Param::Camera,
@@ -181,6 +183,7 @@ impl Param {
         Param::QuiltSize,
         Param::Window,
         Param::Projection,
+        Param::Crop,
         Param::FrameRate,
         Param::BitRate,
         Param::RadiusScale,
@@ -255,6 +258,7 @@ impl Param {
             Param::QuiltSize => "quilt size",
             Param::Window => "window",
             Param::Projection => "projection",
+            Param::Crop => "crop box",
             Param::FrameRate => "frame rate",
             Param::BitRate => "bit rate",
             Param::RadiusScale => "radius scale",

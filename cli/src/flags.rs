@@ -38,6 +38,7 @@ pub fn flag_of(param: Param) -> Option<&'static str> {
         Param::FrameRate => "--fps",
         Param::Window => "--window",
         Param::Projection => "--projection",
+        Param::Crop => "--crop",
         Param::BitRate => "--bitrate",
         Param::Aspect
         | Param::Bands

@@ -88,6 +88,11 @@ pub struct VolumeDataArgs {
     /// Voxel spacing X,Y,Z (overrides the file's; each 1e-6 to 1e6).
     #[arg(long, value_parser = parse_spacing)]
     spacing: Option<[f32; 3]>,
+    /// Keep only a box of the volume: voxels X0,Y0,Z0,X1,Y1,Z1 (inclusive), or with `mm` after
+    /// the last number the same in the spacing's units from the first voxel's corner
+    /// (`--crop 0,0,40,511,511,80` or `--crop 20,20,0,180,180,60mm`).
+    #[arg(long, value_name = "X0,Y0,Z0,X1,Y1,Z1[mm]", value_parser = parse_crop)]
+    crop: Option<autostereo::volume::Crop>,
     /// Average blocks of F³ voxels first (for volumes over the adapter's 3D texture limit).
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=256))]
     downsample: u32,
@@ -163,6 +168,10 @@ impl VolumeDataArgs {
                 Some(spacing) => Volume::new(volume.dims, spacing, volume.data)?,
                 None => volume,
             };
+            let volume = match self.crop {
+                Some(crop) => volume.cropped(crop)?,
+                None => volume,
+            };
             let volume = autostereo::resampled(volume, self.downsample)?;
             let mut data = VolumeData::with_preset(volume, preset, self.model())?;
             if let Some(choice) = self.transfer()? {
@@ -218,6 +227,7 @@ impl VolumeDataArgs {
         Ok(VolumeLoad {
             raw,
             spacing: self.spacing,
+            crop: self.crop,
             downsample: self.downsample,
             transfer: self.transfer()?,
             model: self.model(),
@@ -380,6 +390,41 @@ fn parse_window(value: &str) -> std::result::Result<WindowArg, String> {
         }
         _ => Err(format!(
             "'{value}' is not WIDTH,LEVEL with a positive width (e.g. 400,40 for soft tissue in HU)"
+        )),
+    }
+}
+
+/// `--crop X0,Y0,Z0,X1,Y1,Z1` in voxels, or with `mm` after it in the spacing's units.
+fn parse_crop(value: &str) -> std::result::Result<autostereo::volume::Crop, String> {
+    use autostereo::volume::Crop;
+    let (numbers, world) = match value.trim().strip_suffix("mm") {
+        Some(rest) => (rest, true),
+        None => (value, false),
+    };
+    let v: Vec<f32> = numbers
+        .split(',')
+        .map(|p| p.trim().parse::<f32>())
+        .collect::<std::result::Result<_, _>>()
+        .ok()
+        .filter(|v: &Vec<f32>| v.len() == 6 && v.iter().all(|x| x.is_finite() && *x >= 0.0))
+        .ok_or_else(|| {
+            format!(
+                "'{value}' is not X0,Y0,Z0,X1,Y1,Z1: six numbers ≥ 0 (voxels; `mm` after them: \
+                 the spacing's units)"
+            )
+        })?;
+    let corner = |at: usize| [v[at], v[at + 1], v[at + 2]];
+    match world {
+        true => Ok(Crop::World {
+            min: corner(0),
+            max: corner(3),
+        }),
+        false if v.iter().all(|x| x.fract() == 0.0 && *x <= u32::MAX as f32) => Ok(Crop::Voxels {
+            min: corner(0).map(|x| x as u32),
+            max: corner(3).map(|x| x as u32),
+        }),
+        false => Err(format!(
+            "'{value}': voxel indices are whole numbers (or end it in mm)"
         )),
     }
 }

@@ -63,6 +63,26 @@ pub struct Volume {
     pub values: Values,
 }
 
+/// A box of a volume to keep ([`Volume::cropped`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Crop {
+    /// Voxel indices, `min` to `max` inclusive along x, y, z.
+    Voxels {
+        /// The first voxel kept along each axis.
+        min: [u32; 3],
+        /// The last voxel kept along each axis.
+        max: [u32; 3],
+    },
+    /// A box in the spacing's units (mm for a scan) measured from the volume's first voxel's
+    /// corner along its voxel axes.
+    World {
+        /// The box's near corner.
+        min: [f32; 3],
+        /// The box's far corner.
+        max: [f32; 3],
+    },
+}
+
 /// Peak CPU bytes per voxel from file to GPU upload: the decoded samples (f32), their
 /// Sobel gradients (4 × f32), the half-float texels (4 × f16) and up to 4 bytes of file data.
 pub const PEAK_BYTES_PER_VOXEL: u64 = 4 + 16 + 8 + 4;
@@ -220,6 +240,45 @@ impl Volume {
         }
     }
 
+    /// The voxels of the box `crop` — `Crop::Voxels` from `min` to `max` inclusive, or
+    /// `Crop::World` in the spacing's units (mm for a scan) from the volume's first voxel — as
+    /// a volume of their own (same spacing, axes and values), centred where the renderers
+    /// centre every volume. A box outside the volume, or empty, is refused naming the sizes.
+    pub fn cropped(&self, crop: Crop) -> Result<Self> {
+        let (min, max) = match crop {
+            Crop::Voxels { min, max } => (min, max),
+            Crop::World { min, max } => {
+                let to_voxel = |v: [f32; 3], round: fn(f32) -> f32| {
+                    [0, 1, 2].map(|a| round(v[a] / self.spacing[a]).max(0.0) as u32)
+                };
+                let max = to_voxel(max, f32::ceil).map(|v| v.saturating_sub(1));
+                (to_voxel(min, f32::floor), max)
+            }
+        };
+        let fits = (0..3).all(|a| min[a] <= max[a] && max[a] < self.dims[a]);
+        if !fits {
+            return Err(Error::invalid(
+                Param::Crop,
+                format!(
+                    "voxels {min:?} to {max:?}: not a box inside the volume's {:?} voxels (each \
+                     from ≤ to, to < the size)",
+                    self.dims
+                ),
+            ));
+        }
+        let dims = [0, 1, 2].map(|a| max[a] - min[a] + 1);
+        let mut data = Vec::with_capacity(dims.iter().map(|&d| d as usize).product());
+        for z in min[2]..=max[2] {
+            for y in min[1]..=max[1] {
+                let row = (z as usize * self.dims[1] as usize + y as usize) * self.dims[0] as usize;
+                data.extend_from_slice(&self.data[row + min[0] as usize..=row + max[0] as usize]);
+            }
+        }
+        Ok(Volume::new(dims, self.spacing, data)?
+            .with_axes(self.axes)?
+            .with_values(self.values.clone()))
+    }
+
     /// Average blocks of `factor`³ voxels (edges: partial blocks); spacing grows by `factor`.
     pub fn downsample(&self, factor: u32) -> Result<Self> {
         if factor == 0 {
@@ -267,6 +326,43 @@ impl Volume {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn a_crop_keeps_its_voxels_and_what_they_stand_for() {
+        let data: Vec<f32> = (0..4 * 3 * 2).map(|i| i as f32 / 23.0).collect();
+        let v = Volume::new([4, 3, 2], [0.5, 1.0, 2.0], data)
+            .unwrap()
+            .with_values(Values {
+                range: [-1024.0, 3071.0],
+                units: Units::Hounsfield,
+                ..Values::NORMALISED
+            });
+        let c = v
+            .cropped(Crop::Voxels {
+                min: [1, 1, 1],
+                max: [2, 2, 1],
+            })
+            .unwrap();
+        assert_eq!((c.dims, c.spacing), ([2, 2, 1], [0.5, 1.0, 2.0]));
+        assert_eq!(c.at(0, 0, 0), v.at(1, 1, 1));
+        assert_eq!(c.at(1, 1, 0), v.at(2, 2, 1));
+        assert_eq!(c.values, v.values);
+        // In the spacing's units: x 0.5–1.5 (voxels 1, 2), y 1–3 (1, 2), z 2–4 (1).
+        let world = v
+            .cropped(Crop::World {
+                min: [0.5, 1.0, 2.0],
+                max: [1.5, 3.0, 4.0],
+            })
+            .unwrap();
+        assert_eq!(world.data, c.data);
+        for bad in [([0, 0, 0], [4, 2, 1]), ([2, 0, 0], [1, 2, 1])] {
+            let crop = Crop::Voxels {
+                min: bad.0,
+                max: bad.1,
+            };
+            assert!(v.cropped(crop).is_err(), "{bad:?}");
+        }
+    }
+
     use super::*;
 
     #[test]

@@ -132,3 +132,30 @@ fn an_isosurface_value_is_in_the_scans_units() {
         "{stderr}"
     );
 }
+
+/// `--crop` keeps a box of voxels (or of millimetres): the volume rendered is that box.
+#[test]
+fn a_crop_box_keeps_its_voxels() {
+    let file = ct_nrrd();
+    let (_, json) = render(&file, &["--crop", "0,0,12,23,23,23"], "crop.png");
+    assert_eq!(
+        json["volume_dims"],
+        serde_json::json!([24, 24, 12]),
+        "{json}"
+    );
+    let (_, json) = render(&file, &["--crop", "2,2,2,10,10,10mm"], "crop_mm.png");
+    assert_eq!(json["volume_dims"], serde_json::json!([8, 8, 8]), "{json}");
+    let png = out("crop_bad.png");
+    let (ok, _, stderr) = common::cli_out(&[
+        "volume",
+        s(&file),
+        "--crop",
+        "0,0,0,30,5,5",
+        "--out",
+        s(&png),
+    ]);
+    assert!(
+        !ok && stderr.contains("--crop") && stderr.contains("[24, 24, 24]"),
+        "{stderr}"
+    );
+}
