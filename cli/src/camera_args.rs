@@ -45,6 +45,11 @@ pub struct CameraArgs {
     /// y down).
     #[arg(long, value_name = "X,Y,Z", value_parser = parse_vec3, allow_hyphen_values = true)]
     up: Option<glam::Vec3>,
+    /// Look from this side of the scene at the framing's distance: front (+z, the default),
+    /// back, left (−x), right, top (+y, the front at the bottom), bottom. For a scan the front
+    /// is its anterior view (the patient faces you). --look-from and --up override it.
+    #[arg(long = "view", value_enum, value_name = "SIDE")]
+    side: Option<autostereo::camera::Side>,
 }
 
 /// `--fov DEGREES`: the vertical field of view, refused in the user's units (degrees) outside
@@ -111,6 +116,7 @@ impl CameraArgs {
             look_from: self.look_from,
             look_at: self.look_at,
             up: self.up,
+            side: self.side,
         }
     }
 }

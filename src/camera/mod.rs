@@ -9,7 +9,7 @@ mod settings;
 
 pub use framing::Bounds;
 pub use gpu::{CameraUniform, ViewUniform};
-pub use settings::{CameraSettings, Focal, Spread};
+pub use settings::{CameraSettings, Focal, Side, Spread};
 
 use glam::{Mat4, Vec2, Vec3, Vec4};
 

@@ -28,6 +28,39 @@ pub enum Focal {
     Scale(f32),
 }
 
+/// Which side of a scene the centre camera looks from, in the renderer's world (x right, y
+/// up, z toward the viewer; for a scan, its anterior view is the front: docs/VOLUMES.md).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+pub enum Side {
+    /// From +z (the default framing), up +y.
+    Front,
+    /// From −z, up +y.
+    Back,
+    /// From −x, up +y.
+    Left,
+    /// From +x, up +y.
+    Right,
+    /// From +y looking down, the front (+z) at the image's bottom.
+    Top,
+    /// From −y looking up, the front at the image's top.
+    Bottom,
+}
+
+impl Side {
+    /// The direction from the scene toward the camera, and the image's up.
+    pub fn direction_and_up(self) -> (Vec3, Vec3) {
+        match self {
+            Side::Front => (Vec3::Z, Vec3::Y),
+            Side::Back => (-Vec3::Z, Vec3::Y),
+            Side::Left => (-Vec3::X, Vec3::Y),
+            Side::Right => (Vec3::X, Vec3::Y),
+            Side::Top => (Vec3::Y, -Vec3::Z),
+            Side::Bottom => (-Vec3::Y, Vec3::Z),
+        }
+    }
+}
+
 /// A multi-view camera as described, before it meets a scene and a display.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CameraSettings {
@@ -45,6 +78,9 @@ pub struct CameraSettings {
     pub look_at: Option<Vec3>,
     /// The world direction up in the image (default +y).
     pub up: Option<Vec3>,
+    /// Look from this side of the scene, at the framing's distance (`look_from` and `up`
+    /// override what it sets).
+    pub side: Option<Side>,
 }
 
 impl Default for CameraSettings {
@@ -57,6 +93,7 @@ impl Default for CameraSettings {
             look_from: None,
             look_at: None,
             up: None,
+            side: None,
         }
     }
 }
@@ -88,17 +125,27 @@ impl CameraSettings {
         };
         let fov = self.fov_degrees.to_radians();
         let framing = || MultiViewCamera::framing(bounds, views, separation, fov, aspect);
-        let explicit = self.look_from.is_some() || self.look_at.is_some() || self.up.is_some();
+        let explicit = self.look_from.is_some()
+            || self.look_at.is_some()
+            || self.up.is_some()
+            || self.side.is_some();
         let mut camera = if explicit {
-            let from = match self.look_from {
-                Some(from) => from,
-                None => framing()?.eye_position(),
+            let pivot = self.pivot(bounds);
+            let (from, side_up) = match (self.look_from, self.side) {
+                (Some(from), side) => (from, side.map(|s| s.direction_and_up().1)),
+                (None, Some(side)) => {
+                    // The framing's distance, from the chosen side of the pivot.
+                    let distance = framing()?.eye_position().distance(bounds.center());
+                    let (toward, up) = side.direction_and_up();
+                    (pivot + toward * distance, Some(up))
+                }
+                (None, None) => (framing()?.eye_position(), None),
             };
             MultiViewCamera::looking_at(
                 bounds,
                 from,
-                self.pivot(bounds),
-                self.up.unwrap_or(Vec3::Y),
+                pivot,
+                self.up.or(side_up).unwrap_or(Vec3::Y),
                 views,
                 separation,
                 fov,
@@ -118,5 +165,61 @@ impl CameraSettings {
         }
         camera.validate()?;
         Ok(camera)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each side puts the centre camera on that side of the scene at the front framing's
+    /// distance, the image's up as the side says.
+    #[test]
+    fn a_side_looks_from_that_side_at_the_framings_distance() {
+        let bounds = Bounds {
+            min: Vec3::new(-1.0, -2.0, -0.5),
+            max: Vec3::new(3.0, 1.0, 0.5),
+        };
+        let display = Display::parse("hubner8").unwrap();
+        let front = CameraSettings::default()
+            .camera(bounds, &display, [64, 48])
+            .unwrap();
+        let distance = front.eye_position().distance(bounds.center());
+        for side in [
+            Side::Front,
+            Side::Back,
+            Side::Left,
+            Side::Right,
+            Side::Top,
+            Side::Bottom,
+        ] {
+            let settings = CameraSettings {
+                side: Some(side),
+                ..Default::default()
+            };
+            let camera = settings.camera(bounds, &display, [64, 48]).unwrap();
+            let (toward, up) = side.direction_and_up();
+            let eye = camera.eye_position() - bounds.center();
+            assert!(
+                (eye.length() - distance).abs() < 1e-3 * distance,
+                "{side:?}"
+            );
+            assert!(eye.normalize().abs_diff_eq(toward, 1e-4), "{side:?}: {eye}");
+            // The image's up, in the world: the eye-to-world transform of +y.
+            let world_up = camera.eye_from_world.inverse().transform_vector3(Vec3::Y);
+            assert!(
+                world_up.normalize().abs_diff_eq(up, 1e-4),
+                "{side:?}: up {world_up}"
+            );
+        }
+        // The front is the default framing.
+        let same = CameraSettings {
+            side: Some(Side::Front),
+            ..Default::default()
+        };
+        let camera = same.camera(bounds, &display, [64, 48]).unwrap();
+        assert!(camera
+            .eye_position()
+            .abs_diff_eq(front.eye_position(), 1e-3));
     }
 }
