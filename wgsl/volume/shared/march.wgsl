@@ -60,7 +60,7 @@ fn isosurface(o: vec3<f32>, d: vec3<f32>, k0: f32, count: u32, origin: vec3<f32>
 
 // The surface at plane k (fractional) of the eye ray origin + t·dir, gradient g.xyz: the
 // transfer function's colour at ISO_VALUE (white where it is transparent), Blinn-Phong lit as
-// `shaded_segment` lights a segment (two-sided).
+// `shaded_segment` lights a segment (`blinn_phong`, two-sided).
 fn lit_hit(g: vec4<f32>, k: f32, origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
     let c = textureSampleLevel(preintegration, linear_clamp, vec2<f32>(table_coord(ISO_VALUE), table_coord(ISO_VALUE)), 0.0);
     let base = select(vec3<f32>(1.0), min(c.rgb / max(c.a, 1e-6), vec3<f32>(1.0)), c.a > 0.0);
@@ -69,16 +69,7 @@ fn lit_hit(g: vec4<f32>, k: f32, origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32>
         return vec4<f32>(base, 1.0);
     }
     let position = origin + (k * params.step / frame.camera.focal_distance) * dir;
-    let light = frame.light;
-    let to_eye = normalize(origin - position);
-    var n = normalize(-normal);
-    if (dot(n, to_eye) < 0.0) {
-        n = -n;
-    }
-    let h = normalize(light.direction.xyz + to_eye);
-    let diffuse = max(dot(n, light.direction.xyz), 0.0);
-    let specular = pow(max(dot(n, h), 0.0), light.specular.w);
-    let rgb = base * (light.ambient.rgb + light.diffuse.rgb * diffuse + light.specular.rgb * specular);
+    let rgb = base * blinn_phong(normal, position, origin);
     return vec4<f32>(min(rgb, vec3<f32>(1.0)), 1.0);
 }
 

@@ -36,6 +36,12 @@ fn shaded_segment(front: vec4<f32>, back: vec4<f32>, position: vec3<f32>, origin
     if (dot(g, g) <= 1e-12) {
         return seg;
     }
+    return vec4<f32>(seg.rgb * blinn_phong(g, position, origin), seg.a);
+}
+
+// The paper's light factor Ia + Id·(N·L) + Is·(N·H)^sh at eye-space `position` seen from
+// `origin`, N the normalised −gradient `g` turned toward the eye (two-sided); nonzero `g`.
+fn blinn_phong(g: vec3<f32>, position: vec3<f32>, origin: vec3<f32>) -> vec3<f32> {
     let light = frame.light;
     let to_eye = normalize(origin - position);
     var n = normalize(-g);
@@ -45,5 +51,5 @@ fn shaded_segment(front: vec4<f32>, back: vec4<f32>, position: vec3<f32>, origin
     let h = normalize(light.direction.xyz + to_eye);
     let diffuse = max(dot(n, light.direction.xyz), 0.0);
     let specular = pow(max(dot(n, h), 0.0), light.specular.w);
-    return vec4<f32>(seg.rgb * (light.ambient.rgb + light.diffuse.rgb * diffuse + light.specular.rgb * specular), seg.a);
+    return light.ambient.rgb + light.diffuse.rgb * diffuse + light.specular.rgb * specular;
 }
