@@ -16,8 +16,7 @@ impl Xvfb {
     /// Start one on a free display (Xvfb picks it and says which: `-displayfd`), or `None`
     /// where the machine has no Xvfb.
     pub fn start() -> Option<Self> {
-        use std::io::BufRead;
-        let mut child = Command::new("Xvfb")
+        let child = Command::new("Xvfb")
             .args([
                 "-displayfd",
                 "1",
@@ -31,6 +30,12 @@ impl Xvfb {
             .stderr(std::process::Stdio::null())
             .spawn()
             .ok()?;
+        Some(Self::serving(child, "Xvfb"))
+    }
+
+    /// The server `child` started with `-displayfd 1`, on the display it says it took.
+    fn serving(mut child: Child, what: &str) -> Self {
+        use std::io::BufRead;
         let mut line = String::new();
         let stdout = child.stdout.take().expect("piped");
         std::io::BufReader::new(stdout)
@@ -39,17 +44,16 @@ impl Xvfb {
         let n: u32 = line
             .trim()
             .parse()
-            .unwrap_or_else(|_| panic!("Xvfb did not come up (said {line:?})"));
-        Some(Self {
+            .unwrap_or_else(|_| panic!("{what} did not come up (said {line:?})"));
+        Self {
             child,
             display: format!(":{n}"),
-        })
+        }
     }
 
     /// Two monitors side by side: 1024×768 at 0,0 and 640×480 at 1024,0 (Xorg's dummy driver
     /// and xrandr), or `None` where the machine lacks them (CI installs them: .ci/run).
     pub fn two_monitors() -> Option<Self> {
-        use std::io::BufRead;
         let driver = Path::new("/usr/lib/xorg/modules/drivers/dummy_drv.so");
         let xrandr = Command::new("xrandr").arg("--version").output().is_ok();
         if !driver.exists() || !xrandr {
@@ -65,7 +69,7 @@ impl Xvfb {
              SubSection \"Display\"\n  Depth 24\n  Virtual 2048 1024\n EndSubSection\nEndSection\n",
         )
         .unwrap();
-        let mut child = Command::new("Xorg")
+        let child = Command::new("Xorg")
             .args(["-displayfd", "1", "-noreset", "-nolisten", "tcp", "-config"])
             .arg(&config)
             .arg("-logfile")
@@ -74,19 +78,7 @@ impl Xvfb {
             .stderr(std::process::Stdio::null())
             .spawn()
             .ok()?;
-        let mut line = String::new();
-        let stdout = child.stdout.take().expect("piped");
-        std::io::BufReader::new(stdout)
-            .read_line(&mut line)
-            .unwrap();
-        let n: u32 = line
-            .trim()
-            .parse()
-            .unwrap_or_else(|_| panic!("Xorg (dummy) did not come up (said {line:?})"));
-        let x = Self {
-            child,
-            display: format!(":{n}"),
-        };
+        let x = Self::serving(child, "Xorg (dummy)");
         let xrandr = |args: &[&str]| {
             let status = Command::new("xrandr")
                 .args(args)
