@@ -32,6 +32,8 @@ const SHARED: &[(&str, &str)] = &[
     wgsl!("mesh/shared/cover_bounds.wgsl"),
     wgsl!("mesh/shared/cover_data.wgsl"),
     wgsl!("mesh/shared/cover.wgsl"),
+    wgsl!("mesh/shared/texture.wgsl"),
+    wgsl!("mesh/shared/shade_hit.wgsl"),
     wgsl!("mesh/shared/resolve.wgsl"),
     wgsl!("mesh/shared/view_vertex.wgsl"),
     wgsl!("mesh/shared/tiled_vertex.wgsl"),
@@ -270,6 +272,10 @@ mod tests {
             ("mesh/npass.wgsl", crate::display::MaskUniform::GPU_LAYOUT),
             ("mesh/npass.wgsl", crate::frame::LightUniform::GPU_LAYOUT),
             ("mesh/npass.wgsl", crate::frame::FrameUniform::GPU_LAYOUT),
+            (
+                "mesh/npass.wgsl",
+                crate::mesh::texture_buffers::GpuTexture::GPU_LAYOUT,
+            ),
             (
                 "mesh/mrt.wgsl",
                 crate::mesh::passes::duplicate::ViewBatch::GPU_LAYOUT,

@@ -59,6 +59,7 @@ impl Mesh {
             normals: vec![Vec3::Z; 4],
             colors: vec![color; 4],
             indices: vec![0, 1, 2, 0, 2, 3],
+            ..Mesh::default()
         }
     }
 

@@ -6,14 +6,17 @@ pub(crate) mod options;
 mod order;
 pub(crate) mod passes;
 mod scene;
+mod texture;
+pub(crate) mod texture_buffers;
 
 pub use options::{CoverBounds, MeshOptions, TileClip, Visibility};
 pub use passes::{
     MeshLayered, MeshMrt, MeshNPass, MeshSinglePass, MeshSinglePassOptions, MeshTiled,
 };
 pub use scene::{GpuVertex, MeshBuffers};
+pub use texture::{Filter, Texture, Wrap, MAX_TEXELS, NO_TEXTURE};
 
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
 use crate::camera::Bounds;
 use crate::error::{Error, Result};
@@ -26,7 +29,8 @@ pub const METHODS: [Method; 7] = Method::ALL;
 /// Colour given to vertices when the file has neither vertex nor material colours.
 pub const DEFAULT_COLOR: [f32; 4] = [0.8, 0.8, 0.8, 1.0];
 
-/// An indexed triangle mesh with per-vertex normals and colours.
+/// An indexed triangle mesh with per-vertex normals and colours, and optionally base-colour
+/// textures that multiply the colours.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Mesh {
     /// Vertex positions.
@@ -37,6 +41,13 @@ pub struct Mesh {
     pub colors: Vec<[f32; 4]>,
     /// Triangle list, three indices per triangle.
     pub indices: Vec<u32>,
+    /// Texture coordinates (same length as `positions`, or empty: no textures).
+    pub tex_coords: Vec<Vec2>,
+    /// Which of `textures` each vertex samples, or [`NO_TEXTURE`] (same length as `positions`,
+    /// or empty). A triangle is textured as its first vertex says.
+    pub texture_ids: Vec<u32>,
+    /// Base-colour textures ([`Texture`]).
+    pub textures: Vec<Texture>,
 }
 
 impl Mesh {
@@ -81,7 +92,42 @@ impl Mesh {
         {
             return Err(fail("a normal or colour is not finite".into()));
         }
-        Ok(())
+        self.validate_textures(n)
+    }
+
+    /// Texture coordinates and ids: both empty or one per vertex, finite, naming textures
+    /// that exist and fit [`MAX_TEXELS`].
+    fn validate_textures(&self, n: usize) -> Result<()> {
+        let fail = |reason: String| Error::invalid(Param::Mesh, reason);
+        let (uvs, ids) = (self.tex_coords.len(), self.texture_ids.len());
+        if !(uvs == ids && (uvs == 0 || uvs == n)) {
+            return Err(fail(format!(
+                "{n} positions but {uvs} texture coordinates and {ids} texture ids (both must \
+                 be empty or one per vertex)"
+            )));
+        }
+        if let Some(i) = self.tex_coords.iter().position(|t| !t.is_finite()) {
+            return Err(fail(format!(
+                "vertex {i} has a non-finite texture coordinate {}",
+                self.tex_coords[i]
+            )));
+        }
+        let count = self.textures.len();
+        if let Some(&id) = self
+            .texture_ids
+            .iter()
+            .find(|&&id| id != NO_TEXTURE && id as usize >= count)
+        {
+            return Err(fail(format!(
+                "texture {id} does not exist (the mesh has {count})"
+            )));
+        }
+        texture::check_textures(&self.textures)
+    }
+
+    /// Whether any vertex samples a texture.
+    pub fn is_textured(&self) -> bool {
+        self.texture_ids.iter().any(|&id| id != NO_TEXTURE)
     }
 
     /// Area-weighted vertex normals from the triangles (replaces `normals`). Vertices of only
@@ -101,9 +147,32 @@ impl Mesh {
             .collect();
     }
 
-    /// Append `other` (indices shifted).
+    /// Append `other` (indices and texture ids shifted).
     pub fn append(&mut self, other: &Mesh) {
-        let base = self.positions.len() as u32;
+        let n = self.positions.len();
+        let base = n as u32;
+        if self.tex_coords.is_empty() && !other.tex_coords.is_empty() {
+            self.tex_coords = vec![Vec2::ZERO; n];
+            self.texture_ids = vec![NO_TEXTURE; n];
+        }
+        if !self.tex_coords.is_empty() {
+            let m = other.positions.len();
+            let first = self.textures.len() as u32;
+            match other.tex_coords.is_empty() {
+                true => {
+                    self.tex_coords.extend(std::iter::repeat_n(Vec2::ZERO, m));
+                    self.texture_ids.extend(std::iter::repeat_n(NO_TEXTURE, m));
+                }
+                false => {
+                    self.tex_coords.extend_from_slice(&other.tex_coords);
+                    self.texture_ids.extend(other.texture_ids.iter().map(|&id| match id {
+                        NO_TEXTURE => NO_TEXTURE,
+                        id => id + first,
+                    }));
+                }
+            }
+            self.textures.extend_from_slice(&other.textures);
+        }
         self.positions.extend_from_slice(&other.positions);
         self.normals.extend_from_slice(&other.normals);
         self.colors.extend_from_slice(&other.colors);

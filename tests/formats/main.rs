@@ -12,6 +12,7 @@ mod fuzz_regressions;
 mod gaussians_formats;
 mod mesh_formats;
 mod points_las;
+mod textures;
 mod volume_dicom;
 mod volume_formats;
 mod volume_load;

@@ -164,6 +164,7 @@ fn disocclusions_are_filled_from_the_background_side() {
             colors: vec![color; 4],
             indices: vec![0, 1, 2, 0, 2, 3],
             positions,
+            ..Mesh::default()
         }
     };
     let back = square(-0.5, 1.0, [1.0, 0.0, 0.0, 1.0]);

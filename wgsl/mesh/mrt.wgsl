@@ -8,6 +8,9 @@
 
 // Bindings read by shared/frame.wgsl.
 @group(0) @binding(0) var<uniform> frame: Frame;
+// Bindings read by mesh/shared/texture.wgsl.
+@group(3) @binding(0) var<storage, read> mesh_texels: array<u32>;
+@group(3) @binding(1) var<storage, read> mesh_textures: array<MeshTexture>;
 
 @group(1) @binding(0) var<uniform> views: array<View, MAX_VIEWS>;
 @group(1) @binding(1) var<uniform> batch: ViewBatch;
@@ -17,6 +20,8 @@ struct VertexOut {
     @location(0) eye_position: vec3<f32>,
     @location(1) eye_normal: vec3<f32>,
     @location(2) color: vec4<f32>,
+    @location(4) tex_coord: vec2<f32>,
+    @location(5) @interpolate(flat) texture: u32,
     @location(3) @interpolate(flat) slot: u32,
 }
 
@@ -35,12 +40,12 @@ struct Targets {
 @vertex
 fn vs_main(v: VertexIn, @builtin(instance_index) slot: u32) -> VertexOut {
     let o = view_vertex(v, views[batch.first + slot]);
-    return VertexOut(o.clip, o.eye_position, o.eye_normal, o.color, slot);
+    return VertexOut(o.clip, o.eye_position, o.eye_normal, o.color, o.tex_coord, o.texture, slot);
 }
 
 @fragment
 fn fs_main(in: VertexOut) -> Targets {
-    let c = view_shade(views[batch.first + in.slot], in.eye_normal, in.eye_position, in.color);
+    let c = view_shade(views[batch.first + in.slot], in.eye_normal, in.eye_position, in.color, in.tex_coord, in.texture);
     let none = vec4<f32>(0.0);
     let s = in.slot;
     return Targets(

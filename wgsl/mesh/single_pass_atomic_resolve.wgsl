@@ -11,6 +11,9 @@
 // Bindings read by mesh/shared/mesh_data.wgsl.
 @group(1) @binding(0) var<storage, read> mesh_vertices: array<MeshVertex>;
 @group(1) @binding(1) var<storage, read> mesh_indices: array<u32>;
+// Bindings read by mesh/shared/texture.wgsl.
+@group(3) @binding(0) var<storage, read> mesh_texels: array<u32>;
+@group(3) @binding(1) var<storage, read> mesh_textures: array<MeshTexture>;
 
 // The same buffer as `nearest_keys`, read as (low, high) words of the inverted u64 keys.
 @group(2) @binding(0) var<storage, read> nearest_keys: array<vec2<u32>>;

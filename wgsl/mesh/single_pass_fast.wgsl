@@ -4,6 +4,7 @@
 // misses (blend factor 0 on those channels).
 enable dual_source_blending;
 #import mesh/shared/cover.wgsl
+#import mesh/shared/shade_hit.wgsl
 
 // Bindings read by shared/frame.wgsl.
 @group(0) @binding(0) var<uniform> frame: Frame;
@@ -14,6 +15,9 @@ enable dual_source_blending;
 // Bindings read by mesh/shared/mesh_data.wgsl.
 @group(1) @binding(0) var<storage, read> mesh_vertices: array<MeshVertex>;
 @group(1) @binding(1) var<storage, read> mesh_indices: array<u32>;
+// Bindings read by mesh/shared/texture.wgsl.
+@group(3) @binding(0) var<storage, read> mesh_texels: array<u32>;
+@group(3) @binding(1) var<storage, read> mesh_textures: array<MeshTexture>;
 
 struct FastOut {
     @location(0) @blend_src(0) color: vec4<f32>,

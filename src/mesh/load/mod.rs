@@ -3,6 +3,7 @@
 
 #[cfg(feature = "gltf")]
 mod gltf;
+mod map_kd;
 mod obj;
 mod ply;
 #[cfg(feature = "stl")]

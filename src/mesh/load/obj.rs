@@ -3,22 +3,24 @@
 //! tobj's MTL parser panics on a colour line with fewer than three numbers, and it opens
 //! whatever `mtllib` names (a FIFO, `/dev/zero`). So the OBJ text is read by
 //! `crate::file::read_text` (a regular file, bounded; BOM, CR and CRLF line ends handled) and
-//! handed to tobj from memory, and the one material property used, the diffuse colour `Kd`,
-//! comes from [`load_mtl`].
+//! handed to tobj from memory, and the material properties used, the diffuse colour `Kd` and
+//! texture `map_Kd` (src/mesh/load/map_kd.rs), come from [`load_mtl`].
 
 use std::cell::RefCell;
 use std::collections::HashMap;
 use std::path::Path;
 
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
+use super::map_kd::MapKd;
 use crate::error::{Error, Result};
-use crate::mesh::{Mesh, DEFAULT_COLOR};
+use crate::mesh::{Mesh, DEFAULT_COLOR, NO_TEXTURE};
 
 /// Peak CPU bytes per OBJ file byte: a vertex or face line takes at least 8 bytes; a vertex
-/// costs ≈ 112 bytes (tobj's arrays, the mesh's positions, normals and colours, the uploaded
-/// vertex) and a triangle ≈ 24: an upper bound of 17 per byte, checked before parsing.
-pub(crate) const MESH_PEAK_PER_OBJ_BYTE: u64 = 17;
+/// costs ≈ 140 bytes (tobj's arrays, the mesh's positions, normals, colours and texture
+/// coordinates, the uploaded vertex) and a triangle ≈ 24: an upper bound of 21 per byte,
+/// checked before parsing.
+pub(crate) const MESH_PEAK_PER_OBJ_BYTE: u64 = 21;
 
 pub(super) fn load(path: &Path) -> Result<Mesh> {
     let fail = |reason: String| Error::Mesh {
@@ -47,6 +49,7 @@ pub(super) fn load(path: &Path) -> Result<Mesh> {
 /// Parse OBJ `text` (`path` names it in errors); `mtllib` files are read from `materials`,
 /// or ignored when it is `None` (text from memory, e.g. the fuzz targets).
 pub(super) fn parse(text: &str, path: &Path, materials: Option<&Path>) -> Result<Mesh> {
+    let materials_dir = materials;
     let fail = |reason: String| Error::Mesh {
         path: path.to_path_buf(),
         reason,
@@ -84,15 +87,27 @@ pub(super) fn parse(text: &str, path: &Path, materials: Option<&Path>) -> Result
     });
     let mut mesh = Mesh::default();
     let mut has_normals = true;
+    let mut textures = ObjTextures {
+        dir: materials_dir,
+        path,
+        read: HashMap::new(),
+    };
     for model in &models {
         let m = &model.mesh;
         let n = m.positions.len() / 3;
         let base = mesh.positions.len() as u32;
+        let texture = m.material_id.and_then(|id| {
+            let map = materials.get(id)?.diffuse_texture.as_deref()?;
+            textures.texture(id, map, &mut mesh)
+        });
+        let textured = texture.is_some() && m.texcoords.len() == 2 * n;
+        // Kd multiplies the texture (as the MTL format says); a texture without Kd is as it is.
         let material_color = m
             .material_id
             .and_then(|id| materials.get(id))
             .and_then(|mat| mat.diffuse)
-            .map(|[r, g, b]| [r, g, b, 1.0]);
+            .map(|[r, g, b]| [r, g, b, 1.0])
+            .unwrap_or(if textured { [1.0; 4] } else { DEFAULT_COLOR });
         mesh.positions.extend(
             m.positions
                 .chunks_exact(3)
@@ -115,15 +130,37 @@ pub(super) fn parse(text: &str, path: &Path, materials: Option<&Path>) -> Result
                     .map(|c| [c[0], c[1], c[2], 1.0]),
             );
         } else {
-            mesh.colors.extend(std::iter::repeat_n(
-                material_color.unwrap_or(DEFAULT_COLOR),
-                n,
-            ));
+            mesh.colors.extend(std::iter::repeat_n(material_color, n));
         }
         if let Some(&bad) = m.indices.iter().find(|&&i| i as usize >= n) {
             return Err(fail(format!("face index {} beyond {n} vertices", bad + 1)));
         }
         mesh.indices.extend(m.indices.iter().map(|i| i + base));
+        match texture {
+            Some((map, id)) if textured => {
+                pad_tex_coords(&mut mesh, base as usize);
+                mesh.tex_coords.extend(
+                    m.texcoords
+                        .chunks_exact(2)
+                        .map(|uv| map.tex_coord([uv[0], uv[1]])),
+                );
+                mesh.texture_ids.extend(std::iter::repeat_n(id, n));
+            }
+            _ => {
+                if texture.is_some() {
+                    log::warn!(
+                        "{}: object {} has a texture but no texture coordinates (vt); drawn in \
+                         its colour",
+                        path.display(),
+                        model.name
+                    );
+                }
+                if !mesh.tex_coords.is_empty() {
+                    let count = mesh.positions.len();
+                    pad_tex_coords(&mut mesh, count);
+                }
+            }
+        }
     }
     if mesh.indices.is_empty() {
         return Err(fail("no triangles".into()));
@@ -138,7 +175,52 @@ pub(super) fn parse(text: &str, path: &Path, materials: Option<&Path>) -> Result
     Ok(mesh)
 }
 
-/// The materials of an MTL file, with only what the renderers use: name and diffuse colour.
+/// The textures of an OBJ's materials, each read once, from the directory of its MTL.
+struct ObjTextures<'a> {
+    dir: Option<&'a Path>,
+    path: &'a Path,
+    /// Material id → its map and texture index, or `None` where it could not be read.
+    read: HashMap<usize, Option<(MapKd, u32)>>,
+}
+
+impl ObjTextures<'_> {
+    /// Material `material`'s `map_Kd` (its arguments `args`) and texture index in `mesh`,
+    /// reading the texture on first use; `None` (said once in the log) where it cannot be read.
+    fn texture(&mut self, material: usize, args: &str, mesh: &mut Mesh) -> Option<(MapKd, u32)> {
+        if let Some(read) = self.read.get(&material) {
+            return read.clone();
+        }
+        let map = MapKd::parse(args).ok()?; // checked by parse_mtl
+        let read = match self.dir.map(|dir| map.load(dir)) {
+            Some(Ok(texture)) => {
+                mesh.textures.push(texture);
+                Some((map, mesh.textures.len() as u32 - 1))
+            }
+            Some(Err(e)) => {
+                log::warn!(
+                    "{}: texture {} is not shown ({e}); drawn in its Kd colour",
+                    self.path.display(),
+                    map.file
+                );
+                None
+            }
+            None => None,
+        };
+        self.read.insert(material, read.clone());
+        read
+    }
+
+}
+
+/// Texture coordinates and ids (none) for `mesh`'s vertices up to `count`.
+fn pad_tex_coords(mesh: &mut Mesh, count: usize) {
+    let missing = count.saturating_sub(mesh.tex_coords.len());
+    mesh.tex_coords.extend(std::iter::repeat_n(Vec2::ZERO, missing));
+    mesh.texture_ids.extend(std::iter::repeat_n(NO_TEXTURE, missing));
+}
+
+/// The materials of an MTL file, with only what the renderers use: name, diffuse colour and
+/// texture.
 fn load_mtl(path: &Path) -> Result<(Vec<tobj::Material>, HashMap<String, usize>)> {
     parse_mtl(&crate::file::read_text(path)?, path)
 }
@@ -188,13 +270,14 @@ pub(super) fn parse_mtl(
                 }
             }
             Some("map_Kd") => {
-                let material = materials.last().map_or("(none)", |m| m.name.as_str());
-                log::warn!(
-                    "{}: material {material}'s texture {} is not shown (the renderers draw \
-                     vertex and material colours only; its Kd colour is used)",
-                    path.display(),
-                    words.collect::<Vec<_>>().join(" ")
-                );
+                let args = words.collect::<Vec<_>>().join(" ");
+                if let Err(reason) = MapKd::parse(&args) {
+                    return Err(fail(i + 1, reason));
+                }
+                match materials.last_mut() {
+                    Some(material) => material.diffuse_texture = Some(args),
+                    None => return Err(fail(i + 1, "map_Kd before any newmtl".into())),
+                }
             }
             _ => {}
         }

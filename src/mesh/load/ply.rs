@@ -53,6 +53,7 @@ pub(super) fn parse(bytes: &[u8], path: &Path) -> Result<Mesh> {
         },
         positions: cloud.positions,
         indices: ply.triangles,
+        ..Mesh::default()
     };
     if cloud.normals.is_none() {
         mesh.compute_normals();

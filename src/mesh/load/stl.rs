@@ -63,6 +63,7 @@ pub(super) fn parse(bytes: &[u8], path: &Path) -> Result<Mesh> {
         normals: vec![Vec3::Z; n],
         colors: vec![DEFAULT_COLOR; n],
         indices,
+        ..Mesh::default()
     };
     mesh.compute_normals();
     for normal in &mut mesh.normals {

@@ -6,6 +6,7 @@
 use crate::camera::ViewUniform;
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
+use crate::mesh::texture_buffers::TEXTURE_GROUP;
 use crate::gpu::pass_params::PassParams;
 use crate::gpu::pipeline::{begin_pass_to, cleared, PassTargets};
 use crate::gpu::texture::{cached_texture_2d, Texture2d};
@@ -56,9 +57,10 @@ impl MeshNPass {
             )],
         });
         let module = crate::shader::module(device, "mesh/npass.wgsl")?;
+        let textures = crate::mesh::texture_buffers::texture_bind_group_layout(device);
         let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("mesh view"),
-            bind_group_layouts: &[Some(&frame_layout), Some(&view_layout)],
+            bind_group_layouts: &[Some(&frame_layout), Some(&view_layout), None, Some(&textures)],
             immediate_size: 0,
         });
         // A warp's references write their nearness too (fs_reference), else the colour only.
@@ -227,6 +229,7 @@ impl MeshNPass {
         pass.set_pipeline(&self.pipeline);
         pass.set_bind_group(0, &self.frame.bind_group, &[]);
         pass.set_bind_group(1, view_group, &[self.views.offset(view as usize)]);
+        pass.set_bind_group(TEXTURE_GROUP, &mesh.textures.bind_group, &[]);
         pass.set_vertex_buffer(0, mesh.vertices.slice(..));
         pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
         pass.draw_indexed(0..mesh.index_count, 0, 0..1);

@@ -4,6 +4,7 @@
 #import shared/multiview.wgsl
 #import shared/ray.wgsl
 #import mesh/shared/cover_data.wgsl
+#import mesh/shared/shade_hit.wgsl
 
 // `color` with subpixel c of pixel px (at frame position `position`) shaded from triangle `tri`.
 fn resolve_subpixel(color: vec3<f32>, position: vec2<f32>, px: vec2<u32>, c: u32, tri: u32) -> vec3<f32> {

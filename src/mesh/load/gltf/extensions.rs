@@ -1,9 +1,8 @@
 //! What a glTF file must be before it is read: version 2.0, and no required extension this
 //! reader does not decode (each named, with what to do).
 
-/// The extensions this reader decodes (none of the required kind: each changes how the data
-/// is read, and none of them is read here yet).
-const READ_EXTENSIONS: &[&str] = &[];
+/// The required extensions this reader decodes.
+const READ_EXTENSIONS: &[&str] = &["KHR_texture_transform"];
 
 /// What to do about a required extension this reader does not decode.
 fn extension_advice(name: &str) -> &'static str {

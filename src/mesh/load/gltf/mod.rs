@@ -1,28 +1,30 @@
 //! glTF 2.0 meshes (`.gltf` JSON with its buffers, `.glb` binary), through the `gltf` crate:
 //! every triangle primitive of the default scene (else the first), placed by its nodes'
 //! transforms, coloured by its vertex colours (`COLOR_0`) times its material's base colour
-//! factor. Textures are not shown (the renderers have no texture coordinates): a file with
-//! base-colour textures says so in the log. Buffers come from the GLB's binary chunk, `data:`
+//! factor times its base-colour texture (textures.rs). Buffers come from the GLB's binary chunk, `data:`
 //! URIs, or files beside the `.gltf` (relative paths without `..`, read bounded like every
 //! input); their declared lengths are checked, and the vertices every node instance adds up
 //! to are checked against the memory budget before anything is built.
 
 mod extensions;
+mod textures;
 use std::path::Path;
 
 use base64::Engine as _;
-use glam::{Mat3, Mat4, Vec3};
+use glam::{Mat3, Mat4, Vec2, Vec3};
 
 use crate::error::{Error, Result};
-use crate::mesh::{Mesh, DEFAULT_COLOR};
+use crate::mesh::{Mesh, DEFAULT_COLOR, NO_TEXTURE};
+use textures::Sampling;
 
 /// Deepest node nesting followed (a cycle or a pathological tree is refused, not recursed).
 const MAX_NODE_DEPTH: usize = 64;
 /// Most node visits of a scene (a tree whose nodes share children grows exponentially).
 const MAX_NODE_VISITS: usize = 1 << 20;
-/// Peak CPU bytes per vertex instance and per index: the mesh's position, normal and colour
-/// and the uploaded vertex (≈ 112, as for OBJ: src/mesh/load/obj.rs), and one u32 index.
-const BYTES_PER_VERTEX: u64 = 112;
+/// Peak CPU bytes per vertex instance and per index: the mesh's position, normal, colour,
+/// texture coordinate and id, and the uploaded vertex (≈ 140, as for OBJ:
+/// src/mesh/load/obj.rs), and one u32 index.
+const BYTES_PER_VERTEX: u64 = 140;
 const BYTES_PER_INDEX: u64 = 4;
 
 /// Load a `.gltf` or `.glb` file.
@@ -58,36 +60,36 @@ pub(super) fn parse(bytes: &[u8], path: &Path, dir: Option<&Path>) -> Result<Mes
     }
     check_budget(&instances).map_err(|e| fail(e.to_string()))?;
     let mut mesh = Mesh::default();
-    let mut textured = false;
-    let mut skipped = 0usize;
+    let mut textures = textures::Textures::new(gltf.document.as_json(), &buffers, dir, path);
+    let (mut skipped, mut without_coords) = (0usize, 0usize);
     for (node_mesh, transform) in &instances {
         for primitive in node_mesh.primitives() {
             let pbr = primitive.material().pbr_metallic_roughness();
-            textured |= primitive
-                .material()
-                .index()
-                .and_then(|m| gltf.document.as_json().materials.get(m))
-                .is_some_and(|m| m.pbr_metallic_roughness.base_color_texture.is_some());
             // Without a material glTF's default is white; the project's grey is kept then.
             let factor = match primitive.material().index() {
                 Some(_) => pbr.base_color_factor(),
                 None => DEFAULT_COLOR,
             };
-            match triangles(&primitive, &buffers).map_err(&fail)? {
-                Some(part) => append(&mut mesh, part, *transform, factor),
+            let sampling = textures.sampling(primitive.material().index());
+            match triangles(&primitive, &buffers, sampling.map(|s| s.set)).map_err(&fail)? {
+                Some(part) => {
+                    without_coords += (sampling.is_some() && part.tex_coords.is_none()) as usize;
+                    append(&mut mesh, part, *transform, factor, sampling)
+                }
                 None => skipped += 1,
             }
         }
     }
+    mesh.textures = textures.list;
     if mesh.indices.is_empty() {
         return Err(fail(
             "no triangles in the scene (points and lines are not drawn as meshes)".into(),
         ));
     }
-    if textured {
+    if without_coords > 0 {
         log::warn!(
-            "{}: base-colour textures are not shown (the renderers draw vertex and material \
-             colours only)",
+            "{}: {without_coords} textured primitives have no readable texture coordinates; \
+             they are drawn in their colours",
             path.display()
         );
     }
@@ -154,7 +156,7 @@ fn check_document(root: &gltf::json::Root) -> std::result::Result<(), String> {
     for view in &root.buffer_views {
         exists(view.buffer.value(), root.buffers.len(), "buffer")?;
     }
-    Ok(())
+    textures::check_indices(root)
 }
 
 /// An accessor the reader may read: one of `types` (component type and dimensions), at least
@@ -236,7 +238,7 @@ fn buffer_data<'a>(
         .collect()
 }
 
-/// A buffer's bytes from a `data:` URI or a file beside the glTF.
+/// A buffer's or image's bytes from a `data:` URI or a file beside the glTF.
 fn uri_data(uri: &str, dir: Option<&Path>) -> std::result::Result<Vec<u8>, String> {
     if let Some(data) = uri.strip_prefix("data:") {
         let (_, encoded) = data
@@ -340,18 +342,21 @@ fn check_budget(instances: &[(gltf::Mesh, Mat4)]) -> Result<()> {
     )
 }
 
-/// One primitive's positions, normals, colours and triangle indices; `None` for points and
-/// lines.
+/// One primitive's positions, normals, colours, texture coordinates and triangle indices;
+/// `None` for points and lines.
 struct Part {
     positions: Vec<Vec3>,
     normals: Option<Vec<Vec3>>,
     colors: Option<Vec<[f32; 4]>>,
+    tex_coords: Option<Vec<[f32; 2]>>,
     indices: Vec<u32>,
 }
 
+/// The triangles of `primitive`, with texture coordinate set `set` where given.
 fn triangles(
     primitive: &gltf::Primitive,
     buffers: &[std::borrow::Cow<'_, [u8]>],
+    set: Option<u32>,
 ) -> std::result::Result<Option<Part>, String> {
     use gltf::accessor::{DataType as T, Dimensions as D};
     use gltf::mesh::Mode;
@@ -378,6 +383,8 @@ fn triangles(
     let normals_ok = usable(Semantic::Normals, &[(T::F32, D::Vec3)]);
     let colour_types = [T::U8, T::U16, T::F32].map(|t| [(t, D::Vec3), (t, D::Vec4)]);
     let colors_ok = usable(Semantic::Colors(0), colour_types.as_flattened());
+    let coord_types = [(T::F32, D::Vec2), (T::U8, D::Vec2), (T::U16, D::Vec2)];
+    let coords_ok = set.is_some_and(|set| usable(Semantic::TexCoords(set), &coord_types));
     if let Some(indices) = primitive.indices() {
         let types = [(T::U8, D::Scalar), (T::U16, D::Scalar), (T::U32, D::Scalar)];
         check_accessor(&indices, buffers, "indices", &types, None)?;
@@ -398,6 +405,11 @@ fn triangles(
         .read_colors(0)
         .filter(|_| colors_ok)
         .map(|it| it.into_rgba_f32().collect::<Vec<_>>())
+        .filter(|v| v.len() == n);
+    let tex_coords = set
+        .filter(|_| coords_ok)
+        .and_then(|set| reader.read_tex_coords(set))
+        .map(|it| it.into_f32().collect::<Vec<_>>())
         .filter(|v| v.len() == n);
     let order: Vec<u32> = match reader.read_indices() {
         Some(indices) => indices.into_u32().collect(),
@@ -425,12 +437,20 @@ fn triangles(
         positions,
         normals,
         colors,
+        tex_coords,
         indices,
     }))
 }
 
-/// Add `part` placed by `transform`, its colours times `factor`.
-fn append(mesh: &mut Mesh, part: Part, transform: Mat4, factor: [f32; 4]) {
+/// Add `part` placed by `transform`, its colours times `factor`, textured as `sampling` says
+/// where it has the coordinates.
+fn append(
+    mesh: &mut Mesh,
+    part: Part,
+    transform: Mat4,
+    factor: [f32; 4],
+    sampling: Option<Sampling>,
+) {
     let base = mesh.positions.len() as u32;
     let normal_matrix = Mat3::from_mat4(transform).inverse().transpose();
     let mut part_mesh = Mesh {
@@ -454,9 +474,29 @@ fn append(mesh: &mut Mesh, part: Part, transform: Mat4, factor: [f32; 4]) {
             None => vec![factor; part.positions.len()],
         },
         indices: part.indices,
+        ..Mesh::default()
     };
     if part.normals.is_none() {
         part_mesh.compute_normals();
+    }
+    let n = part_mesh.positions.len();
+    match (sampling, &part.tex_coords) {
+        (Some(sampling), Some(coords)) => {
+            if mesh.tex_coords.is_empty() {
+                mesh.tex_coords = vec![Vec2::ZERO; mesh.positions.len()];
+                mesh.texture_ids = vec![NO_TEXTURE; mesh.positions.len()];
+            }
+            mesh.tex_coords
+                .extend(coords.iter().map(|&uv| sampling.apply(uv)));
+            mesh.texture_ids
+                .extend(std::iter::repeat_n(sampling.texture, n));
+        }
+        _ if !mesh.tex_coords.is_empty() => {
+            mesh.tex_coords.extend(std::iter::repeat_n(Vec2::ZERO, n));
+            mesh.texture_ids
+                .extend(std::iter::repeat_n(NO_TEXTURE, n));
+        }
+        _ => {}
     }
     mesh.positions.extend(part_mesh.positions);
     mesh.normals.extend(part_mesh.normals);

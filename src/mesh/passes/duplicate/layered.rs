@@ -8,6 +8,7 @@
 use super::{batches, draw_mesh, mesh_pipeline, BatchedViews, BoundBatches};
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
+use crate::mesh::texture_buffers::{texture_bind_group_layout, TEXTURE_GROUP};
 use crate::gpu::pipeline::{begin_pass_to, cleared, multiview_mask, PassTargets};
 use crate::mesh::passes::npass::{MeshNPass, PreparedFor};
 use crate::mesh::MeshBuffers;
@@ -83,7 +84,7 @@ impl Multiview {
         let layout = crate::gpu::pipeline::pipeline_layout(
             device,
             "mesh layered",
-            &[Some(&frame_layout), Some(&views.layout)],
+            &[Some(&frame_layout), Some(&views.layout), None, Some(&texture_bind_group_layout(device))],
         );
         Ok(Self {
             views,
@@ -151,6 +152,7 @@ impl Multiview {
             pass.set_pipeline(self.pipelines.get(&count)?);
             pass.set_bind_group(0, &self.frame.bind_group, &[]);
             pass.set_bind_group(1, &group, &[self.views.offset(i)]);
+            pass.set_bind_group(TEXTURE_GROUP, &mesh.textures.bind_group, &[]);
             draw_mesh(&mut pass, mesh, 1);
         }
         self.npass.composite(device, encoder, &self.frame, target)?;

@@ -8,6 +8,7 @@
 use super::{batches, draw_mesh, mesh_pipeline, BatchedViews, BoundBatches};
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
+use crate::mesh::texture_buffers::{texture_bind_group_layout, TEXTURE_GROUP};
 use crate::gpu::pipeline::{begin_pass_to, cleared, pipeline_layout, PassTargets};
 use crate::mesh::passes::npass::PreparedFor;
 use crate::mesh::MeshBuffers;
@@ -47,7 +48,7 @@ impl MeshMrt {
         let layout = pipeline_layout(
             device,
             "mesh mrt",
-            &[Some(&frame_layout), Some(&views.layout)],
+            &[Some(&frame_layout), Some(&views.layout), None, Some(&texture_bind_group_layout(device))],
         );
         Ok(Self {
             views,
@@ -131,6 +132,7 @@ impl Renderer<MeshBuffers> for MeshMrt {
             pass.set_pipeline(self.pipelines.get(&targets)?);
             pass.set_bind_group(0, &self.frame.bind_group, &[]);
             pass.set_bind_group(1, &group, &[self.views.offset(i)]);
+            pass.set_bind_group(TEXTURE_GROUP, &mesh.textures.bind_group, &[]);
             draw_mesh(&mut pass, mesh, targets);
         }
         self.npass.composite(device, encoder, &self.frame, target)?;

@@ -5,6 +5,7 @@
 use super::{draw_mesh, mesh_pipeline, views_buffer, views_entry};
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
+use crate::mesh::texture_buffers::{texture_bind_group_layout, TEXTURE_GROUP};
 use crate::gpu::pipeline::{
     begin_pass_to, bind_group_layout, cleared, pipeline_layout, uniform_entry, PassTargets,
 };
@@ -67,7 +68,7 @@ impl MeshTiled {
         let layout = pipeline_layout(
             device,
             "mesh tiled",
-            &[Some(&frame_layout), Some(&views_layout)],
+            &[Some(&frame_layout), Some(&views_layout), None, Some(&texture_bind_group_layout(device))],
         );
         let targets = [Some(SPATIAL_FORMAT.into())];
         let pipeline = mesh_pipeline(device, "mesh tiled", &module, &layout, &targets, None)?;
@@ -156,6 +157,7 @@ impl Renderer<MeshBuffers> for MeshTiled {
             pass.set_pipeline(&self.pipeline);
             pass.set_bind_group(0, &self.frame.bind_group, &[]);
             pass.set_bind_group(1, &group, &[]);
+            pass.set_bind_group(TEXTURE_GROUP, &mesh.textures.bind_group, &[]);
             draw_mesh(&mut pass, mesh, frame.camera.views);
         }
         self.compositor.encode(

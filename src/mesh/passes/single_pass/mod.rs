@@ -28,6 +28,7 @@ use crate::gpu::dispatch::dispatch_2d;
 use crate::gpu::pipeline::{begin_pass, cleared, draw_fullscreen};
 use crate::gpu::storage_fence::StorageFence;
 use crate::mesh::options::{CoverBounds, Visibility};
+use crate::mesh::texture_buffers::TEXTURE_GROUP;
 use crate::mesh::MeshBuffers;
 use crate::render::pipeline_cache::PipelineCache;
 use crate::render::specialize::Specialization;
@@ -217,6 +218,9 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
             if let Some(keys) = &groups.keys_write {
                 pass.set_bind_group(2, keys, &[]);
             }
+            if self.options.visibility == Visibility::Fast {
+                pass.set_bind_group(TEXTURE_GROUP, &mesh.textures.bind_group, &[]);
+            }
             pass.draw(0..triangles * 6, 0..1);
         }
         if let (Some(resolve), Some(visible)) = (&pipelines.resolve, &groups.visible) {
@@ -224,7 +228,12 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
                 encoder,
                 "mesh single pass (resolve)",
                 resolve,
-                &[&self.frame.bind_group, &groups.mesh, visible],
+                &[
+                    &self.frame.bind_group,
+                    &groups.mesh,
+                    visible,
+                    &mesh.textures.bind_group,
+                ],
                 &target.view,
             );
         }

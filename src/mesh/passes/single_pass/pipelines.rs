@@ -28,6 +28,8 @@ pub(super) struct Layouts {
     pub keys_read: wgpu::BindGroupLayout,
     /// Subpixel triangle ids (subpixel resolve).
     pub triangle_ids: wgpu::BindGroupLayout,
+    /// The mesh's textures (group 3 of the stages that shade: fast geometry, resolves).
+    pub textures: wgpu::BindGroupLayout,
 }
 
 impl Layouts {
@@ -74,6 +76,7 @@ impl Layouts {
                     count: None,
                 }],
             ),
+            textures: crate::mesh::texture_buffers::texture_bind_group_layout(device),
         }
     }
 }
@@ -181,7 +184,13 @@ pub(super) fn build(
                     label: Some(stage),
                     layout: Some(&layout_of(
                         stage,
-                        &[Some(&layouts.frame), Some(&layouts.mesh), keys_write],
+                        &[
+                            Some(&layouts.frame),
+                            Some(&layouts.mesh),
+                            keys_write,
+                            // Only the fast pass shades as it rasterises.
+                            (options.visibility == Visibility::Fast).then_some(&layouts.textures),
+                        ],
                     )),
                     vertex: wgpu::VertexState {
                         module: &module,
@@ -222,7 +231,12 @@ pub(super) fn build(
             device,
             stage,
             &modules.get(device, stage)?,
-            &[Some(&layouts.frame), Some(&layouts.mesh), Some(visible)],
+            &[
+                Some(&layouts.frame),
+                Some(&layouts.mesh),
+                Some(visible),
+                Some(&layouts.textures),
+            ],
             SPATIAL_FORMAT,
             &constants,
         )),
