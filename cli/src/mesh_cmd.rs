@@ -134,15 +134,23 @@ pub fn run(args: MeshArgs) -> Result<()> {
         &buffers,
         &frame,
         bounds,
-        serde_json::json!({ "triangles": mesh.triangle_count() }),
+        serde_json::json!({
+            "triangles": mesh.triangle_count(),
+            "textures": mesh.textures.len(),
+        }),
     )?;
     let method_name = plan.method.name();
     if plan.method == Method::SinglePass {
         fields["visibility"] = options.mesh_single_pass(device).visibility.name().into();
         fields["bounds"] = format!("{:?}", args.mesh.bounds).to_lowercase().into();
     }
+    let textures = match mesh.textures.len() {
+        0 => String::new(),
+        1 => " (1 texture)".into(),
+        n => format!(" ({n} textures)"),
+    };
     let summary = format!(
-        "{method_name}: {} triangles, {}",
+        "{method_name}: {} triangles{textures}, {}",
         mesh.triangle_count(),
         run_summary(&ctx, &plan, &frame, &run)
     );

@@ -165,10 +165,11 @@ impl Mesh {
                 }
                 false => {
                     self.tex_coords.extend_from_slice(&other.tex_coords);
-                    self.texture_ids.extend(other.texture_ids.iter().map(|&id| match id {
-                        NO_TEXTURE => NO_TEXTURE,
-                        id => id + first,
-                    }));
+                    self.texture_ids
+                        .extend(other.texture_ids.iter().map(|&id| match id {
+                            NO_TEXTURE => NO_TEXTURE,
+                            id => id + first,
+                        }));
                 }
             }
             self.textures.extend_from_slice(&other.textures);

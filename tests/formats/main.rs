@@ -7,6 +7,7 @@ mod common;
 
 mod bad_input;
 mod ct_windows;
+mod draco;
 mod every_format;
 mod fuzz_regressions;
 mod gaussians_formats;

@@ -24,7 +24,10 @@ fn png(w: u32, h: u32, color: impl Fn(u32, u32) -> [u8; 3]) -> Vec<u8> {
     let image = image::RgbImage::from_fn(w, h, |x, y| image::Rgb(color(x, y)));
     let mut bytes = Vec::new();
     image
-        .write_to(&mut std::io::Cursor::new(&mut bytes), image::ImageFormat::Png)
+        .write_to(
+            &mut std::io::Cursor::new(&mut bytes),
+            image::ImageFormat::Png,
+        )
         .unwrap();
     bytes
 }
@@ -63,11 +66,24 @@ fn quad(yaw: f32, uv_max: f32) -> ([[f32; 3]; 4], [[f32; 2]; 4]) {
 
 /// A GLB of `quad` with its image `png` in a buffer view, the texture's `sampler` JSON and the
 /// texture info's `extensions` JSON (empty for none).
-fn textured_glb(quad: ([[f32; 3]; 4], [[f32; 2]; 4]), png: &[u8], sampler: &str, ext: &str) -> Vec<u8> {
+fn textured_glb(
+    quad: ([[f32; 3]; 4], [[f32; 2]; 4]),
+    png: &[u8],
+    sampler: &str,
+    ext: &str,
+) -> Vec<u8> {
     let mut bin = Vec::new();
-    quad.0.iter().flatten().for_each(|v| bin.extend(v.to_le_bytes()));
-    quad.1.iter().flatten().for_each(|v| bin.extend(v.to_le_bytes()));
-    [0u16, 3, 1, 1, 3, 2].iter().for_each(|i| bin.extend(i.to_le_bytes()));
+    quad.0
+        .iter()
+        .flatten()
+        .for_each(|v| bin.extend(v.to_le_bytes()));
+    quad.1
+        .iter()
+        .flatten()
+        .for_each(|v| bin.extend(v.to_le_bytes()));
+    [0u16, 3, 1, 1, 3, 2]
+        .iter()
+        .for_each(|i| bin.extend(i.to_le_bytes()));
     bin.extend([0, 0]); // the image's view starts 4-aligned
     let image_at = bin.len();
     bin.extend(png);
@@ -91,7 +107,12 @@ fn textured_glb(quad: ([[f32; 3]; 4], [[f32; 2]; 4]), png: &[u8], sampler: &str,
 
 /// An OBJ of `quad` (OBJ's v up: v = 1 − glTF's v), its MTL with `map_Kd map`, and the PNG,
 /// written side by side; the OBJ's path.
-fn textured_obj(name: &str, quad: ([[f32; 3]; 4], [[f32; 2]; 4]), png: &[u8], map: &str) -> std::path::PathBuf {
+fn textured_obj(
+    name: &str,
+    quad: ([[f32; 3]; 4], [[f32; 2]; 4]),
+    png: &[u8],
+    map: &str,
+) -> std::path::PathBuf {
     let mut obj = format!("mtllib {name}.mtl\nusemtl checker\n");
     for p in quad.0 {
         obj += &format!("v {} {} {}\n", p[0], p[1], p[2]);
@@ -164,7 +185,9 @@ fn assert_every_method_matches(name: &str, mesh: &Mesh) -> RgbImage {
         let mut layered = MeshLayered::new(&device).unwrap();
         let image = common::render(&mut layered, &buffers, &frame);
         common::assert_matches(&format!("{name}-layered-{label}"), &image, &oracle);
-        oracle.save_png(&common::out(&format!("textures_{name}_{label}.png"))).unwrap();
+        oracle
+            .save_png(&common::out(&format!("textures_{name}_{label}.png")))
+            .unwrap();
         first.get_or_insert(oracle);
     }
     first.unwrap()
@@ -196,18 +219,29 @@ fn a_textured_gltf_renders_its_checker_in_every_method_as_the_npass_does() {
     assert!(mesh.is_textured());
     let image = assert_every_method_matches("gltf_checker", &mesh);
     let (red, blue) = red_and_blue(&image);
-    assert!(red > 0.05 && blue > 0.05, "red {red}, blue {blue}: the checker is not drawn");
+    assert!(
+        red > 0.05 && blue > 0.05,
+        "red {red}, blue {blue}: the checker is not drawn"
+    );
 }
 
 #[test]
 fn an_obj_with_map_kd_renders_its_checker_in_every_method_as_the_npass_does() {
-    let file = textured_obj("checker_obj", quad(-0.4, 2.0), &checker_png(), "-s 1 1 checker_obj.png");
+    let file = textured_obj(
+        "checker_obj",
+        quad(-0.4, 2.0),
+        &checker_png(),
+        "-s 1 1 checker_obj.png",
+    );
     let mesh = Mesh::load(&file).unwrap();
     assert_eq!(mesh.textures.len(), 1);
     assert_eq!(mesh.textures[0].wrap, [Wrap::Repeat; 2]);
     let image = assert_every_method_matches("obj_checker", &mesh);
     let (red, blue) = red_and_blue(&image);
-    assert!(red > 0.05 && blue > 0.05, "red {red}, blue {blue}: the checker is not drawn");
+    assert!(
+        red > 0.05 && blue > 0.05,
+        "red {red}, blue {blue}: the checker is not drawn"
+    );
 }
 
 /// The colour of the pixel a quarter of the way in from each corner of a one-view render of a
@@ -221,7 +255,9 @@ fn quadrant_colours(mesh: &Mesh) -> [[u8; 3]; 4] {
         &buffers,
         &frame(mesh, "lenticular:1", size),
     );
-    image.save_png(&common::out("textures_quadrants.png")).unwrap();
+    image
+        .save_png(&common::out("textures_quadrants.png"))
+        .unwrap();
     let at = |x: u32, y: u32| [0, 1, 2].map(|c| image.get(x, y, c));
     [at(26, 26), at(38, 26), at(26, 38), at(38, 38)]
 }
@@ -244,10 +280,23 @@ fn textures_land_the_right_way_up_and_the_transform_is_applied() {
         textured_glb(quad(0.0, 1.0), &quadrants_png(), nearest, ""),
     );
     let colours = quadrant_colours(&Mesh::load(&gltf).unwrap()).map(dominant);
-    assert_eq!(colours, ['r', 'g', 'b', 'y'], "glTF: top-left, top-right, bottom-left, bottom-right");
-    let obj = textured_obj("quadrants_obj", quad(0.0, 1.0), &quadrants_png(), "quadrants_obj.png");
+    assert_eq!(
+        colours,
+        ['r', 'g', 'b', 'y'],
+        "glTF: top-left, top-right, bottom-left, bottom-right"
+    );
+    let obj = textured_obj(
+        "quadrants_obj",
+        quad(0.0, 1.0),
+        &quadrants_png(),
+        "quadrants_obj.png",
+    );
     let colours = quadrant_colours(&Mesh::load(&obj).unwrap()).map(dominant);
-    assert_eq!(colours, ['r', 'g', 'b', 'y'], "OBJ (v up) lands as glTF does");
+    assert_eq!(
+        colours,
+        ['r', 'g', 'b', 'y'],
+        "OBJ (v up) lands as glTF does"
+    );
     // KHR_texture_transform: scale (−1, 1) with offset (1, 0) mirrors u: green and red swap.
     let mirrored = r#","extensions":{"KHR_texture_transform":{"offset":[1,0],"scale":[-1,1]}}"#;
     let gltf = common::input_file(
@@ -267,5 +316,8 @@ fn a_texture_that_cannot_be_read_is_said_and_the_mesh_drawn_in_its_colours() {
     let error = Mesh::check_mtl_text("newmtl m\nmap_Kd -s 2 2\n", std::path::Path::new("m.mtl"))
         .unwrap_err()
         .to_string();
-    assert!(error.contains("MTL line 2") && error.contains("names no file"), "{error}");
+    assert!(
+        error.contains("MTL line 2") && error.contains("names no file"),
+        "{error}"
+    );
 }

@@ -48,10 +48,13 @@ impl MapKd {
                     let Some(&u) = v.first() else {
                         return Err(format!("{option} without numbers"));
                     };
-                    let pair = Vec2::new(u, v.get(1).copied().unwrap_or(match *option {
-                        "-o" => 0.0,
-                        _ => u,
-                    }));
+                    let pair = Vec2::new(
+                        u,
+                        v.get(1).copied().unwrap_or(match *option {
+                            "-o" => 0.0,
+                            _ => u,
+                        }),
+                    );
                     match *option {
                         "-o" => map.offset = pair,
                         _ => map.scale = pair,
@@ -90,7 +93,11 @@ impl MapKd {
             crate::image_io::MAX_IMAGE_FILE_BYTES,
             "the image-file limit",
         )?;
-        let wrap = [if self.clamp { Wrap::Clamp } else { Wrap::Repeat }; 2];
+        let wrap = [if self.clamp {
+            Wrap::Clamp
+        } else {
+            Wrap::Repeat
+        }; 2];
         Texture::decode(&bytes, &path, wrap, Filter::Linear)
     }
 }

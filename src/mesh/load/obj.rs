@@ -209,14 +209,15 @@ impl ObjTextures<'_> {
         self.read.insert(material, read.clone());
         read
     }
-
 }
 
 /// Texture coordinates and ids (none) for `mesh`'s vertices up to `count`.
 fn pad_tex_coords(mesh: &mut Mesh, count: usize) {
     let missing = count.saturating_sub(mesh.tex_coords.len());
-    mesh.tex_coords.extend(std::iter::repeat_n(Vec2::ZERO, missing));
-    mesh.texture_ids.extend(std::iter::repeat_n(NO_TEXTURE, missing));
+    mesh.tex_coords
+        .extend(std::iter::repeat_n(Vec2::ZERO, missing));
+    mesh.texture_ids
+        .extend(std::iter::repeat_n(NO_TEXTURE, missing));
 }
 
 /// The materials of an MTL file, with only what the renderers use: name, diffuse colour and

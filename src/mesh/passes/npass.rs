@@ -6,10 +6,10 @@
 use crate::camera::ViewUniform;
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
-use crate::mesh::texture_buffers::TEXTURE_GROUP;
 use crate::gpu::pass_params::PassParams;
 use crate::gpu::pipeline::{begin_pass_to, cleared, PassTargets};
 use crate::gpu::texture::{cached_texture_2d, Texture2d};
+use crate::mesh::texture_buffers::TEXTURE_GROUP;
 use crate::mesh::MeshBuffers;
 use crate::param::Param;
 use crate::render::npass::NPassHarness;
@@ -60,7 +60,12 @@ impl MeshNPass {
         let textures = crate::mesh::texture_buffers::texture_bind_group_layout(device);
         let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("mesh view"),
-            bind_group_layouts: &[Some(&frame_layout), Some(&view_layout), None, Some(&textures)],
+            bind_group_layouts: &[
+                Some(&frame_layout),
+                Some(&view_layout),
+                None,
+                Some(&textures),
+            ],
             immediate_size: 0,
         });
         // A warp's references write their nearness too (fs_reference), else the colour only.

@@ -2,12 +2,12 @@
 //! reader does not decode (each named, with what to do).
 
 /// The required extensions this reader decodes.
-const READ_EXTENSIONS: &[&str] = &["KHR_texture_transform"];
+const READ_EXTENSIONS: &[&str] = &["KHR_texture_transform", "KHR_draco_mesh_compression"];
 
 /// What to do about a required extension this reader does not decode.
 fn extension_advice(name: &str) -> &'static str {
     match name {
-        "KHR_draco_mesh_compression" | "EXT_meshopt_compression" => {
+        "EXT_meshopt_compression" => {
             "its geometry is compressed; decompress it first, e.g. `npx @gltf-transform/cli \
              copy in.glb out.glb` (gltf-transform writes plain accessors)"
         }

@@ -6,6 +6,7 @@
 //! input); their declared lengths are checked, and the vertices every node instance adds up
 //! to are checked against the memory budget before anything is built.
 
+mod draco;
 mod extensions;
 mod textures;
 use std::path::Path;
@@ -60,7 +61,8 @@ pub(super) fn parse(bytes: &[u8], path: &Path, dir: Option<&Path>) -> Result<Mes
     }
     check_budget(&instances).map_err(|e| fail(e.to_string()))?;
     let mut mesh = Mesh::default();
-    let mut textures = textures::Textures::new(gltf.document.as_json(), &buffers, dir, path);
+    let root = gltf.document.as_json();
+    let mut textures = textures::Textures::new(root, &buffers, dir, path);
     let (mut skipped, mut without_coords) = (0usize, 0usize);
     for (node_mesh, transform) in &instances {
         for primitive in node_mesh.primitives() {
@@ -71,7 +73,7 @@ pub(super) fn parse(bytes: &[u8], path: &Path, dir: Option<&Path>) -> Result<Mes
                 None => DEFAULT_COLOR,
             };
             let sampling = textures.sampling(primitive.material().index());
-            match triangles(&primitive, &buffers, sampling.map(|s| s.set)).map_err(&fail)? {
+            match triangles(&primitive, root, &buffers, sampling.map(|s| s.set)).map_err(&fail)? {
                 Some(part) => {
                     without_coords += (sampling.is_some() && part.tex_coords.is_none()) as usize;
                     append(&mut mesh, part, *transform, factor, sampling)
@@ -141,7 +143,9 @@ fn check_document(root: &gltf::json::Root) -> std::result::Result<(), String> {
         }
     }
     for (i, a) in root.accessors.iter().enumerate() {
-        if a.sparse.is_some() || a.buffer_view.is_none() {
+        // An accessor without a view is zeros, or (KHR_draco_mesh_compression) decoded from
+        // the primitive's Draco stream; one read as plain data is checked when read.
+        if a.sparse.is_some() {
             return Err(format!("accessor {i}: sparse accessors are not read"));
         }
         if matches!(a.component_type, Checked::Invalid) || matches!(a.type_, Checked::Invalid) {
@@ -355,6 +359,7 @@ struct Part {
 /// The triangles of `primitive`, with texture coordinate set `set` where given.
 fn triangles(
     primitive: &gltf::Primitive,
+    root: &gltf::json::Root,
     buffers: &[std::borrow::Cow<'_, [u8]>],
     set: Option<u32>,
 ) -> std::result::Result<Option<Part>, String> {
@@ -369,6 +374,12 @@ fn triangles(
         return Ok(None);
     }
     let i = primitive.index();
+    if let Some(compressed) = draco::Compressed::of(primitive) {
+        return compressed
+            .decode(root, buffers, set)
+            .map(Some)
+            .map_err(|e| format!("primitive {i}: {e}"));
+    }
     let positions = primitive
         .get(&Semantic::Positions)
         .ok_or_else(|| format!("primitive {i} has no POSITION"))?;
@@ -493,8 +504,7 @@ fn append(
         }
         _ if !mesh.tex_coords.is_empty() => {
             mesh.tex_coords.extend(std::iter::repeat_n(Vec2::ZERO, n));
-            mesh.texture_ids
-                .extend(std::iter::repeat_n(NO_TEXTURE, n));
+            mesh.texture_ids.extend(std::iter::repeat_n(NO_TEXTURE, n));
         }
         _ => {}
     }

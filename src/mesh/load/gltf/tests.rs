@@ -82,11 +82,13 @@ fn gltf_1_and_required_extensions_are_named() {
         error.contains("glTF 1.0") && error.contains("only glTF 2.0"),
         "{error}"
     );
-    let draco = r#"{"asset": {"version": "2.0"}, "extensionsUsed": ["KHR_draco_mesh_compression"],
-        "extensionsRequired": ["KHR_draco_mesh_compression"], "meshes": [], "accessors": []}"#;
-    let error = parse(draco.as_bytes(), path, None).unwrap_err().to_string();
+    let meshopt = r#"{"asset": {"version": "2.0"}, "extensionsUsed": ["EXT_meshopt_compression"],
+        "extensionsRequired": ["EXT_meshopt_compression"], "meshes": [], "accessors": []}"#;
+    let error = parse(meshopt.as_bytes(), path, None)
+        .unwrap_err()
+        .to_string();
     assert!(
-        error.contains("requires KHR_draco_mesh_compression") && error.contains("gltf-transform"),
+        error.contains("requires EXT_meshopt_compression") && error.contains("gltf-transform"),
         "{error}"
     );
     let other = r#"{"asset": {"version": "2.0"}, "extensionsRequired": ["EXT_unheard_of"]}"#;

@@ -135,7 +135,8 @@ impl<'a> Textures<'a> {
 /// u' = cos·u + sin·v, v' = −sin·u + cos·v, as three.js and Babylon.js apply it.
 fn texture_transform(offset: [f32; 2], rotation: f32, scale: [f32; 2]) -> Mat3 {
     let (sin, cos) = rotation.sin_cos();
-    let translation = Mat3::from_cols_array(&[1.0, 0.0, 0.0, 0.0, 1.0, 0.0, offset[0], offset[1], 1.0]);
+    let translation =
+        Mat3::from_cols_array(&[1.0, 0.0, 0.0, 0.0, 1.0, 0.0, offset[0], offset[1], 1.0]);
     let rotation = Mat3::from_cols_array(&[cos, -sin, 0.0, sin, cos, 0.0, 0.0, 0.0, 1.0]);
     let scale = Mat3::from_diagonal(glam::Vec3::new(scale[0], scale[1], 1.0));
     translation * rotation * scale
@@ -193,7 +194,10 @@ mod tests {
         let expected = [[0.0, 1.0], [0.0, 0.5], [0.5, 0.5], [0.5, 1.0]];
         for (c, e) in corners.iter().zip(expected) {
             let p = m.transform_point2(Vec2::from(*c));
-            assert!((p - Vec2::from(e)).length() < 1e-5, "{c:?} → {p}, not {e:?}");
+            assert!(
+                (p - Vec2::from(e)).length() < 1e-5,
+                "{c:?} → {p}, not {e:?}"
+            );
         }
     }
 }

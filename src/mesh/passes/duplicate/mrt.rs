@@ -8,9 +8,9 @@
 use super::{batches, draw_mesh, mesh_pipeline, BatchedViews, BoundBatches};
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
-use crate::mesh::texture_buffers::{texture_bind_group_layout, TEXTURE_GROUP};
 use crate::gpu::pipeline::{begin_pass_to, cleared, pipeline_layout, PassTargets};
 use crate::mesh::passes::npass::PreparedFor;
+use crate::mesh::texture_buffers::{texture_bind_group_layout, TEXTURE_GROUP};
 use crate::mesh::MeshBuffers;
 use crate::render::npass::NPassHarness;
 use crate::render::pipeline_cache::PipelineCache;
@@ -48,7 +48,12 @@ impl MeshMrt {
         let layout = pipeline_layout(
             device,
             "mesh mrt",
-            &[Some(&frame_layout), Some(&views.layout), None, Some(&texture_bind_group_layout(device))],
+            &[
+                Some(&frame_layout),
+                Some(&views.layout),
+                None,
+                Some(&texture_bind_group_layout(device)),
+            ],
         );
         Ok(Self {
             views,

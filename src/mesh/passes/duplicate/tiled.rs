@@ -5,12 +5,12 @@
 use super::{draw_mesh, mesh_pipeline, views_buffer, views_entry};
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
-use crate::mesh::texture_buffers::{texture_bind_group_layout, TEXTURE_GROUP};
 use crate::gpu::pipeline::{
     begin_pass_to, bind_group_layout, cleared, pipeline_layout, uniform_entry, PassTargets,
 };
 use crate::mesh::options::TileClip;
 use crate::mesh::passes::npass::PreparedFor;
+use crate::mesh::texture_buffers::{texture_bind_group_layout, TEXTURE_GROUP};
 use crate::mesh::MeshBuffers;
 use crate::render::atlas::{Atlas, AtlasCompositor, TileSampling};
 use crate::render::quilt::QuiltLayout;
@@ -68,7 +68,12 @@ impl MeshTiled {
         let layout = pipeline_layout(
             device,
             "mesh tiled",
-            &[Some(&frame_layout), Some(&views_layout), None, Some(&texture_bind_group_layout(device))],
+            &[
+                Some(&frame_layout),
+                Some(&views_layout),
+                None,
+                Some(&texture_bind_group_layout(device)),
+            ],
         );
         let targets = [Some(SPATIAL_FORMAT.into())];
         let pipeline = mesh_pipeline(device, "mesh tiled", &module, &layout, &targets, None)?;
