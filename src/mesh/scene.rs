@@ -44,6 +44,8 @@ pub struct MeshBuffers {
     pub index_count: u32,
     /// Number of vertices.
     pub vertex_count: u32,
+    /// Whether any vertex samples a texture: the `TEXTURED` constant of the shading stages.
+    pub textured: bool,
     /// The textures, bound as group 3 by every mesh stage that shades.
     pub textures: super::texture_buffers::TextureBuffers,
     /// The buffers' share of the memory budget.
@@ -95,6 +97,7 @@ impl MeshBuffers {
             }),
             index_count: mesh.indices.len() as u32,
             vertex_count: mesh.positions.len() as u32,
+            textured: mesh.is_textured(),
             textures,
             _charge: charge,
         })

@@ -23,7 +23,8 @@ use crate::warp::references::{ReferenceImages, ReferenceRenderer, REFERENCE_NEAR
 /// N-pass or single-view mesh renderer. Holds pipelines and lazily sized scratch resources.
 pub struct MeshNPass {
     method: Method,
-    pipeline: wgpu::RenderPipeline,
+    /// Without textures and with (`MeshBuffers::textured`).
+    pipelines: [wgpu::RenderPipeline; 2],
     view_layout: wgpu::BindGroupLayout,
     frame: FrameBinding,
     npass: NPassHarness,
@@ -80,33 +81,36 @@ impl MeshNPass {
         } else {
             ("fs_main", &[Some(SPATIAL_FORMAT.into())])
         };
-        let pipeline = crate::gpu::checked(device, "building the mesh N-pass pipeline", || {
-            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                label: Some("mesh view"),
-                layout: Some(&layout),
-                vertex: wgpu::VertexState {
-                    module: &module,
-                    entry_point: Some("vs_main"),
-                    compilation_options: Default::default(),
-                    buffers: &[Some(MeshBuffers::vertex_layout())],
-                },
-                // No culling: OBJ winding is not reliable; shading is two-sided.
-                primitive: wgpu::PrimitiveState::default(),
-                depth_stencil: Some(nearest_depth_test()),
-                multisample: Default::default(),
-                fragment: Some(wgpu::FragmentState {
-                    module: &module,
-                    entry_point: Some(entry),
-                    compilation_options: Default::default(),
-                    targets,
-                }),
-                multiview_mask: None,
-                cache: None,
+        let pipeline = |textured: bool| {
+            let constants = [("TEXTURED", textured as u32 as f64)];
+            crate::gpu::checked(device, "building the mesh N-pass pipeline", || {
+                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                    label: Some("mesh view"),
+                    layout: Some(&layout),
+                    vertex: wgpu::VertexState {
+                        module: &module,
+                        entry_point: Some("vs_main"),
+                        compilation_options: Default::default(),
+                        buffers: &[Some(MeshBuffers::vertex_layout())],
+                    },
+                    // No culling: OBJ winding is not reliable; shading is two-sided.
+                    primitive: wgpu::PrimitiveState::default(),
+                    depth_stencil: Some(nearest_depth_test()),
+                    multisample: Default::default(),
+                    fragment: Some(wgpu::FragmentState {
+                        module: &module,
+                        entry_point: Some(entry),
+                        compilation_options: crate::gpu::pipeline::compilation(&constants),
+                        targets,
+                    }),
+                    multiview_mask: None,
+                    cache: None,
+                })
             })
-        })?;
+        };
         Ok(Self {
             method,
-            pipeline,
+            pipelines: [pipeline(false)?, pipeline(true)?],
             npass: NPassHarness::new(device, &frame_layout)?,
             frame: FrameBinding::new(device, &frame_layout),
             view_layout,
@@ -231,7 +235,7 @@ impl MeshNPass {
                 multiview_mask: None,
             },
         );
-        pass.set_pipeline(&self.pipeline);
+        pass.set_pipeline(&self.pipelines[mesh.textured as usize]);
         pass.set_bind_group(0, &self.frame.bind_group, &[]);
         pass.set_bind_group(1, view_group, &[self.views.offset(view as usize)]);
         pass.set_bind_group(TEXTURE_GROUP, &mesh.textures.bind_group, &[]);

@@ -17,6 +17,10 @@ struct MeshTexture {
 }
 
 const NO_TEXTURE: u32 = 0xffffffffu;
+// False for a mesh without textures: the sampling is compiled out. (A software rasteriser runs
+// both sides of a branch under a mask, so the untaken texture fetches would cost every mesh
+// 1.5–3×; src/mesh/scene.rs's `textured` sets it.)
+override TEXTURED: bool = true;
 const WRAP_CLAMP: u32 = 1u;
 const WRAP_MIRROR: u32 = 2u;
 const FILTER_NEAREST: u32 = 0u;
@@ -50,7 +54,7 @@ fn texel(t: MeshTexture, x: i32, y: i32) -> vec3<f32> {
 // The colour texture `id` gives texture coordinate `uv` ((0, 0) the image's top-left corner);
 // white for NO_TEXTURE, so untextured vertices keep their colour.
 fn texture_color(id: u32, uv: vec2<f32>) -> vec3<f32> {
-    if (id == NO_TEXTURE) {
+    if (!TEXTURED || id == NO_TEXTURE) {
         return vec3<f32>(1.0);
     }
     let t = mesh_textures[id];

@@ -61,7 +61,8 @@ pub struct MeshSinglePass {
     options: MeshSinglePassOptions,
     frame: FrameBinding,
     layouts: Layouts,
-    pipelines: PipelineCache<Specialization, Pipelines>,
+    /// Per display specialisation and whether the mesh is textured.
+    pipelines: PipelineCache<(Specialization, bool), Pipelines>,
     scratch: Scratch,
     prepared: Option<PreparedFor>,
     /// The parallel camera model's crop, recorded last.
@@ -132,9 +133,11 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
         frame.check_full_views("single-pass")?;
         let key = PreparedFor::of(frame, mesh);
         let (layouts, options) = (&self.layouts, self.options);
-        self.pipelines.prepare(device, key.spec, |modules| {
-            pipelines::build(device, modules, layouts, options, key.spec)
-        })?;
+        let textured = mesh.textured;
+        self.pipelines
+            .prepare(device, (key.spec, textured), |modules| {
+                pipelines::build(device, modules, layouts, options, key.spec, textured)
+            })?;
         self.scratch
             .prepare(device, self.options.visibility, frame, key.triangles)?;
         self.prepared = Some(key);
@@ -155,7 +158,7 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
         check_prepared("MeshSinglePass", &self.prepared, &key)?;
         let (spec, triangles) = (key.spec, key.triangles);
         self.frame.write(device, frame);
-        let pipelines = self.pipelines.get(&spec)?;
+        let pipelines = self.pipelines.get(&(spec, mesh.textured))?;
         let groups =
             self.scratch
                 .bind_groups(device, &self.layouts, self.options.visibility, mesh)?;

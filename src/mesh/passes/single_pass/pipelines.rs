@@ -136,6 +136,7 @@ pub(super) fn build(
     layouts: &Layouts,
     options: MeshSinglePassOptions,
     spec: Specialization,
+    textured: bool,
 ) -> Result<Pipelines> {
     let paper = (options.bounds == CoverBounds::Paper) as u32 as f64;
     let subpixel_samples = options.visibility == Visibility::Exact && spec.views_per_pixel > 1;
@@ -143,6 +144,12 @@ pub(super) fn build(
     let cover_constants = spec.constants(&[("PAPER_BOUNDS", paper), ("COVER_PADDING_PX", padding)]);
     let compute_constants = spec.constants(&[("PAPER_BOUNDS", paper)]);
     let constants = spec.constants(&[]);
+    // The stages that shade (fast geometry, resolves) declare TEXTURED; the others do not.
+    let shading = spec.constants(&[("TEXTURED", textured as u32 as f64)]);
+    let geometry_constants = match options.visibility {
+        Visibility::Fast => &shading,
+        _ => &constants,
+    };
 
     let layout_of =
         |label, groups: &[Option<&wgpu::BindGroupLayout>]| pipeline_layout(device, label, groups);
@@ -209,7 +216,7 @@ pub(super) fn build(
                     fragment: Some(wgpu::FragmentState {
                         module: &module,
                         entry_point: Some("fs_main"),
-                        compilation_options: compilation(&constants),
+                        compilation_options: compilation(geometry_constants),
                         targets: &[Some(target)],
                     }),
                     multiview_mask: None,
@@ -238,7 +245,7 @@ pub(super) fn build(
                 Some(&layouts.textures),
             ],
             SPATIAL_FORMAT,
-            &constants,
+            &shading,
         )),
         None => None,
     };
