@@ -36,11 +36,7 @@ impl Compressed {
             .buffer_views
             .get(self.view)
             .ok_or_else(|| fail("does not exist".into()))?;
-        let buffer = &buffers[view.buffer.value()];
-        let start = view.byte_offset.map_or(0, |o| o.0 as usize);
-        let bytes = start
-            .checked_add(view.byte_length.0 as usize)
-            .and_then(|end| buffer.get(start..end))
+        let bytes = super::uri::view_bytes(view, buffers)
             .ok_or_else(|| fail("runs past its buffer".into()))?;
         let budget = crate::budget::Budget::current().max();
         let limits = DecodeLimits::default().with_max_decoded_bytes(budget / 4);

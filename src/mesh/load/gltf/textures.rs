@@ -111,15 +111,11 @@ impl<'a> Textures<'a> {
         let name = Path::new(image.uri.as_deref().unwrap_or("")).to_path_buf();
         let bytes: Vec<u8> = match (image.buffer_view, &image.uri) {
             (Some(view), _) => {
-                let view = &self.root.buffer_views[view.value()];
-                let buffer = &self.buffers[view.buffer.value()];
-                let start = view.byte_offset.map_or(0, |o| o.0 as usize);
-                let end = start.checked_add(view.byte_length.0 as usize);
-                end.and_then(|end| buffer.get(start..end))
+                super::uri::view_bytes(&self.root.buffer_views[view.value()], self.buffers)
                     .ok_or("its buffer view runs past its buffer")?
                     .to_vec()
             }
-            (None, Some(uri)) => super::uri_data(uri, self.dir)?,
+            (None, Some(uri)) => super::uri::uri_data(uri, self.dir)?,
             (None, None) => return Err("its image has neither a buffer view nor a URI".into()),
         };
         let label = match name.as_os_str().is_empty() || name.starts_with("data:") {
