@@ -36,13 +36,12 @@ impl AnyScene {
             AnyData::Points(points) => {
                 AnyScene::Points(SplatScene::new(device, &points.splats, points.groups)?)
             }
-            AnyData::Volume(v) => AnyScene::Volume(Box::new(VolumeScene::new(
-                device,
-                queue,
-                &v.volume,
-                v.transfer.clone(),
-                v.model,
-            )?)),
+            AnyData::Volume(v) => {
+                let mut scene =
+                    VolumeScene::new(device, queue, &v.volume, v.transfer.clone(), v.model)?;
+                scene.clip = v.clip.clone();
+                AnyScene::Volume(Box::new(scene))
+            }
             AnyData::Gaussians(gaussians) => {
                 AnyScene::Gaussians(GaussianScene::new(device, gaussians)?)
             }

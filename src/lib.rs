@@ -49,8 +49,8 @@ pub use data_kind::DataKind;
 pub use error::{Error, Result};
 pub use gaussians::GaussianOptions;
 pub use load::{
-    complete, default_preset, default_preset_for, load, resampled, AnyData, LoadOptions, MeshLoad,
-    PointData, PointLoad, VolumeData, VolumeLoad,
+    complete, default_preset, default_preset_for, load, resampled, AnyData, GaussianLoad,
+    LoadOptions, MeshLoad, PointData, PointLoad, VolumeData, VolumeLoad,
 };
 pub use mesh::MeshOptions;
 pub use options::RendererOptions;

@@ -32,6 +32,8 @@ pub struct LoadOptions {
     pub points: PointLoad,
     /// Volumes.
     pub volume: VolumeLoad,
+    /// Gaussian splats.
+    pub gaussians: GaussianLoad,
     /// The memory budget the reading is checked against; `None`: the current one
     /// ([`crate::budget::Budget::current`]).
     pub budget: Option<crate::budget::Budget>,
@@ -51,6 +53,17 @@ pub struct PointLoad {
     pub radius_scale: f32,
     /// How the splats are grouped on the GPU ([`crate::points::SplatScene::new`]).
     pub groups: GroupCount,
+    /// Keep only the points in this box (world units of the file), before normals and radii
+    /// are estimated ([`PointCloud::cropped`]).
+    pub crop: Option<crate::camera::Bounds>,
+}
+
+/// How Gaussian splats are prepared.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct GaussianLoad {
+    /// Keep only the Gaussians whose means lie in this box (world units of the file):
+    /// [`Gaussians::cropped`].
+    pub crop: Option<crate::camera::Bounds>,
 }
 
 impl Default for PointLoad {
@@ -58,6 +71,7 @@ impl Default for PointLoad {
         Self {
             radius_scale: 1.0,
             groups: GroupCount::Auto,
+            crop: None,
         }
     }
 }
@@ -125,6 +139,8 @@ pub struct VolumeData {
     pub preset: Option<&'static str>,
     /// Placed by this matrix after the volume's own axes.
     pub model: Mat4,
+    /// Clipping planes its scene keeps ([`crate::volume::VolumeScene::clip`]); none at load.
+    pub clip: Vec<crate::volume::ClipPlane>,
 }
 
 impl VolumeData {
@@ -135,6 +151,7 @@ impl VolumeData {
             volume,
             preset: Some(preset),
             model,
+            clip: Vec::new(),
         })
     }
 }
@@ -211,7 +228,13 @@ fn load_in_budget(path: &Path, options: &LoadOptions) -> Result<AnyData> {
             Ok(AnyData::Points(complete(&cloud, &options.points)?))
         }
         DataKind::Volume => Ok(AnyData::Volume(Box::new(volume(path, &options.volume)?))),
-        DataKind::Gaussians => Ok(AnyData::Gaussians(Gaussians::load(path)?)),
+        DataKind::Gaussians => {
+            let gaussians = Gaussians::load(path)?;
+            Ok(AnyData::Gaussians(match options.gaussians.crop {
+                Some(keep) => gaussians.cropped(keep)?,
+                None => gaussians,
+            }))
+        }
         DataKind::Image => Err(Error::WrongKind {
             path: path.into(),
             holds: DataKind::Image,
@@ -223,7 +246,11 @@ fn load_in_budget(path: &Path, options: &LoadOptions) -> Result<AnyData> {
 
 /// `cloud` completed into splats as `options` say.
 pub fn complete(cloud: &PointCloud, options: &PointLoad) -> Result<PointData> {
-    let (splats, completion) = cloud.complete(options.radius_scale)?;
+    let cropped = options.crop.map(|keep| cloud.cropped(keep)).transpose()?;
+    let (splats, completion) = cropped
+        .as_ref()
+        .unwrap_or(cloud)
+        .complete(options.radius_scale)?;
     Ok(PointData {
         splats,
         completion,
@@ -266,6 +293,7 @@ fn volume(path: &Path, options: &VolumeLoad) -> Result<VolumeData> {
         transfer,
         preset,
         model: options.model,
+        clip: Vec::new(),
     })
 }
 

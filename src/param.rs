@@ -73,6 +73,8 @@ pub enum Param {
     Projection,
     /// A box of the data to keep.
     Crop,
+    /// Clipping planes of a volume.
+    Clip,
     /// A video's frames per second.
     FrameRate,
     /// A video's bit rate.
@@ -149,7 +151,7 @@ pub enum Param {
 
 impl Param {
     /// Every parameter.
-    pub const ALL: [Param; 70] = [
+    pub const ALL: [Param; 71] = [
         Param::Aspect,
         Param::Bands,
         Param::Camera,
@@ -184,6 +186,7 @@ impl Param {
         Param::Window,
         Param::Projection,
         Param::Crop,
+        Param::Clip,
         Param::FrameRate,
         Param::BitRate,
         Param::RadiusScale,
@@ -259,6 +262,7 @@ impl Param {
             Param::Window => "window",
             Param::Projection => "projection",
             Param::Crop => "crop box",
+            Param::Clip => "clipping planes",
             Param::FrameRate => "frame rate",
             Param::BitRate => "bit rate",
             Param::RadiusScale => "radius scale",

@@ -39,6 +39,7 @@ pub fn flag_of(param: Param) -> Option<&'static str> {
         Param::Window => "--window",
         Param::Projection => "--projection",
         Param::Crop => "--crop",
+        Param::Clip => "--clip",
         Param::BitRate => "--bitrate",
         Param::Aspect
         | Param::Bands

@@ -21,6 +21,8 @@ pub struct GaussiansArgs {
     common: RenderArgs,
     #[command(flatten, next_help_heading = "Method")]
     gaussians: GaussianFlags,
+    #[command(flatten)]
+    crop: crate::crop_box_arg::CropBoxArgs,
 }
 
 /// How Gaussian splats are rendered: the flags `gaussians` and `view` share.
@@ -52,12 +54,20 @@ impl GaussianFlags {
     }
 
     /// The Gaussians in `file`, the generated scene without one.
-    pub fn load(&self, file: Option<&Path>) -> Result<Gaussians> {
-        Ok(match file {
+    pub fn load(
+        &self,
+        file: Option<&Path>,
+        crop: crate::crop_box_arg::CropBoxArgs,
+    ) -> Result<Gaussians> {
+        let gaussians = match file {
             Some(path) => {
                 crate::progress::during(&crate::progress::loading(path), || Gaussians::load(path))?
             }
             None => builtin_scene(),
+        };
+        Ok(match crop.crop_box {
+            Some(keep) => gaussians.cropped(keep)?,
+            None => gaussians,
         })
     }
 
@@ -87,7 +97,7 @@ pub fn run(args: GaussiansArgs) -> Result<()> {
     )?;
     args.gaussians.check(plan.method)?;
     let start = Instant::now();
-    let gaussians = args.gaussians.load(args.file.as_deref())?;
+    let gaussians = args.gaussians.load(args.file.as_deref(), args.crop)?;
     let load_ms = start.elapsed().as_secs_f64() * 1e3;
     gaussians.validate()?;
     let bounds = gaussians

@@ -3,6 +3,7 @@
 mod args;
 mod camera_args;
 mod claims;
+mod crop_box_arg;
 #[cfg(test)]
 mod doc_examples;
 mod examples;

@@ -24,6 +24,8 @@ pub struct PointsArgs {
     warp: crate::warp_cmd::WarpArgs,
     #[command(flatten, next_help_heading = "Method")]
     points: PointFlags,
+    #[command(flatten)]
+    crop: crate::crop_box_arg::CropBoxArgs,
 }
 
 /// How a point cloud is prepared and rendered: the flags `points` and `view` share.
@@ -72,16 +74,21 @@ impl PointFlags {
     }
 
     /// How the library prepares a point cloud (`autostereo::load`).
-    pub fn load_options(&self) -> autostereo::PointLoad {
+    pub fn load_options(&self, crop: crate::crop_box_arg::CropBoxArgs) -> autostereo::PointLoad {
         autostereo::PointLoad {
             radius_scale: self.radius_scale,
             groups: self.groups,
+            crop: crop.crop_box,
         }
     }
 
-    /// `cloud` completed into splats as the flags say.
-    pub fn complete(&self, cloud: &PointCloud) -> Result<autostereo::PointData> {
-        Ok(autostereo::complete(cloud, &self.load_options())?)
+    /// `cloud` cropped and completed into splats as the flags say.
+    pub fn complete(
+        &self,
+        cloud: &PointCloud,
+        crop: crate::crop_box_arg::CropBoxArgs,
+    ) -> Result<autostereo::PointData> {
+        Ok(autostereo::complete(cloud, &self.load_options(crop))?)
     }
 
     /// The cloud in `file`, the generated torus scene without one.
@@ -128,7 +135,9 @@ pub fn run(args: PointsArgs) -> Result<()> {
     let start = Instant::now();
     let cloud = PointFlags::cloud(args.file.as_deref())?;
     let load_ms = start.elapsed().as_secs_f64() * 1e3;
-    let (splats, completion) = cloud.complete(args.points.radius_scale)?;
+    let autostereo::PointData {
+        splats, completion, ..
+    } = args.points.complete(&cloud, args.crop)?;
     drop(cloud);
     let bounds = splats.bounds().expect("complete() rejects empty clouds");
     let frame = plan.frame(bounds)?;

@@ -93,6 +93,12 @@ pub struct VolumeDataArgs {
     /// (`--crop 0,0,40,511,511,80` or `--crop 20,20,0,180,180,60mm`).
     #[arg(long, value_name = "X0,Y0,Z0,X1,Y1,Z1[mm]", value_parser = parse_crop)]
     crop: Option<autostereo::volume::Crop>,
+    /// Clip the volume by a plane, keeping one side (repeat for up to 6, every method):
+    /// `x<40` keeps voxels below x = 40, `z>12.5mm` the part beyond 12.5 mm, `NX,NY,NZ,D` the
+    /// points with NX·x + NY·y + NZ·z ≤ D — in voxels, or with `mm` after it in the spacing's
+    /// units, from the first voxel's corner of the volume as rendered (after --crop).
+    #[arg(long, value_name = "AXIS<V|AXIS>V|NX,NY,NZ,D[mm]", value_parser = parse_clip, allow_hyphen_values = true)]
+    clip: Vec<ClipArg>,
     /// Average blocks of F³ voxels first (for volumes over the adapter's 3D texture limit).
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=256))]
     downsample: u32,
@@ -148,6 +154,12 @@ impl VolumeDataArgs {
     /// --tf (else the preset of its format) and placed by --rotate: by the library's
     /// [`autostereo::load`] for a file.
     pub fn load(&self, file: Option<&Path>) -> Result<VolumeData> {
+        let mut data = self.load_unclipped(file)?;
+        data.clip = self.clip_planes(&data.volume);
+        Ok(data)
+    }
+
+    fn load_unclipped(&self, file: Option<&Path>) -> Result<VolumeData> {
         let raw = self.raw_dims.is_some()
             || self.raw_type.is_some()
             || self.raw_big_endian
@@ -261,6 +273,11 @@ impl VolumeDataArgs {
         }
     }
 
+    /// The --clip planes for `volume` (the volume as rendered).
+    pub fn clip_planes(&self, volume: &Volume) -> Vec<autostereo::volume::ClipPlane> {
+        self.clip.iter().map(|c| c.plane(volume)).collect()
+    }
+
     /// The model matrix of --rotate.
     pub fn model(&self) -> Mat4 {
         let [ax, ay, az] = self.rotate.map(f32::to_radians);
@@ -286,13 +303,15 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         volume,
         transfer,
         model,
+        clip,
         ..
     } = args.data.load(args.file.as_deref())?;
     let step = args.render.step(&volume);
     let bounds = volume.bounds();
     let frame = plan.frame(bounds)?;
     let ctx = gpu()?;
-    let scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, transfer, model)?;
+    let mut scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, transfer, model)?;
+    scene.clip = clip;
     // The settings are checked where the renderer is built (src/volume/options.rs, the
     // renderers' constructors); cli/src/flags.rs names the flags in their errors.
     let mut volume_options = args.render.options(step);
@@ -394,6 +413,79 @@ fn parse_window(value: &str) -> std::result::Result<WindowArg, String> {
     }
 }
 
+/// One `--clip` plane as given: keep `normal · p ≤ offset`, `p` in voxels or (`mm`) in the
+/// spacing's units.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ClipArg {
+    normal: [f32; 3],
+    offset: f32,
+    mm: bool,
+}
+
+impl ClipArg {
+    /// The plane for `volume` (its spacing turns voxels into the library's units).
+    pub fn plane(self, volume: &Volume) -> autostereo::volume::ClipPlane {
+        use autostereo::volume::ClipPlane;
+        let normal = glam::Vec3::from(self.normal);
+        match self.mm {
+            true => ClipPlane::new(normal, self.offset),
+            false => ClipPlane::from_voxels(normal, self.offset, volume.spacing.into()),
+        }
+    }
+}
+
+/// `--clip x<40`, `--clip z>12.5mm` or `--clip NX,NY,NZ,D[mm]`.
+fn parse_clip(value: &str) -> std::result::Result<ClipArg, String> {
+    let bad = || {
+        format!(
+            "'{value}' is not a clipping plane: AXIS<V or AXIS>V (x, y or z; `--clip x<40`,              `--clip z>12.5mm`) or NX,NY,NZ,D keeping NX·x + NY·y + NZ·z ≤ D; voxels, or `mm`              after it for the spacing's units"
+        )
+    };
+    let text = value.trim();
+    let (text, mm) = match text.strip_suffix("mm") {
+        Some(rest) => (rest.trim(), true),
+        None => (text, false),
+    };
+    let number = |s: &str| s.trim().parse::<f32>().ok().filter(|x| x.is_finite());
+    if let Some(at) = text.find(['<', '>']) {
+        let axis = match text[..at].trim() {
+            "x" | "X" => 0,
+            "y" | "Y" => 1,
+            "z" | "Z" => 2,
+            _ => return Err(bad()),
+        };
+        let v = number(&text[at + 1..]).ok_or_else(bad)?;
+        let sign = if text.as_bytes()[at] == b'<' {
+            1.0
+        } else {
+            -1.0
+        };
+        let mut normal = [0.0; 3];
+        normal[axis] = sign;
+        return Ok(ClipArg {
+            normal,
+            offset: sign * v,
+            mm,
+        });
+    }
+    let v: Vec<f32> = text
+        .split(',')
+        .map(number)
+        .collect::<Option<_>>()
+        .ok_or_else(bad)?;
+    match v[..] {
+        [x, y, z, d] if [x, y, z] != [0.0; 3] => Ok(ClipArg {
+            normal: [x, y, z],
+            offset: d,
+            mm,
+        }),
+        [_, _, _, _] => Err(format!(
+            "'{value}': the plane's normal NX,NY,NZ must not be 0,0,0"
+        )),
+        _ => Err(bad()),
+    }
+}
+
 /// `--crop X0,Y0,Z0,X1,Y1,Z1` in voxels, or with `mm` after it in the spacing's units.
 fn parse_crop(value: &str) -> std::result::Result<autostereo::volume::Crop, String> {
     use autostereo::volume::Crop;
@@ -426,5 +518,33 @@ fn parse_crop(value: &str) -> std::result::Result<autostereo::volume::Crop, Stri
         false => Err(format!(
             "'{value}': voxel indices are whole numbers (or end it in mm)"
         )),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn clip_planes_read_as_an_axis_side_or_a_plane_in_voxels_or_mm() {
+        let below = parse_clip("x<40").unwrap();
+        assert_eq!(
+            (below.normal, below.offset, below.mm),
+            ([1.0, 0.0, 0.0], 40.0, false)
+        );
+        let above = parse_clip("z > 12.5mm").unwrap();
+        assert_eq!(
+            (above.normal, above.offset, above.mm),
+            ([0.0, 0.0, -1.0], -12.5, true)
+        );
+        let plane = parse_clip("1,-1,0,-3").unwrap();
+        assert_eq!((plane.normal, plane.offset), ([1.0, -1.0, 0.0], -3.0));
+        for bad in ["w<3", "x<", "0,0,0,1", "1,2,3", "x<nan", ""] {
+            assert!(parse_clip(bad).is_err(), "{bad}");
+        }
+        // Voxels become the spacing's units: x < 40 voxels of 0.5 mm is x < 20 mm.
+        let volume = Volume::new([2, 2, 2], [0.5, 1.0, 1.0], vec![0.0; 8]).unwrap();
+        let mm = below.plane(&volume);
+        assert!((mm.offset / mm.normal.x - 20.0).abs() < 1e-5);
     }
 }

@@ -3,6 +3,7 @@
 //! default), parallel frusta with their images shifted to converge there, or cameras turned
 //! towards the focal point.
 
+pub(crate) mod crop_box;
 mod framing;
 mod gpu;
 mod settings;

@@ -92,6 +92,25 @@ impl Gaussians {
         &self.sh[i * k..(i + 1) * k]
     }
 
+    /// The Gaussians whose means lie inside `keep` (faces included: floaters around a capture
+    /// go); refused naming the crop box where it keeps none.
+    pub fn cropped(&self, keep: Bounds) -> Result<Self> {
+        use crate::camera::crop_box::pick;
+        let kept = keep.kept(&self.positions, "Gaussians")?;
+        let k = self.coefficients();
+        Ok(Self {
+            positions: pick(&self.positions, &kept),
+            scales: pick(&self.scales, &kept),
+            rotations: pick(&self.rotations, &kept),
+            opacities: pick(&self.opacities, &kept),
+            sh_degree: self.sh_degree,
+            sh: kept
+                .iter()
+                .flat_map(|&i| self.sh[i * k..(i + 1) * k].iter().copied())
+                .collect(),
+        })
+    }
+
     /// Bounding box of the means; `None` when empty or not finite.
     pub fn bounds(&self) -> Option<Bounds> {
         Bounds::of_points(self.positions.iter().copied())

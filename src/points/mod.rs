@@ -97,6 +97,19 @@ impl PointCloud {
         Bounds::of_points(self.positions.iter().copied())
     }
 
+    /// The points inside `keep` (faces included) with their attributes; refused naming the
+    /// crop box where it keeps none.
+    pub fn cropped(&self, keep: Bounds) -> Result<Self> {
+        use crate::camera::crop_box::pick;
+        let kept = keep.kept(&self.positions, "points")?;
+        Ok(Self {
+            positions: pick(&self.positions, &kept),
+            normals: self.normals.as_deref().map(|v| pick(v, &kept)),
+            colors: self.colors.as_deref().map(|v| pick(v, &kept)),
+            radii: self.radii.as_deref().map(|v| pick(v, &kept)),
+        })
+    }
+
     /// Check lengths and that everything is finite (radii also ≥ 0).
     pub fn validate(&self) -> Result<()> {
         let n = self.len();

@@ -2,6 +2,7 @@
 //! the world (its voxel axes: [`Volume::axes`], docs/VOLUMES.md), built-in data sets,
 //! gradients, transfer functions with pre-integration, and their GPU textures.
 
+pub mod clip;
 pub(crate) mod empty_space;
 pub mod generate;
 mod gradient;
@@ -13,6 +14,7 @@ mod scene;
 pub(crate) mod transfer;
 pub mod values;
 
+pub use clip::{ClipPlane, MAX_CLIP_PLANES};
 pub use empty_space::{CellRanges, MAX_DISTANCE};
 pub use options::{AlphaMode, Projection, VolumeOptions, VolumePath, VolumeSettings};
 pub use passes::{VolumeRaycaster, VolumeSlicer};

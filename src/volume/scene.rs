@@ -190,6 +190,9 @@ pub struct VolumeScene {
     /// Volume → world transform: the caller's rotation after the volume's own axes
     /// ([`super::Volume::axes`]).
     pub model: Mat4,
+    /// Half-spaces every method keeps (at most [`super::MAX_CLIP_PLANES`]; none: the whole
+    /// box), src/volume/clip.rs.
+    pub clip: Vec<super::ClipPlane>,
     /// The exact image's sampling distance ([`VolumeScene::default_step`]), world units.
     default_step: f32,
     /// Table entries per voxel cell of the uploaded volume (empty-space skipping).
@@ -240,6 +243,7 @@ impl VolumeScene {
             voxel,
             transfer,
             model: model * Mat4::from_mat3(volume.axes),
+            clip: Vec::new(),
             default_step,
             cells: CellRanges::new(volume),
             id: NEXT_ID.fetch_add(1, Ordering::Relaxed),
@@ -249,7 +253,8 @@ impl VolumeScene {
     /// Check the public fields a caller may have changed since [`VolumeScene::new`]: the
     /// renderers call this before every frame.
     pub fn validate(&self) -> Result<()> {
-        check_scene(&self.transfer, self.model)
+        check_scene(&self.transfer, self.model)?;
+        super::clip::check_planes(&self.clip)
     }
 
     /// The exact image's sampling distance for this volume, world units.

@@ -21,6 +21,7 @@ use crate::orbit::Orbit;
 use crate::scene::{Scene, Uploaded};
 use crate::Report;
 
+mod clip;
 mod controls;
 mod frames;
 mod images;
@@ -91,6 +92,9 @@ struct State {
     orbit: Orbit,
     separation_scale: f32,
     focal_scale: f32,
+    /// A volume's key-driven clipping plane, and the planes the scene came with.
+    key_clip: clip::KeyClip,
+    given_clip: Vec<autostereo::volume::ClipPlane>,
     /// The window's spatial image, and the stereo previews' left and right eyes.
     targets: [Option<SpatialTarget>; 3],
     stereo: StereoCompositor,
@@ -285,6 +289,10 @@ impl State {
         for spec in MORE_DISPLAYS.iter().filter(|d| **d != options.display_name) {
             displays.push((spec.to_string(), Display::parse(spec)?));
         }
+        let given_clip = match &scene.scene {
+            autostereo::AnyScene::Volume(v) => v.clip.clone(),
+            _ => Vec::new(),
+        };
         let mut state = Self {
             window,
             surface,
@@ -302,6 +310,8 @@ impl State {
             orbit: Orbit::default(),
             separation_scale: 1.0,
             focal_scale: 1.0,
+            key_clip: clip::KeyClip::default(),
+            given_clip,
             targets: [None, None, None],
             stereo,
             position: [0, 0],
@@ -396,6 +406,9 @@ impl State {
                 ..Default::default()
             });
         }
+        if let autostereo::AnyScene::Volume(volume) = &mut self.scene.scene {
+            volume.clip = self.key_clip.planes(&self.given_clip, volume.extent);
+        }
         for (frame, slot, copy_to) in &frames {
             let into = self.targets[*slot].as_ref().expect("allocated above");
             renderer.prepare(device, &self.ctx.queue, &self.scene.scene, frame)?;
@@ -443,8 +456,11 @@ impl State {
         self.ctx.queue.present(surface_texture);
         self.last_ms = start.elapsed().as_secs_f64() * 1e3;
         self.window.set_title(&format!(
-            "autostereo — {} — {} — {} ({} views{}) — {:.1} ms",
+            "autostereo — {}{} — {} — {} ({} views{}) — {:.1} ms",
             self.scene.name,
+            self.key_clip
+                .describe()
+                .map_or_else(String::new, |c| format!(", {c}")),
             self.methods[self.method],
             self.displays[self.display].0,
             frames[0].0.camera.views,

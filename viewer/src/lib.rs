@@ -3,7 +3,7 @@
 //! `OutputBlit` into the surface texture). The mask follows the window: the display's origin
 //! is the client area's position on the screen plus the display's own origin. Mouse: orbit,
 //! zoom, pan; keys: m method, d display, p preview, , . view, [ ] separation, - = focal plane,
-//! r reset, Esc quit.
+//! c a volume's clipping plane (off, x, y, z, −x, −y, −z), 9 0 move it, r reset, Esc quit.
 //!
 //! ```no_run
 //! # fn main() -> Result<(), autostereo_viewer::Error> {

@@ -44,8 +44,10 @@ fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) slice: u
     return SliceOut(vec4<f32>(x, y, 0.5, 1.0), slice);
 }
 
+// Inside the box and on the kept side of the clipping planes: a segment is drawn where both
+// its ends are (the region is convex, so all of it is), as the march's span keeps it.
 fn inside_box(p: vec3<f32>) -> bool {
-    return all(p >= vec3<f32>(0.0)) && all(p <= vec3<f32>(1.0));
+    return all(p >= vec3<f32>(0.0)) && all(p <= vec3<f32>(1.0)) && inside_clip(p);
 }
 
 // The shaded segment of view `view` between this slice and the next, or 0 outside the box.

@@ -39,6 +39,8 @@ pub struct ViewArgs {
     // Gaussian splat flags, as `autostereo gaussians` has them.
     #[command(flatten, next_help_heading = "Gaussians")]
     gaussians: crate::gaussians_cmd::GaussianFlags,
+    #[command(flatten, next_help_heading = "Points and Gaussians")]
+    crop: crate::crop_box_arg::CropBoxArgs,
     #[command(flatten)]
     memory: crate::args::MemoryArgs,
     /// Window client-area size WxH in pixels.
@@ -129,6 +131,7 @@ impl ViewArgs {
             volume_data: &self.volume_data,
             volume_render: &self.volume_render,
             gaussians: &self.gaussians,
+            crop: self.crop,
         }
     }
 }

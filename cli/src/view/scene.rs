@@ -34,6 +34,7 @@ pub struct SceneFlags<'a> {
     pub volume_data: &'a VolumeDataArgs,
     pub volume_render: &'a VolumeRenderArgs,
     pub gaussians: &'a GaussianFlags,
+    pub crop: crate::crop_box_arg::CropBoxArgs,
 }
 
 impl SceneFlags<'_> {
@@ -51,6 +52,13 @@ impl SceneFlags<'_> {
     pub fn check(&self, given: &clap::ArgMatches) -> Result<()> {
         use crate::args::flags_given;
         let kind = self.kind()?;
+        if self.crop.crop_box.is_some() && !matches!(kind, DataKind::Points | DataKind::Gaussians) {
+            bail!(
+                "--crop-box keeps the points or Gaussians in a box, and the scene is {} (a \
+                 volume's box is --crop)",
+                kind.article()
+            );
+        }
         let groups = [
             (DataKind::Mesh, flags_given::<MeshFlags>(given)),
             (DataKind::Points, flags_given::<PointFlags>(given)),
@@ -102,20 +110,27 @@ pub fn load(flags: &SceneFlags) -> Result<autostereo_viewer::Scene> {
             let options = LoadOptions {
                 kind: Some(kind),
                 mesh: flags.mesh.load_options(),
-                points: flags.points.load_options(),
+                points: flags.points.load_options(flags.crop),
                 volume: flags.volume_data.volume_load()?,
+                gaussians: autostereo::GaussianLoad {
+                    crop: flags.crop.crop_box,
+                },
                 budget: None,
             };
-            autostereo::load(path, &options)?
+            let mut data = autostereo::load(path, &options)?;
+            if let AnyData::Volume(v) = &mut data {
+                v.clip = flags.volume_data.clip_planes(&v.volume);
+            }
+            data
         }
         (None, DataKind::Mesh) => AnyData::Mesh(flags.mesh.load(None)?),
         (None, DataKind::Points) => AnyData::Points(
             flags
                 .points
-                .complete(&autostereo::points::PointCloud::torus_scene())?,
+                .complete(&autostereo::points::PointCloud::torus_scene(), flags.crop)?,
         ),
         (None, DataKind::Volume) => AnyData::Volume(Box::new(flags.volume_data.load(None)?)),
-        (None, DataKind::Gaussians) => AnyData::Gaussians(flags.gaussians.load(None)?),
+        (None, DataKind::Gaussians) => AnyData::Gaussians(flags.gaussians.load(None, flags.crop)?),
         (None, DataKind::Image) => bail!("an image is no scene to view (`--kind` offers none)"),
     };
     let mut options = RendererOptions::default();

@@ -27,9 +27,11 @@ pub struct VolumeParams {
     max_samples: u32,
     shade: u32,
     share_tolerance: f32,
-    _pad: [u32; 2],
+    clip_count: u32,
+    _pad: u32,
+    clip: [[f32; 4]; crate::volume::MAX_CLIP_PLANES],
 }
-const _: () = assert!(std::mem::size_of::<VolumeParams>() == 160);
+const _: () = assert!(std::mem::size_of::<VolumeParams>() == 256);
 crate::shader::gpu_layout!(
     VolumeParams,
     "VolumeParams",
@@ -41,7 +43,9 @@ crate::shader::gpu_layout!(
         use_mask,
         max_samples,
         shade,
-        share_tolerance
+        share_tolerance,
+        clip_count,
+        clip
     ]
 );
 
@@ -154,6 +158,7 @@ impl VolumeResources {
             Mat4::from_translation(Vec3::splat(0.5)) * Mat4::from_scale(scene.extent.recip());
         let normal = Mat3::from_mat4(eye_from_model).inverse().transpose();
         let step = settings.step_length(scene);
+        let (clip, clip_count) = crate::volume::clip::texture_planes(scene);
         VolumeParams {
             tex_from_eye: (tex_from_model * eye_from_model.inverse()).to_cols_array_2d(),
             normal_from_tex: Mat4::from_mat3(normal).to_cols_array_2d(),
@@ -163,7 +168,9 @@ impl VolumeResources {
             max_samples: (scene.extent.length() / step).ceil() as u32 + 2,
             shade: settings.shade as u32,
             share_tolerance: settings.share_samples,
-            _pad: [0; 2],
+            clip_count,
+            _pad: 0,
+            clip,
         }
     }
 

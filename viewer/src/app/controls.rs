@@ -32,6 +32,9 @@ impl State {
                 "]" => self.separation_scale *= 1.25,
                 "-" => self.focal_scale /= 1.1,
                 "=" | "+" => self.focal_scale *= 1.1,
+                "c" => self.key_clip.next_axis(),
+                "9" => self.key_clip.nudge(-1.0),
+                "0" => self.key_clip.nudge(1.0),
                 "r" => {
                     self.orbit = Orbit::default();
                     self.separation_scale = 1.0;

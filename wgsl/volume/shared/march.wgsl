@@ -221,8 +221,12 @@ fn march_planes(origin: vec3<f32>, dir: vec3<f32>, planes: vec2<f32>, opaque: f3
     let inv = 1.0 / d;
     let a = (vec3<f32>(0.0) - o) * inv;
     let b = (vec3<f32>(1.0) - o) * inv;
-    let t_in = max(max(min(a.x, b.x), min(a.y, b.y)), min(a.z, b.z));
-    let t_out = min(min(max(a.x, b.x), max(a.y, b.y)), max(a.z, b.z));
+    let span = clip_span(o, d, vec2<f32>(
+        max(max(min(a.x, b.x), min(a.y, b.y)), min(a.z, b.z)),
+        min(min(max(a.x, b.x), max(a.y, b.y)), max(a.z, b.z)),
+    ));
+    let t_in = span.x;
+    let t_out = span.y;
     let d_in = max(t_in * fd, frame.camera.near);
     let d_out = min(t_out * fd, frame.camera.far);
     if (!(d_out > d_in)) {

@@ -11,8 +11,39 @@ struct VolumeParams {
     max_samples: u32,             // guard against runaway loops
     shade: u32,                   // 1: Blinn-Phong from gradients; 0: emission-absorption only
     share_tolerance: f32,         // voxels within which a pixel's rays share samples
-    _pad1: u32,
-    _pad2: u32,
+    clip_count: u32,              // clipping planes in use (src/volume/clip.rs)
+    _pad: u32,
+    clip: array<vec4<f32>, 6>,    // keep texture coordinates t with xyz·t ≤ w
+}
+
+// The span [t.x, t.y] of the ray o + u·d (texture space) narrowed to the clipping planes'
+// kept side (empty, x > y, where it leaves none).
+fn clip_span(o: vec3<f32>, d: vec3<f32>, span: vec2<f32>) -> vec2<f32> {
+    var t = span;
+    for (var i = 0u; i < params.clip_count; i++) {
+        let plane = params.clip[i];
+        let along = dot(plane.xyz, d);
+        let room = plane.w - dot(plane.xyz, o);
+        if (along > 0.0) {
+            t.y = min(t.y, room / along);
+        } else if (along < 0.0) {
+            t.x = max(t.x, room / along);
+        } else if (room < 0.0) {
+            return vec2<f32>(1.0, -1.0);
+        }
+    }
+    return t;
+}
+
+// Texture coordinate t on the kept side of every clipping plane.
+fn inside_clip(t: vec3<f32>) -> bool {
+    for (var i = 0u; i < params.clip_count; i++) {
+        let plane = params.clip[i];
+        if (dot(plane.xyz, t) > plane.w) {
+            return false;
+        }
+    }
+    return true;
 }
 
 const TABLE_SIZE: f32 = 256.0;
