@@ -299,15 +299,16 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         args.warp,
     )?;
     args.render.check(plan.method)?;
+    let data = args.data.load(args.file.as_deref())?;
+    let bounds = args.render.framed(&data)?;
     let VolumeData {
         volume,
         transfer,
         model,
         clip,
         ..
-    } = args.data.load(args.file.as_deref())?;
+    } = data;
     let step = args.render.step(&volume);
-    let bounds = volume.bounds();
     let frame = plan.frame(bounds)?;
     let ctx = gpu()?;
     let mut scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, transfer, model)?;
@@ -343,6 +344,12 @@ pub fn run(args: VolumeArgs) -> Result<()> {
             (PathArg::Slices, alpha) => alpha.name(),
         },
         "projection": settings.projection.name(),
+        "framed": {
+            "fit": args.render.fit.name(),
+            "min": bounds.min.to_array(),
+            "max": bounds.max.to_array(),
+            "clip_planes": scene.clip.len(),
+        },
         "volume_dims": volume.dims,
         "values": volume.values,
         "spacing": volume.spacing,

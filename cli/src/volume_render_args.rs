@@ -7,6 +7,25 @@ use autostereo::render::Method;
 use autostereo::volume::{AlphaMode, Volume, VolumeScene, VolumeSettings};
 use autostereo::{VolumeOptions, VolumePath};
 
+/// `--fit`: what of a volume the camera frames.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Fit {
+    /// The voxels the classification shows (`Volume::visible_bounds`).
+    Visible,
+    /// The whole box.
+    Box,
+}
+
+impl Fit {
+    /// Its flag value.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Visible => "visible",
+            Self::Box => "box",
+        }
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum PathArg {
     /// Compute pass: per-pixel ray marching, exact α per channel.
@@ -27,6 +46,10 @@ pub struct VolumeRenderArgs {
     /// for bone, -500 for the skin).
     #[arg(long, value_name = "VALUE", allow_hyphen_values = true)]
     pub(crate) iso: Option<f64>,
+    /// What the camera frames: visible (the box around the voxels the transfer function or
+    /// isosurface shows, after --clip) or box (the volume's whole box, padding and all).
+    #[arg(long, value_enum, default_value = "visible")]
+    pub(crate) fit: Fit,
     /// Single-pass path.
     #[arg(long, value_enum, default_value = "compute")]
     pub(crate) path: PathArg,
@@ -141,6 +164,26 @@ impl VolumeRenderArgs {
     }
 
     /// `--iso` as the normalised scalar of a volume of `values`, checked against its range.
+    /// The box the camera frames for `data` (--fit); the whole box, said, where nothing is
+    /// visible.
+    pub fn framed(&self, data: &autostereo::VolumeData) -> Result<autostereo::camera::Bounds> {
+        let volume = &data.volume;
+        if self.fit == Fit::Box {
+            return Ok(volume.bounds());
+        }
+        let isovalue = self.isovalue(&volume.values)?;
+        match volume.visible_bounds(&data.transfer, self.projection, isovalue, &data.clip) {
+            Some(bounds) => Ok(bounds),
+            None => {
+                eprintln!(
+                    "note: the transfer function shows none of the volume's voxels (within \
+                     --clip): framing its whole box (--fit box); try another --tf or --window"
+                );
+                Ok(volume.bounds())
+            }
+        }
+    }
+
     pub fn isovalue(&self, values: &autostereo::volume::Values) -> Result<f32> {
         use autostereo::volume::Projection;
         match (self.projection, self.iso) {

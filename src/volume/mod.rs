@@ -13,6 +13,7 @@ pub(crate) mod passes;
 mod scene;
 pub(crate) mod transfer;
 pub mod values;
+mod visible;
 
 pub use clip::{ClipPlane, MAX_CLIP_PLANES};
 pub use empty_space::{CellRanges, MAX_DISTANCE};

@@ -32,6 +32,12 @@ impl Scene {
         })
     }
 
+    /// Frame `bounds` instead of the data's own (a volume's visible part, say).
+    pub fn with_bounds(mut self, bounds: Bounds) -> Self {
+        self.bounds = bounds;
+        self
+    }
+
     /// On the device: the uploaded scene; the data is dropped (the GPU holds it now).
     pub(crate) fn upload(self, ctx: &autostereo::gpu::GpuContext) -> Result<Uploaded> {
         let scene = AnyScene::upload(&ctx.device, &ctx.queue, &self.data)?;

@@ -133,6 +133,10 @@ pub fn load(flags: &SceneFlags) -> Result<autostereo_viewer::Scene> {
         (None, DataKind::Gaussians) => AnyData::Gaussians(flags.gaussians.load(None, flags.crop)?),
         (None, DataKind::Image) => bail!("an image is no scene to view (`--kind` offers none)"),
     };
+    let framed = match &data {
+        AnyData::Volume(v) => Some(flags.volume_render.framed(v)?),
+        _ => None,
+    };
     let mut options = RendererOptions::default();
     match &data {
         AnyData::Mesh(_) => options.mesh = flags.mesh.options(),
@@ -144,5 +148,9 @@ pub fn load(flags: &SceneFlags) -> Result<autostereo_viewer::Scene> {
         }
         AnyData::Gaussians(_) => options.gaussians = flags.gaussians.options(),
     }
-    Ok(autostereo_viewer::Scene::new(data, options, name)?)
+    let scene = autostereo_viewer::Scene::new(data, options, name)?;
+    Ok(match framed {
+        Some(bounds) => scene.with_bounds(bounds),
+        None => scene,
+    })
 }

@@ -159,3 +159,47 @@ fn a_crop_box_keeps_its_voxels() {
         "{stderr}"
     );
 }
+
+/// `--fit visible` (the default) frames the voxels the classification shows: the CT's sphere of
+/// tissue and bone inside its padded box fills more of the image than `--fit box` frames it,
+/// and `--json` says the box framed; a `--clip` half moves that box.
+#[test]
+fn a_volume_is_framed_on_what_its_classification_shows() {
+    let file = ct_nrrd();
+    let lit_width = |image: &RgbImage| {
+        let cols: Vec<u32> = (0..image.width)
+            .filter(|&x| (0..image.height).any(|y| (0..3).any(|c| image.get(x, y, c) > 20)))
+            .collect();
+        cols.last().unwrap() - cols.first().unwrap() + 1
+    };
+    let (visible, json) = render(&file, &["--window", "400,40"], "fit_visible.png");
+    let (whole, box_json) = render(
+        &file,
+        &["--window", "400,40", "--fit", "box"],
+        "fit_box.png",
+    );
+    assert_eq!(json["framed"]["fit"], "visible", "{json}");
+    assert_eq!(
+        box_json["framed"]["max"],
+        serde_json::json!([12.0, 12.0, 12.0])
+    );
+    // The sphere of radius 8 voxels, grown by one voxel: about ±9 of the box's ±12.
+    let max = json["framed"]["max"][0].as_f64().unwrap();
+    assert!((8.0..=10.0).contains(&max), "{json}");
+    let (a, b) = (lit_width(&visible), lit_width(&whole));
+    assert!(
+        a as f64 >= 1.2 * b as f64,
+        "visible {a} px wide against the box's {b}"
+    );
+    let (_, half) = render(
+        &file,
+        &["--window", "400,40", "--clip", "x<12"],
+        "fit_clip.png",
+    );
+    let framed_max = half["framed"]["max"][0].as_f64().unwrap();
+    assert!(
+        framed_max <= 1.0,
+        "the kept half x < 12 voxels ends at the centre: {half}"
+    );
+    assert_eq!(half["framed"]["clip_planes"], 1);
+}
