@@ -273,7 +273,7 @@ fn volume(path: &Path, options: &VolumeLoad) -> Result<VolumeData> {
     if let Some(crop) = options.crop {
         volume = volume.cropped(crop)?;
     }
-    volume = resampled(volume, options.downsample)?;
+    volume = resampled(volume, options.downsample)?.with_robust_range();
     let (transfer, preset) = match &options.transfer {
         Some(choice) => choice.resolve(&volume.values)?,
         None => {

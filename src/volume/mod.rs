@@ -243,6 +243,32 @@ impl Volume {
         }
     }
 
+    /// This volume with [`Values::robust`] measured: the values below which 1 % and 99 % of
+    /// its voxels lie (a histogram of 65,536 bins over the normalised scalar: to 1/65,536 of
+    /// the range).
+    pub fn with_robust_range(mut self) -> Self {
+        const BINS: usize = 1 << 16;
+        let mut histogram = vec![0u64; BINS];
+        for &s in &self.data {
+            histogram[((s.clamp(0.0, 1.0) * (BINS - 1) as f32).round()) as usize] += 1;
+        }
+        let n = self.data.len() as u64;
+        let at = |share: f64| {
+            let wanted = ((n as f64 * share).ceil() as u64).max(1);
+            let mut seen = 0;
+            let bin = histogram
+                .iter()
+                .position(|&c| {
+                    seen += c;
+                    seen >= wanted
+                })
+                .unwrap_or(BINS - 1);
+            self.values.value(bin as f32 / (BINS - 1) as f32)
+        };
+        self.values.robust = Some([at(0.01), at(0.99)]);
+        self
+    }
+
     /// The voxels of the box `crop` — `Crop::Voxels` from `min` to `max` inclusive, or
     /// `Crop::World` in the spacing's units (mm for a scan) from the volume's first voxel — as
     /// a volume of their own (same spacing, axes and values), centred where the renderers

@@ -236,9 +236,22 @@ impl TransferFunction {
     /// Hounsfield units where the volume is in them (so a scanner's padding outside the field
     /// of view changes nothing), else every preset on the normalised scalar as
     /// [`TransferFunction::preset`] defines it.
+    ///
+    /// The MR preset (`mri`) spans the volume's robust range where it was measured
+    /// ([`Values::robust`], the 1st to 99th percentile): its normalised points stretched from
+    /// there, so the few brightest voxels (vessels, fat, artefacts) no longer squeeze the
+    /// brain into the bottom of the ramp.
     pub fn preset_for(name: &str, values: &Values) -> Result<Self> {
-        match (hounsfield_preset(name), values.units) {
-            (Some(points), Units::Hounsfield) => Self::in_units(&points, values),
+        match (hounsfield_preset(name), values.units, values.robust) {
+            (Some(points), Units::Hounsfield, _) => Self::in_units(&points, values),
+            (None, _, Some([lo, hi])) if name == "mri" && hi > lo => {
+                let points: Vec<(f64, [f32; 4])> = Self::preset(name)?
+                    .points
+                    .iter()
+                    .map(|&(s, c)| (lo + f64::from(s) * (hi - lo), c))
+                    .collect();
+                Self::in_units(&points, values)
+            }
             _ => Self::preset(name),
         }
     }
@@ -456,6 +469,48 @@ impl PreintegrationTable {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// An MR of values 0 … 1000 whose voxels lie within 0 … 400 but for 0.5 % at 1000: the
+    /// `mri` preset spans the robust 1–99 % range, so a value of 300 gets the colour the
+    /// normalised preset gives 0.75 of its ramp, where min–max would give it 0.3.
+    #[test]
+    fn the_mr_preset_spans_the_robust_range() {
+        let n = 1000;
+        let data: Vec<f32> = (0..n)
+            .map(|i| {
+                if i < 5 {
+                    1.0
+                } else {
+                    (i % 401) as f32 / 1000.0
+                }
+            })
+            .collect();
+        let volume = crate::volume::Volume::new([n as u32, 1, 1], [1.0; 3], data)
+            .unwrap()
+            .with_values(Values {
+                range: [0.0, 1000.0],
+                units: Units::File,
+                ..Values::NORMALISED
+            })
+            .with_robust_range();
+        let [lo, hi] = volume.values.robust.unwrap();
+        assert!(lo <= 5.0 && (395.0..=401.0).contains(&hi), "{lo} {hi}");
+        let robust = TransferFunction::preset_for("mri", &volume.values).unwrap();
+        let plain = TransferFunction::preset("mri").unwrap();
+        let at = |v: f64| robust.eval(volume.values.normalise(v));
+        let want = plain.eval(((300.0 - lo) / (hi - lo)) as f32);
+        for c in 0..4 {
+            assert!(
+                (at(300.0)[c] - want[c]).abs() < 1e-4,
+                "{:?} {want:?}",
+                at(300.0)
+            );
+        }
+        assert!(at(300.0)[3] > plain.eval(0.3)[3] * 2.0);
+        // Without a measured range (data given normalised) the preset is as defined.
+        let normalised = TransferFunction::preset_for("mri", &Values::NORMALISED).unwrap();
+        assert_eq!(normalised, plain);
+    }
 
     #[test]
     fn parse_eval_and_errors() {

@@ -50,6 +50,10 @@ pub struct Values {
     /// The file's own display window, `[width, level]` in `units` (DICOM's WindowWidth and
     /// WindowCenter), where it has one.
     pub window: Option<[f64; 2]>,
+    /// The 1st and 99th percentiles of the voxels' values, in `units`, where the loader
+    /// measured them ([`super::Volume::with_robust_range`]): the range the MR presets span
+    /// (a few bright voxels or a scanner's padding then move nothing).
+    pub robust: Option<[f64; 2]>,
 }
 
 impl Default for Values {
@@ -65,6 +69,7 @@ impl Values {
         units: Units::Normalised,
         modality: None,
         window: None,
+        robust: None,
     };
 
     /// The normalised scalar of `value` (in this volume's units), clamped to 0..1.
@@ -82,10 +87,14 @@ impl Values {
         lo + f64::from(s) * (hi - lo)
     }
 
-    /// "−3024…3071 HU" (the summary's words).
+    /// "−3024…3071 HU" (the summary's words), with the robust range where it was measured:
+    /// "0…255 (1–99 %: 0…97)".
     pub fn described(&self) -> String {
         let [lo, hi] = self.range;
-        format!("{}…{}{}", short(lo), short(hi), self.units.suffix())
+        let robust = self.robust.map_or_else(String::new, |[a, b]| {
+            format!(" (1–99 %: {}…{})", short(a.round()), short(b.round()))
+        });
+        format!("{}…{}{}{robust}", short(lo), short(hi), self.units.suffix())
     }
 }
 
@@ -112,6 +121,7 @@ mod tests {
             units: Units::Hounsfield,
             modality: Some(Modality::Ct),
             window: None,
+            robust: None,
         };
         assert_eq!(v.normalise(-1024.0), 0.0);
         assert_eq!(v.normalise(3071.0), 1.0);
