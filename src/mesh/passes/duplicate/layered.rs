@@ -5,7 +5,7 @@
 //! that allows ([`MeshLayered::views_per_pass`]). Without multiview (GL) nothing can route one
 //! draw to several layers, so the method is one pass per layer: the N-pass renderer itself.
 
-use super::{batches, draw_mesh, mesh_pipeline, BatchedViews, BoundBatches};
+use super::{batches, draw_mesh, mesh_pipeline, BatchedViews, BoundBatches, Shading};
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
 use crate::gpu::pipeline::{begin_pass_to, cleared, multiview_mask, PassTargets};
@@ -69,7 +69,7 @@ struct Multiview {
     layout: wgpu::PipelineLayout,
     frame: FrameBinding,
     /// By layers per pass.
-    pipelines: PipelineCache<u32, wgpu::RenderPipeline>,
+    pipelines: PipelineCache<(u32, Shading), wgpu::RenderPipeline>,
     npass: NPassHarness,
     /// The prepared frame's depth array: one depth layer per layer of a pass.
     prepared: Option<Prepared<PreparedFor, crate::render::view_layers::DepthArray>>,
@@ -102,7 +102,7 @@ impl Multiview {
         })
     }
 
-    fn prepare(&mut self, device: &wgpu::Device, frame: &Frame) -> Result<()> {
+    fn prepare(&mut self, device: &wgpu::Device, mesh: &MeshBuffers, frame: &Frame) -> Result<()> {
         let last = self.prepared.take().map(|p| p.made);
         begin_prepare(device, frame, &mut self.prepared)?;
         self.npass.prepare(device, frame)?;
@@ -111,12 +111,22 @@ impl Multiview {
         let depth = depth_array(last, device, frame.view_size(), deepest)?;
         for layers in passes.iter().map(|r| r.len() as u32) {
             let layout = &self.layout;
-            self.pipelines.prepare(device, layers, |modules| {
-                let module = modules.get(device, "mesh/layered.wgsl")?;
-                let targets = [Some(SPATIAL_FORMAT.into())];
-                let mask = multiview_mask(layers);
-                mesh_pipeline(device, "mesh layered", &module, layout, &targets, mask)
-            })?;
+            let shading = Shading::of(mesh);
+            self.pipelines
+                .prepare(device, (layers, shading), |modules| {
+                    let module = modules.get(device, "mesh/layered.wgsl")?;
+                    let targets = [Some(SPATIAL_FORMAT.into())];
+                    let mask = multiview_mask(layers);
+                    mesh_pipeline(
+                        device,
+                        "mesh layered",
+                        &module,
+                        layout,
+                        &targets,
+                        mask,
+                        shading,
+                    )
+                })?;
         }
         self.prepared = Some(Prepared {
             key: PreparedFor::of(frame),
@@ -154,7 +164,7 @@ impl Multiview {
                     multiview_mask: multiview_mask(count),
                 },
             );
-            pass.set_pipeline(self.pipelines.get(&count)?);
+            pass.set_pipeline(self.pipelines.get(&(count, Shading::of(mesh)))?);
             pass.set_bind_group(0, &self.frame.bind_group, &[]);
             pass.set_bind_group(1, &group, &[self.views.offset(i)]);
             pass.set_bind_group(TEXTURE_GROUP, &mesh.textures.bind_group, &[]);
@@ -175,7 +185,7 @@ impl Renderer<MeshBuffers> for MeshLayered {
         frame: &Frame,
     ) -> Result<()> {
         match &mut self.path {
-            Path::Multiview(m) => m.prepare(device, frame),
+            Path::Multiview(m) => m.prepare(device, mesh, frame),
             Path::PerLayer(n) => n.prepare(device, queue, mesh, frame),
         }
     }

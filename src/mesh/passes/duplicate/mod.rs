@@ -153,8 +153,28 @@ impl BatchedViews {
     }
 }
 
-/// A pipeline drawing `MeshBuffers` with `module`'s `vs_main` / `fs_main` into `targets`, with
-/// the nearest-depth test every mesh pass uses (and `multiview` layers, if any).
+/// The shading a mesh pipeline is built for: its fragment entry point and whether the mesh
+/// is textured (the `TEXTURED` override of wgsl/mesh/shared/texture.wgsl: off, a software
+/// rasteriser pays nothing for the untaken texture fetches).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) struct Shading {
+    pub fragment: &'static str,
+    pub textured: bool,
+}
+
+impl Shading {
+    /// `fs_main` for `mesh` (textured as it is).
+    pub fn of(mesh: &MeshBuffers) -> Self {
+        Self {
+            fragment: "fs_main",
+            textured: mesh.textured,
+        }
+    }
+}
+
+/// A pipeline drawing `MeshBuffers` with `module`'s `vs_main` and `shading`'s fragment entry
+/// into `targets`, with the nearest-depth test every mesh pass uses (and `multiview` layers, if
+/// any). The N-pass and the duplication methods all build theirs here.
 pub(crate) fn mesh_pipeline(
     device: &wgpu::Device,
     label: &str,
@@ -162,7 +182,9 @@ pub(crate) fn mesh_pipeline(
     layout: &wgpu::PipelineLayout,
     targets: &[Option<wgpu::ColorTargetState>],
     multiview_mask: Option<NonZeroU32>,
+    shading: Shading,
 ) -> Result<wgpu::RenderPipeline> {
+    let constants = [("TEXTURED", shading.textured as u32 as f64)];
     crate::gpu::checked(device, &format!("building the {label} pipeline"), || {
         device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some(label),
@@ -179,8 +201,8 @@ pub(crate) fn mesh_pipeline(
             multisample: Default::default(),
             fragment: Some(wgpu::FragmentState {
                 module,
-                entry_point: Some("fs_main"),
-                compilation_options: Default::default(),
+                entry_point: Some(shading.fragment),
+                compilation_options: crate::gpu::pipeline::compilation(&constants),
                 targets,
             }),
             multiview_mask,

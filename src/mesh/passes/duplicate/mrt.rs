@@ -5,7 +5,7 @@
 //! error: a nearer fragment of one view hides farther ones of the other views of its pass
 //! (measured against the N-pass in tests/meshes/duplication.rs).
 
-use super::{batches, draw_mesh, mesh_pipeline, BatchedViews, BoundBatches};
+use super::{batches, draw_mesh, mesh_pipeline, BatchedViews, BoundBatches, Shading};
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
 use crate::gpu::pipeline::{begin_pass_to, cleared, pipeline_layout, PassTargets};
@@ -27,7 +27,7 @@ pub struct MeshMrt {
     layout: wgpu::PipelineLayout,
     frame: FrameBinding,
     /// By render targets per pass.
-    pipelines: PipelineCache<u32, wgpu::RenderPipeline>,
+    pipelines: PipelineCache<(u32, Shading), wgpu::RenderPipeline>,
     npass: NPassHarness,
     prepared: Option<PreparedFor>,
     /// The parallel camera model's crop, recorded last.
@@ -82,7 +82,7 @@ impl Renderer<MeshBuffers> for MeshMrt {
         &mut self,
         device: &wgpu::Device,
         _queue: &wgpu::Queue,
-        _mesh: &MeshBuffers,
+        mesh: &MeshBuffers,
         frame: &Frame,
     ) -> Result<()> {
         begin_prepare(device, frame, &mut self.prepared)?;
@@ -90,16 +90,18 @@ impl Renderer<MeshBuffers> for MeshMrt {
         for range in batches(frame.camera.views, self.views.max_per_pass) {
             let targets = range.len() as u32;
             let layout = &self.layout;
-            self.pipelines.prepare(device, targets, |modules| {
-                let module = modules.get(device, "mesh/mrt.wgsl")?;
-                let blended = Some(wgpu::ColorTargetState {
-                    format: SPATIAL_FORMAT,
-                    blend: Some(wgpu::BlendState::ALPHA_BLENDING),
-                    write_mask: wgpu::ColorWrites::ALL,
-                });
-                let states = vec![blended; targets as usize];
-                mesh_pipeline(device, "mesh mrt", &module, layout, &states, None)
-            })?;
+            let shading = Shading::of(mesh);
+            self.pipelines
+                .prepare(device, (targets, shading), |modules| {
+                    let module = modules.get(device, "mesh/mrt.wgsl")?;
+                    let blended = Some(wgpu::ColorTargetState {
+                        format: SPATIAL_FORMAT,
+                        blend: Some(wgpu::BlendState::ALPHA_BLENDING),
+                        write_mask: wgpu::ColorWrites::ALL,
+                    });
+                    let states = vec![blended; targets as usize];
+                    mesh_pipeline(device, "mesh mrt", &module, layout, &states, None, shading)
+                })?;
         }
         self.prepared = Some(PreparedFor::of(frame));
         Ok(())
@@ -134,7 +136,7 @@ impl Renderer<MeshBuffers> for MeshMrt {
                 },
             );
             let targets = range.len() as u32;
-            pass.set_pipeline(self.pipelines.get(&targets)?);
+            pass.set_pipeline(self.pipelines.get(&(targets, Shading::of(mesh)))?);
             pass.set_bind_group(0, &self.frame.bind_group, &[]);
             pass.set_bind_group(1, &group, &[self.views.offset(i)]);
             pass.set_bind_group(TEXTURE_GROUP, &mesh.textures.bind_group, &[]);

