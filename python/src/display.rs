@@ -1,0 +1,36 @@
+//! `autostereo.Display`: a display by its `--display` spec ("hubner8", "lenticular:8",
+//! "lkg:calibration.json", …), parsed by the library.
+
+use autostereo::display::Display;
+use pyo3::prelude::*;
+
+use crate::errors::to_py;
+
+/// A multi-view display.
+#[pyclass(name = "Display", module = "autostereo", frozen)]
+pub struct PyDisplay {
+    pub display: Display,
+    spec: String,
+}
+
+#[pymethods]
+impl PyDisplay {
+    /// The display of `spec`, as the CLI's `--display` takes it.
+    #[new]
+    fn new(spec: &str) -> PyResult<Self> {
+        Ok(Self {
+            display: Display::parse(spec).map_err(to_py)?,
+            spec: spec.to_string(),
+        })
+    }
+
+    /// Views the display shows.
+    #[getter]
+    fn views(&self) -> u32 {
+        self.display.views()
+    }
+
+    fn __repr__(&self) -> String {
+        format!("Display({:?}, views={})", self.spec, self.display.views())
+    }
+}

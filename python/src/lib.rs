@@ -1,0 +1,21 @@
+//! The `autostereo` Python module: numpy volumes in, spatial images out, on the library's
+//! `AnyScene` / `AnyRenderer` path (docs/PYTHON.md). One GPU device per process
+//! ([`context`]); each scene is uploaded once and kept; a `Renderer` keeps its prepared state
+//! between frames.
+
+mod context;
+mod display;
+mod errors;
+mod renderer;
+mod volume;
+
+use pyo3::prelude::*;
+
+#[pymodule]
+fn autostereo(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<display::PyDisplay>()?;
+    m.add_class::<volume::PyVolume>()?;
+    m.add_class::<renderer::PyRenderer>()?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}
