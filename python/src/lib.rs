@@ -1,4 +1,4 @@
-//! The `autostereo` Python module: numpy volumes in, spatial images out, on the library's
+//! The `autostereo` Python module: numpy volumes, meshes and points in, spatial images out, on the library's
 //! `AnyScene` / `AnyRenderer` path (docs/PYTHON.md). One GPU device per process
 //! ([`context`]); each scene is uploaded once and kept; a `Renderer` keeps its prepared state
 //! between frames.
@@ -6,7 +6,9 @@
 mod context;
 mod display;
 mod errors;
+mod geometry;
 mod renderer;
+mod scene;
 mod volume;
 
 use pyo3::prelude::*;
@@ -14,7 +16,11 @@ use pyo3::prelude::*;
 #[pymodule]
 fn autostereo(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<display::PyDisplay>()?;
+    m.add_class::<scene::PyScene>()?;
     m.add_class::<volume::PyVolume>()?;
+    m.add_class::<geometry::PyMesh>()?;
+    m.add_class::<geometry::PyPoints>()?;
+    m.add_function(wrap_pyfunction!(scene::load, m)?)?;
     m.add_class::<renderer::PyRenderer>()?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

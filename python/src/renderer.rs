@@ -6,7 +6,7 @@
 use autostereo::camera::CameraSettings;
 use autostereo::frame::Frame;
 use autostereo::render::{Method, Renderer};
-use autostereo::{AnyData, AnyRenderer, AnyScene, RendererOptions};
+use autostereo::{AnyData, AnyRenderer, RendererOptions};
 use numpy::{PyArray3, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -14,7 +14,7 @@ use pyo3::prelude::*;
 use crate::context::context;
 use crate::display::PyDisplay;
 use crate::errors::to_py;
-use crate::volume::PyVolume;
+use crate::scene::PyScene;
 
 /// A renderer for one display and size; it keeps its prepared state between frames.
 #[pyclass(name = "Renderer", module = "autostereo", unsendable)]
@@ -67,20 +67,15 @@ impl PyRenderer {
         })
     }
 
-    /// The spatial image of `scene`, (H, W, 4) uint8 (alpha 255).
+    /// The spatial image of `scene` (a Volume, Mesh, Points or a loaded Scene), (H, W, 4)
+    /// uint8 (alpha 255). The GIL is released while the GPU renders.
     fn render<'py>(
         &mut self,
         py: Python<'py>,
-        scene: &PyVolume,
+        scene: &PyScene,
     ) -> PyResult<Bound<'py, PyArray3<u8>>> {
         let ctx = context()?;
-        let uploaded = match scene.scene.get() {
-            Some(s) => s,
-            None => {
-                let s = AnyScene::upload(&ctx.device, &ctx.queue, &scene.data).map_err(to_py)?;
-                scene.scene.get_or_init(|| s)
-            }
-        };
+        let uploaded = scene.uploaded()?;
         let bounds = framed(&scene.data)
             .ok_or_else(|| PyValueError::new_err("the scene has nothing to frame"))?;
         let camera = CameraSettings::default()
@@ -93,8 +88,8 @@ impl PyRenderer {
             self.renderer = Some(r);
         }
         let renderer = self.renderer.as_mut().expect("made above");
-        let image = renderer
-            .render_image(&ctx.device, &ctx.queue, uploaded, &frame)
+        let image = py
+            .detach(|| renderer.render_image(&ctx.device, &ctx.queue, uploaded, &frame))
             .map_err(to_py)?;
         let [w, h] = [image.width as usize, image.height as usize];
         let mut rgba = Vec::with_capacity(w * h * 4);

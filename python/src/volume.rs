@@ -3,22 +3,20 @@
 //! robust range measured and classified by a preset, exactly as `autostereo volume` prepares
 //! the same samples written to a raw file. Uploaded on first render and kept.
 
-use std::sync::OnceLock;
-
 use autostereo::volume::{TransferFunction, Volume, PRESETS};
-use autostereo::{AnyData, AnyScene, VolumeData};
+use autostereo::{AnyData, VolumeData};
 use glam::Mat4;
 use numpy::{PyReadonlyArray3, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 
 use crate::errors::to_py;
+use crate::scene::PyScene;
 
 /// A scalar volume.
-#[pyclass(name = "Volume", module = "autostereo", frozen)]
+#[pyclass(name = "Volume", module = "autostereo", extends = PyScene, frozen)]
 pub struct PyVolume {
-    pub data: AnyData,
-    pub scene: OnceLock<AnyScene>,
+    dims: [u32; 3],
 }
 
 /// The samples of `array` in x-fastest order and whether they are 8-bit, for the dtypes a
@@ -64,7 +62,11 @@ impl PyVolume {
     /// what the CLI gives a raw file, `ct-skin`).
     #[new]
     #[pyo3(signature = (array, spacing = (1.0, 1.0, 1.0), tf = None))]
-    fn new(array: &Bound<'_, PyAny>, spacing: (f32, f32, f32), tf: Option<&str>) -> PyResult<Self> {
+    fn new(
+        array: &Bound<'_, PyAny>,
+        spacing: (f32, f32, f32),
+        tf: Option<&str>,
+    ) -> PyResult<PyClassInitializer<Self>> {
         let (values, [z, y, x], eight_bit) = samples(array)?;
         let to_u32 =
             |n: usize| u32::try_from(n).map_err(|_| PyValueError::new_err("too many voxels"));
@@ -95,18 +97,16 @@ impl PyVolume {
             model: Mat4::IDENTITY,
             clip: Vec::new(),
         };
-        Ok(Self {
-            data: AnyData::Volume(Box::new(data)),
-            scene: OnceLock::new(),
-        })
+        let dims = data.volume.dims;
+        Ok(
+            PyClassInitializer::from(PyScene::new(AnyData::Volume(Box::new(data))))
+                .add_subclass(Self { dims }),
+        )
     }
 
     /// Voxels along x, y, z.
     #[getter]
     fn dims(&self) -> [u32; 3] {
-        match &self.data {
-            AnyData::Volume(v) => v.volume.dims,
-            _ => unreachable!("a Volume holds a volume"),
-        }
+        self.dims
     }
 }

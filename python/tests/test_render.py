@@ -100,3 +100,85 @@ def test_a_second_frame_reuses_the_prepared_renderer():
         times.append(time.perf_counter() - start)
     print(f"first frame {times[0] * 1e3:.1f} ms (upload, pipelines), second {times[1] * 1e3:.1f} ms")
     assert image.shape == (64, 64, 4)
+
+
+def torus(n=24, m=12):
+    """A torus, (V, 3) float32 vertices and (F, 3) int64 faces."""
+    u, v = np.meshgrid(np.linspace(0, 2 * np.pi, n, endpoint=False),
+                       np.linspace(0, 2 * np.pi, m, endpoint=False), indexing="ij")
+    x = (1 + 0.4 * np.cos(v)) * np.cos(u)
+    y = 0.4 * np.sin(v)
+    z = (1 + 0.4 * np.cos(v)) * np.sin(u)
+    vertices = np.stack([x, y, z], -1).reshape(-1, 3).astype(np.float32)
+    faces = []
+    for i in range(n):
+        for j in range(m):
+            a, b = i * m + j, ((i + 1) % n) * m + j
+            c, d = ((i + 1) % n) * m + (j + 1) % m, i * m + (j + 1) % m
+            faces += [(a, b, c), (a, c, d)]
+    return vertices, np.array(faces, np.int64)
+
+
+def write_obj(path, vertices, faces):
+    with open(path, "w") as f:
+        for p in vertices:
+            f.write("v " + " ".join(repr(float(c)) for c in p) + "\n")
+        for t in faces:
+            f.write("f " + " ".join(str(i + 1) for i in t) + "\n")
+
+
+def cli_render(tmp_path, command, path, display="hubner8", size="64x48"):
+    png = tmp_path / f"{command}.png"
+    subprocess.run([cli(), command, str(path), "--display", display, "--size", size,
+                    "--out", str(png)], check=True, capture_output=True)
+    return read_png(png)
+
+
+def test_a_numpy_mesh_and_a_loaded_file_render_as_the_cli_renders_the_obj(tmp_path):
+    vertices, faces = torus()
+    obj = tmp_path / "torus.obj"
+    write_obj(obj, vertices, faces)
+    expected = cli_render(tmp_path, "mesh", obj)
+    r = ast.Renderer(ast.Display("hubner8"), size=(64, 48))
+    mesh = ast.Mesh(vertices, faces)
+    assert mesh.triangles == len(faces) and mesh.kind == "mesh"
+    image = r.render(mesh)
+    assert (image[..., :3] != 0).any()
+    np.testing.assert_array_equal(image[..., :3], expected)
+    loaded = ast.load(str(obj))
+    assert loaded.kind == "mesh"
+    np.testing.assert_array_equal(r.render(loaded)[..., :3], expected)
+
+
+def test_numpy_points_render_as_the_cli_renders_the_ply(tmp_path):
+    rng = np.random.default_rng(7)
+    p = rng.normal(size=(400, 3))
+    p = (p / np.linalg.norm(p, axis=1, keepdims=True)).astype(np.float32)
+    ply = tmp_path / "ball.ply"
+    with open(ply, "w") as f:
+        f.write(f"ply\nformat ascii 1.0\nelement vertex {len(p)}\n"
+                "property float x\nproperty float y\nproperty float z\nend_header\n")
+        for q in p:
+            f.write(" ".join(repr(float(c)) for c in q) + "\n")
+    expected = cli_render(tmp_path, "points", ply)
+    points = ast.Points(p)
+    assert len(points) == 400
+    image = ast.Renderer(ast.Display("hubner8"), size=(64, 48)).render(points)
+    assert (image[..., :3] != 0).any()
+    np.testing.assert_array_equal(image[..., :3], expected)
+
+
+def test_bad_geometry_raises_with_the_librarys_message():
+    vertices, faces = torus(6, 4)
+    with pytest.raises(ValueError, match=r"\(N, 3\)"):
+        ast.Mesh(vertices[:, :2], faces)
+    with pytest.raises(ValueError, match="not a vertex"):
+        ast.Mesh(vertices, faces + len(vertices))
+    bad = vertices.copy()
+    bad[0, 0] = np.nan
+    with pytest.raises(ValueError, match="finite|NaN|non-finite"):
+        ast.Mesh(bad, faces)
+    with pytest.raises(TypeError, match="real numbers"):
+        ast.Points(np.zeros((4, 3), np.complex64))
+    with pytest.raises(OSError):
+        ast.load("/no/such/file.obj")

@@ -15,7 +15,10 @@ use crate::target::SpatialTarget;
 /// writes nothing through the queue: the frame's constants (camera, mask, per-pass uniforms, a
 /// few hundred bytes) go into small buffers of the frame's own, created with their contents,
 /// so several frames, even with different cameras, can be encoded before one submit.
-pub trait Renderer<S: ?Sized> {
+///
+/// Renderers are `Send` (their GPU objects are on native backends): a binding may render on
+/// another thread than the one that built it (the Python module releases the GIL).
+pub trait Renderer<S: ?Sized>: Send {
     /// Get ready for frames like `frame` of `scene`: call it once, and again when the display,
     /// the size or the scene changes. Cheap when nothing changed.
     fn prepare(

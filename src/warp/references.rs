@@ -90,7 +90,7 @@ impl ReferenceImages {
 /// A renderer that can render a frame's views with their nearness into [`ReferenceImages`]:
 /// the first half of a warp. `frame` is a [`reference_frame`]: its camera's views are the
 /// references. The colour of each reference equals that view of the renderer's N-pass.
-pub trait ReferenceRenderer<S: ?Sized> {
+pub trait ReferenceRenderer<S: ?Sized>: Send {
     /// Get ready (pipelines, scratch) for references like `frame` of `scene`.
     fn prepare_references(
         &mut self,
