@@ -78,18 +78,19 @@ fn files() -> Vec<(String, String)> {
 }
 
 /// The lines of `text` that may hold commands, `\` continuations joined, with their numbers: a
-/// script's every line; Markdown's fenced code (not Rust) and code spans, wrapped ones joined.
+/// script's every line; Markdown's fenced code (not Rust or Python: `autostereo` there is the
+/// crate or the Python module) and code spans, wrapped ones joined.
 fn code_lines(path: &str, text: &str) -> Vec<(usize, String)> {
-    let (mut out, mut fence, mut rust) = (Vec::new(), false, false);
+    let (mut out, mut fence, mut other_language) = (Vec::new(), false, false);
     let mut pending: Option<(usize, String)> = None;
     let mut open: Option<(usize, String)> = None;
     for (n, line) in text.lines().enumerate().map(|(n, l)| (n + 1, l)) {
         let t = line.trim_start();
         if path.ends_with(".md") && t.starts_with("```") {
-            (fence, rust) = (!fence, t.contains("rust"));
+            (fence, other_language) = (!fence, t.contains("rust") || t.contains("python"));
             continue;
         }
-        if path.ends_with(".sh") || (fence && !rust) {
+        if path.ends_with(".sh") || (fence && !other_language) {
             let (first, mut joined) = pending.take().unwrap_or((n, String::new()));
             joined += line;
             match joined.strip_suffix('\\') {
