@@ -17,11 +17,18 @@ pub struct PyDisplay {
 impl PyDisplay {
     /// The display of `spec`, as the CLI's `--display` takes it.
     #[new]
-    fn new(spec: &str) -> PyResult<Self> {
+    pub fn parse(spec: &str) -> PyResult<Self> {
         Ok(Self {
             display: Display::parse(spec).map_err(to_py)?,
             spec: spec.to_string(),
         })
+    }
+
+    /// A Looking Glass from its calibration (`visual.json`, as the panel's drive holds it): the
+    /// display `lkg:PATH`.
+    #[staticmethod]
+    fn from_calibration(path: &str) -> PyResult<Self> {
+        Self::parse(&format!("lkg:{path}"))
     }
 
     /// Views the display shows.

@@ -21,6 +21,7 @@ fn autostereo(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<geometry::PyMesh>()?;
     m.add_class::<geometry::PyPoints>()?;
     m.add_function(wrap_pyfunction!(scene::load, m)?)?;
+    m.add_function(wrap_pyfunction!(renderer::render, m)?)?;
     m.add_class::<renderer::PyRenderer>()?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

@@ -100,3 +100,18 @@ impl PyRenderer {
         array.reshape([h, w, 4])
     }
 }
+
+/// One call: `scene` rendered for `display` (a spec) at `size` by `method`, as
+/// `Renderer(Display(display), size, method).render(scene)`.
+#[pyfunction]
+#[pyo3(signature = (scene, display = "hubner8", size = (512, 512), method = "single-pass"))]
+pub fn render<'py>(
+    py: Python<'py>,
+    scene: &PyScene,
+    display: &str,
+    size: (u32, u32),
+    method: &str,
+) -> PyResult<Bound<'py, PyArray3<u8>>> {
+    let display = PyDisplay::parse(display)?;
+    PyRenderer::new(&display, size, method)?.render(py, scene)
+}

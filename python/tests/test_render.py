@@ -182,3 +182,17 @@ def test_bad_geometry_raises_with_the_librarys_message():
         ast.Points(np.zeros((4, 3), np.complex64))
     with pytest.raises(OSError):
         ast.load("/no/such/file.obj")
+
+
+def test_a_calibration_and_the_one_call_form_are_the_same_display_and_image():
+    calibration = ROOT / "data" / "lkg_sample_visual.json"
+    a = ast.Display.from_calibration(str(calibration))
+    b = ast.Display(f"lkg:{calibration}")
+    assert a.views == b.views > 1
+    with pytest.raises(ValueError, match="no-such.json"):
+        ast.Display.from_calibration("/no-such.json")
+    vertices, faces = torus()
+    mesh = ast.Mesh(vertices, faces)
+    one_call = ast.render(mesh, display="lenticular:4", size=(48, 32))
+    expected = ast.Renderer(ast.Display("lenticular:4"), size=(48, 32)).render(mesh)
+    np.testing.assert_array_equal(one_call, expected)
