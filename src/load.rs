@@ -144,6 +144,24 @@ pub struct VolumeData {
 }
 
 impl VolumeData {
+    /// The box around what `projection` (`isovalue`: the isosurface's normalised value) shows
+    /// of this volume under its transfer function and within its clip planes
+    /// ([`Volume::visible_bounds`]), else its whole box: what the CLI's `--fit visible` and
+    /// the Python module frame. The flag says which it is (false: nothing is visible).
+    pub fn framed_bounds(
+        &self,
+        projection: crate::volume::Projection,
+        isovalue: f32,
+    ) -> (crate::camera::Bounds, bool) {
+        match self
+            .volume
+            .visible_bounds(&self.transfer, projection, isovalue, &self.clip)
+        {
+            Some(bounds) => (bounds, true),
+            None => (self.volume.bounds(), false),
+        }
+    }
+
     /// `volume` classified by `transfer` (a preset name), placed by `model`.
     pub fn with_preset(volume: Volume, preset: &'static str, model: Mat4) -> Result<Self> {
         Ok(Self {

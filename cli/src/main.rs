@@ -24,6 +24,7 @@ mod run;
 mod turntable;
 mod view;
 mod views_cmd;
+mod volume_box_args;
 mod volume_cmd;
 mod volume_render_args;
 mod warp_cmd;

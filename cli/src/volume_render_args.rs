@@ -172,16 +172,14 @@ impl VolumeRenderArgs {
             return Ok(volume.bounds());
         }
         let isovalue = self.isovalue(&volume.values)?;
-        match volume.visible_bounds(&data.transfer, self.projection, isovalue, &data.clip) {
-            Some(bounds) => Ok(bounds),
-            None => {
-                eprintln!(
-                    "note: the transfer function shows none of the volume's voxels (within \
-                     --clip): framing its whole box (--fit box); try another --tf or --window"
-                );
-                Ok(volume.bounds())
-            }
+        let (bounds, visible) = data.framed_bounds(self.projection, isovalue);
+        if !visible {
+            eprintln!(
+                "note: the transfer function shows none of the volume's voxels (within \
+                 --clip): framing its whole box (--fit box); try another --tf or --window"
+            );
         }
+        Ok(bounds)
     }
 
     pub fn isovalue(&self, values: &autostereo::volume::Values) -> Result<f32> {

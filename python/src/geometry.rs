@@ -8,7 +8,7 @@ use autostereo::points::PointCloud;
 use autostereo::{AnyData, PointLoad};
 use glam::Vec3;
 use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
-use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
 use crate::errors::to_py;
@@ -30,22 +30,13 @@ fn rows(array: &Bound<'_, PyAny>, width: usize, what: &str) -> PyResult<Vec<Vec<
         )*};
     }
     as_rows!(f32, f64, i32, i64, u32, u64, i16, u16, u8);
-    let ndim = array
-        .getattr("ndim")
-        .and_then(|n| n.extract::<usize>())
-        .ok();
-    match ndim {
-        Some(n) if n != 2 => Err(PyValueError::new_err(format!(
-            "{what}: an (N, {width}) array, not one of {n} dimensions"
-        ))),
-        _ => Err(PyTypeError::new_err(format!(
-            "{what}: an array of real numbers, not {}",
-            array
-                .getattr("dtype")
-                .map(|d| d.to_string())
-                .unwrap_or_else(|_| array.get_type().to_string())
-        ))),
-    }
+    Err(crate::arrays::refused(
+        array,
+        what,
+        &format!("an (N, {width}) array"),
+        2,
+        "uint8, int16, uint16, int32, uint32, int64, uint64, float32, float64",
+    ))
 }
 
 fn vec3s(array: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<Vec3>> {

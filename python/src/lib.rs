@@ -3,6 +3,7 @@
 //! ([`context`]); each scene is uploaded once and kept; a `Renderer` keeps its prepared state
 //! between frames.
 
+mod arrays;
 mod context;
 mod display;
 mod errors;

@@ -43,11 +43,7 @@ fn method(name: &str) -> PyResult<Method> {
 /// else the data's bounds.
 fn framed(data: &AnyData) -> Option<autostereo::camera::Bounds> {
     match data {
-        AnyData::Volume(v) => Some(
-            v.volume
-                .visible_bounds(&v.transfer, Default::default(), 0.5, &v.clip)
-                .unwrap_or_else(|| v.volume.bounds()),
-        ),
+        AnyData::Volume(v) => Some(v.framed_bounds(Default::default(), 0.5).0),
         other => other.bounds(),
     }
 }

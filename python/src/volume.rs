@@ -7,7 +7,7 @@ use autostereo::volume::{TransferFunction, Volume, PRESETS};
 use autostereo::{AnyData, VolumeData};
 use glam::Mat4;
 use numpy::{PyReadonlyArray3, PyUntypedArrayMethods};
-use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
 use crate::errors::to_py;
@@ -37,23 +37,13 @@ fn samples(array: &Bound<'_, PyAny>) -> PyResult<(Vec<f32>, [usize; 3], bool)> {
         return Ok((values, [shape[0], shape[1], shape[2]], true));
     }
     try_dtype!(f32, f64, i8, u16, i16, u32, i32);
-    let described = array
-        .getattr("dtype")
-        .map(|d| d.to_string())
-        .unwrap_or_else(|_| array.get_type().to_string());
-    let ndim = array
-        .getattr("ndim")
-        .and_then(|n| n.extract::<usize>())
-        .ok();
-    match ndim {
-        Some(n) if n != 3 => Err(PyValueError::new_err(format!(
-            "a volume is a 3-dimensional array (Z, Y, X); this one has {n} dimensions"
-        ))),
-        _ => Err(PyTypeError::new_err(format!(
-            "a volume's samples are real numbers (uint8, int8, uint16, int16, uint32, int32, \
-             float32, float64), not {described}"
-        ))),
-    }
+    Err(crate::arrays::refused(
+        array,
+        "a volume",
+        "a 3-dimensional array (Z, Y, X)",
+        3,
+        "uint8, int8, uint16, int16, uint32, int32, float32, float64",
+    ))
 }
 
 #[pymethods]
