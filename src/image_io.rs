@@ -78,16 +78,9 @@ impl RgbImage {
         (y as usize * self.width as usize + x as usize) * 3 + c as usize
     }
 
-    /// Write a PNG (RGB8).
-    /// Encoded in memory first: the file is created only once the PNG exists, so a failure
-    /// leaves no empty or partial file behind.
-    pub fn save_png(&self, path: &Path) -> Result<()> {
+    /// The image as PNG (RGB8) bytes; `Err` in words.
+    pub fn png_bytes(&self) -> std::result::Result<Vec<u8>, String> {
         use image::ImageEncoder;
-        let fail = |reason: String| Error::Image {
-            path: path.to_path_buf(),
-            reason,
-            advice: None,
-        };
         let mut png = Vec::new();
         image::codecs::png::PngEncoder::new(&mut png)
             .write_image(
@@ -96,7 +89,19 @@ impl RgbImage {
                 self.height,
                 image::ExtendedColorType::Rgb8,
             )
-            .map_err(|e| fail(e.to_string()))?;
+            .map_err(|e| e.to_string())?;
+        Ok(png)
+    }
+
+    /// Write a PNG (RGB8).
+    /// Encoded in memory first: the file is created only once the PNG exists, so a failure
+    /// leaves no empty or partial file behind.
+    pub fn save_png(&self, path: &Path) -> Result<()> {
+        let png = self.png_bytes().map_err(|reason| Error::Image {
+            path: path.to_path_buf(),
+            reason,
+            advice: None,
+        })?;
         std::fs::write(path, png).map_err(|e| Error::io(path, e))
     }
 

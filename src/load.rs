@@ -108,6 +108,7 @@ impl Default for VolumeLoad {
 }
 
 /// A file's data, prepared, on the CPU.
+#[derive(Clone)]
 pub enum AnyData {
     /// Triangles.
     Mesh(Mesh),
@@ -120,6 +121,7 @@ pub enum AnyData {
 }
 
 /// A point cloud completed into splats.
+#[derive(Clone)]
 pub struct PointData {
     /// The splats.
     pub splats: Splats,
@@ -130,6 +132,7 @@ pub struct PointData {
 }
 
 /// A volume, its transfer function and its placement.
+#[derive(Clone)]
 pub struct VolumeData {
     /// The voxels.
     pub volume: Volume,

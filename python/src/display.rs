@@ -10,7 +10,7 @@ use crate::errors::to_py;
 #[pyclass(name = "Display", module = "autostereo", frozen)]
 pub struct PyDisplay {
     pub display: Display,
-    spec: String,
+    pub spec: String,
 }
 
 #[pymethods]

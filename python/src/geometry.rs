@@ -15,7 +15,7 @@ use crate::errors::to_py;
 use crate::scene::PyScene;
 
 /// The rows of an (N, `width`) array of `what` as f64, for float and integer dtypes.
-fn rows(array: &Bound<'_, PyAny>, width: usize, what: &str) -> PyResult<Vec<Vec<f64>>> {
+pub fn rows(array: &Bound<'_, PyAny>, width: usize, what: &str) -> PyResult<Vec<Vec<f64>>> {
     macro_rules! as_rows {
         ($($t:ty),*) => {$(
             if let Ok(a) = array.extract::<PyReadonlyArray2<'_, $t>>() {
@@ -39,7 +39,7 @@ fn rows(array: &Bound<'_, PyAny>, width: usize, what: &str) -> PyResult<Vec<Vec<
     ))
 }
 
-fn vec3s(array: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<Vec3>> {
+pub fn vec3s(array: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<Vec3>> {
     Ok(rows(array, 3, what)?
         .iter()
         .map(|r| Vec3::new(r[0] as f32, r[1] as f32, r[2] as f32))

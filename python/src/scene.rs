@@ -5,11 +5,15 @@
 use std::path::PathBuf;
 use std::sync::OnceLock;
 
+use autostereo::render::{Method, StereoFormat};
 use autostereo::{AnyData, AnyScene, LoadOptions};
+use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
+use pyo3::types::PyBytes;
 
 use crate::context::context;
 use crate::errors::to_py;
+use crate::renderer::PyRenderer;
 
 /// A scene to render.
 #[pyclass(name = "Scene", module = "autostereo", subclass, frozen)]
@@ -47,6 +51,16 @@ impl PyScene {
 
     fn __repr__(&self) -> String {
         format!("autostereo.Scene({})", self.data.kind().name())
+    }
+
+    /// Jupyter's picture of the scene: a red-cyan anaglyph (Dubois) of two of hubner8's views,
+    /// 480 × 360, the default framing (`Renderer.preview` gives any other).
+    fn _repr_png_<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyBytes>> {
+        let display = autostereo::display::Display::parse("hubner8").map_err(to_py)?;
+        let mut renderer = PyRenderer::with(display, [480, 360], Method::SinglePass);
+        let image = renderer.stereo(py, self, None, StereoFormat::AnaglyphDubois, None)?;
+        let png = image.png_bytes().map_err(PyValueError::new_err)?;
+        Ok(PyBytes::new(py, &png))
     }
 }
 

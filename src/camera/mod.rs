@@ -6,10 +6,12 @@
 pub(crate) mod crop_box;
 mod framing;
 mod gpu;
+mod orbit;
 mod settings;
 
 pub use framing::Bounds;
 pub use gpu::{CameraUniform, ViewUniform};
+pub use orbit::Orbit;
 pub use settings::{CameraSettings, Focal, Side, Spread};
 
 use glam::{Mat4, Vec2, Vec3, Vec4};

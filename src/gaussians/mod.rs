@@ -231,6 +231,24 @@ pub(crate) fn check_budget(count: u64, degree: u32, extra: u64) -> Result<()> {
     )
 }
 
+/// The unit rotation of a file's (or an array's) `(w, x, y, z)` for Gaussian `i`; `Err` for a zero or non-finite quaternion.
+pub fn unit_rotation(
+    i: usize,
+    w: f32,
+    x: f32,
+    y: f32,
+    z: f32,
+) -> std::result::Result<glam::Quat, String> {
+    let q = glam::Quat::from_xyzw(x, y, z, w);
+    let length = q.length();
+    if !(length.is_finite() && length > 1e-12) {
+        return Err(format!(
+            "Gaussian {i} has a zero or non-finite rotation quaternion (w, x, y, z) = ({w}, {x}, {y}, {z})"
+        ));
+    }
+    Ok(q / length)
+}
+
 /// The logistic sigmoid `1 / (1 + e^−x)`: a trainer's opacity logit → opacity.
 pub fn sigmoid(x: f32) -> f32 {
     1.0 / (1.0 + (-x).exp())

@@ -17,9 +17,9 @@ use winit::event_loop::{ActiveEventLoop, EventLoop};
 use winit::window::{Fullscreen, Window, WindowId};
 
 use crate::options::{Options, Preview};
-use crate::orbit::Orbit;
 use crate::scene::{Scene, Uploaded};
 use crate::Report;
+use autostereo::camera::Orbit;
 
 mod clip;
 mod controls;
@@ -47,17 +47,37 @@ const MORE_DISPLAYS: [&str; 4] = [
 
 pub fn run(scene: Scene, options: Options) -> Result<Report> {
     let event_loop = EventLoop::new().map_err(Error::WindowSystem)?;
-    let mut app = App {
-        options,
-        scene: Some(scene),
-        state: None,
-        error: None,
-    };
+    let mut app = App::new(scene, options);
     event_loop.run_app(&mut app)?;
-    match (app.error, &app.state) {
-        (Some(e), _) => Err(e),
-        (None, Some(state)) => Ok(report::report(state)),
-        (None, None) => Err(Error::NeverOpened),
+    app.report()
+}
+
+/// [`run`] on an event loop that outlives the window (`crate::Windows`): the window closes
+/// when the run ends, the loop stays for the next.
+pub fn run_on(event_loop: &mut EventLoop<()>, scene: Scene, options: Options) -> Result<Report> {
+    use winit::platform::run_on_demand::EventLoopExtRunOnDemand;
+    let mut app = App::new(scene, options);
+    event_loop.run_app_on_demand(&mut app)?;
+    app.report()
+}
+
+impl App {
+    fn new(scene: Scene, options: Options) -> Self {
+        Self {
+            options,
+            scene: Some(scene),
+            state: None,
+            error: None,
+        }
+    }
+
+    /// What the run showed, or why it failed.
+    fn report(self) -> Result<Report> {
+        match (self.error, &self.state) {
+            (Some(e), _) => Err(e),
+            (None, Some(state)) => Ok(report::report(state)),
+            (None, None) => Err(Error::NeverOpened),
+        }
     }
 }
 
@@ -307,7 +327,7 @@ impl State {
             display: 0,
             preview: options.preview,
             preview_view: None,
-            orbit: Orbit::default(),
+            orbit: options.orbit,
             separation_scale: 1.0,
             focal_scale: 1.0,
             key_clip: clip::KeyClip::default(),

@@ -20,13 +20,14 @@ mod app;
 mod error;
 mod monitors;
 mod options;
-mod orbit;
 mod scene;
+mod windows;
 
 pub use error::{Error, Result};
 pub use monitors::{monitors, Monitor, MonitorInfo};
 pub use options::{Options, Preview, Switch};
 pub use scene::Scene;
+pub use windows::Windows;
 
 /// What a viewer run showed, when it ends: the scene, the method and display last shown, the
 /// window, the frames presented, the adapter and the files written (the screenshot); an

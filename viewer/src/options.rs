@@ -79,6 +79,9 @@ pub struct Options {
     /// What the title and the report call the display (the spec it was made from).
     pub display_name: String,
     pub camera: CameraSettings,
+    /// Where the camera starts, turned from `camera`'s framing (the mouse turns it from
+    /// there; key r goes back to the framing).
+    pub orbit: autostereo::camera::Orbit,
     /// Window client-area size in pixels.
     pub size: [u32; 2],
     /// Window position on the desktop (the mask's origin follows it).
@@ -110,6 +113,7 @@ impl Options {
             display,
             display_name: display_name.into(),
             camera: CameraSettings::default(),
+            orbit: Default::default(),
             size: [512, 512],
             position: None,
             fullscreen: None,

@@ -178,6 +178,7 @@ pub fn run(args: ViewArgs, given: &clap::ArgMatches) -> Result<()> {
         display,
         display_name: args.display.display.clone(),
         camera: args.camera.settings(),
+        orbit: Default::default(),
         size: args.size,
         position: args.position,
         fullscreen: args.fullscreen,

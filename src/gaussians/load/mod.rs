@@ -12,6 +12,7 @@ pub use ply::parse_ply;
 pub use splat::parse_splat;
 pub use spz::parse_spz;
 
+pub(super) use super::unit_rotation as rotation;
 use super::Gaussians;
 use crate::error::{Error, Result};
 
@@ -47,16 +48,4 @@ fn checked(gaussians: Gaussians, path: &Path) -> Result<Gaussians> {
         Some(reason) => Err(error(path, reason)),
         None => Ok(gaussians),
     }
-}
-
-/// The unit rotation of a file's `(w, x, y, z)`; `Err` for a zero or non-finite quaternion.
-fn rotation(i: usize, w: f32, x: f32, y: f32, z: f32) -> std::result::Result<glam::Quat, String> {
-    let q = glam::Quat::from_xyzw(x, y, z, w);
-    let length = q.length();
-    if !(length.is_finite() && length > 1e-12) {
-        return Err(format!(
-            "Gaussian {i} has a zero or non-finite rotation quaternion (w, x, y, z) = ({w}, {x}, {y}, {z})"
-        ));
-    }
-    Ok(q / length)
 }

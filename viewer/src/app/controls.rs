@@ -8,7 +8,7 @@ use winit::keyboard::{Key, NamedKey};
 
 use super::State;
 use crate::options::{Options, Switch};
-use crate::orbit::Orbit;
+use autostereo::camera::Orbit;
 
 /// Window sizes the exercise run alternates between.
 const EXERCISE_SIZES: [[u32; 2]; 3] = [[320, 240], [256, 256], [400, 300]];

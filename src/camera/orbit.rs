@@ -1,10 +1,11 @@
-//! Mouse navigation: orbit around the point the camera looks at (--look-at, else the scene's
-//! centre), zoom towards it, pan across the view; applied to the command line's camera (the
-//! framing, or --look-from/--look-at/--up) as rigid motions (the renderers need a rigid view
-//! matrix).
+//! Orbiting a camera: turn around the point it looks at (the pivot: `--look-at`, else the
+//! scene's centre), zoom towards it, pan across the view, as rigid motions of a camera
+//! [`CameraSettings`](super::CameraSettings) made (the renderers need a rigid view matrix).
+//! The viewer's mouse drives it; the Python package's `Camera.orbit` sets it in degrees.
 
-use autostereo::camera::MultiViewCamera;
 use glam::{Mat4, Vec2, Vec3};
+
+use super::MultiViewCamera;
 
 /// Radians per pixel of drag.
 const TURN_PER_PIXEL: f32 = 0.01;
@@ -25,6 +26,18 @@ pub struct Orbit {
 }
 
 impl Orbit {
+    /// The camera carried `yaw` degrees around the pivot's vertical axis (positive: toward
+    /// the scene's right, +x; 90 looks from the right) and `pitch` degrees over it (positive:
+    /// up; 90 looks down from the top with the front at the image's bottom, as
+    /// [`Side::Top`](super::Side::Top)). The world turns the other way under the camera.
+    pub fn degrees(yaw: f32, pitch: f32) -> Self {
+        Self {
+            yaw: -yaw.to_radians(),
+            pitch: pitch.to_radians(),
+            ..Self::default()
+        }
+    }
+
     /// A drag of (dx, dy) pixels with the orbit button.
     pub fn turn(&mut self, dx: f32, dy: f32) {
         self.yaw += dx * TURN_PER_PIXEL;
@@ -63,6 +76,44 @@ impl Orbit {
             near: base.near * scale,
             far: base.far,
             ..base.clone()
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::camera::{Bounds, CameraSettings, Side};
+    use crate::display::Display;
+
+    /// `Orbit::degrees(90, 0)` looks from the right, `(0, 90)` from the top: the same eye and
+    /// image axes as the sides.
+    #[test]
+    fn orbit_degrees_turn_the_camera_to_the_sides() {
+        let bounds = Bounds {
+            min: Vec3::new(-1.0, -2.0, -0.5),
+            max: Vec3::new(3.0, 1.0, 0.5),
+        };
+        let display = Display::parse("hubner8").unwrap();
+        let camera = |side| {
+            let settings = CameraSettings {
+                side,
+                ..Default::default()
+            };
+            settings.camera(bounds, &display, [64, 48]).unwrap()
+        };
+        let front = camera(None);
+        for (orbit, side) in [
+            (Orbit::degrees(90.0, 0.0), Side::Right),
+            (Orbit::degrees(-90.0, 0.0), Side::Left),
+            (Orbit::degrees(0.0, 90.0), Side::Top),
+            (Orbit::degrees(0.0, -90.0), Side::Bottom),
+            (Orbit::degrees(180.0, 0.0), Side::Back),
+        ] {
+            let turned = orbit.apply(&front, bounds.center());
+            let expected = camera(Some(side));
+            let (a, b) = (turned.eye_from_world, expected.eye_from_world);
+            assert!(a.abs_diff_eq(b, 1e-4), "{side:?}: {a} vs {b}");
         }
     }
 }
