@@ -19,7 +19,8 @@
 
 use half::f16;
 
-use super::transfer::{TransferFunction, TABLE_SIZE};
+use super::preintegration::TABLE_SIZE;
+use super::transfer::TransferFunction;
 use super::Volume;
 
 /// Largest distance stored (one byte per cell).

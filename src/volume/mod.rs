@@ -10,6 +10,7 @@ pub mod load;
 pub(crate) mod options;
 pub mod orientation;
 pub(crate) mod passes;
+mod preintegration;
 mod scene;
 pub(crate) mod transfer;
 pub mod values;
@@ -19,11 +20,12 @@ pub use clip::{ClipPlane, MAX_CLIP_PLANES};
 pub use empty_space::{CellRanges, MAX_DISTANCE};
 pub use options::{AlphaMode, Projection, VolumeOptions, VolumePath, VolumeSettings};
 pub use passes::{VolumeRaycaster, VolumeSlicer};
+pub use preintegration::PreintegrationTable;
 pub use scene::{
     EmptyDistanceTexture, PreintegrationTexture, VolumeScene, VolumeTexture, MAX_EMPTY_STRIDE,
     MAX_SAMPLES_PER_RAY, SUGGESTED_EMPTY_STRIDE, SUGGESTED_SHARE_SAMPLES,
 };
-pub use transfer::{PreintegrationTable, Transfer, TransferFunction, PRESETS};
+pub use transfer::{Transfer, TransferFunction, PRESETS};
 pub use values::{Modality, Units, Values};
 
 use glam::{Mat3, Vec3};

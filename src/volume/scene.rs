@@ -7,7 +7,8 @@ use glam::{Mat4, Vec3};
 use half::f16;
 use wgpu::util::DeviceExt;
 
-use super::transfer::{PreintegrationTable, TransferFunction, TABLE_SIZE};
+use super::preintegration::{PreintegrationTable, TABLE_SIZE};
+use super::transfer::TransferFunction;
 use super::{CellRanges, Volume, VolumeSettings};
 use crate::advice::{Advice, Setting};
 use crate::error::{Error, Result};
