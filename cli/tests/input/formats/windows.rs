@@ -5,8 +5,15 @@
 use super::*;
 
 /// A 24³ NRRD of floats: −3024 outside a sphere's field of view, −1000 air, 40 tissue, 1000
-/// bone shell (a CT's values; NRRD carries no units, so they are the file's own).
+/// bone shell (a CT's values; NRRD carries no units, so they are the file's own). Written once
+/// for every test here: they run in parallel, and one rewriting the file while another's CLI
+/// reads it gave that CLI an empty file.
 fn ct_nrrd() -> PathBuf {
+    static FILE: std::sync::OnceLock<PathBuf> = std::sync::OnceLock::new();
+    FILE.get_or_init(write_ct_nrrd).clone()
+}
+
+fn write_ct_nrrd() -> PathBuf {
     let n = 24usize;
     let mut bytes = format!(
         "NRRD0004\ntype: float\ndimension: 3\nsizes: {n} {n} {n}\nendian: little\nencoding: raw\n\n"
