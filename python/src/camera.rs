@@ -12,6 +12,7 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
 use crate::errors::to_py;
+use crate::names::by_name;
 
 /// How a render's cameras are set up; `Camera()` is the CLI's default framing.
 #[pyclass(name = "Camera", module = "autostereo", frozen)]
@@ -30,18 +31,9 @@ fn vec3(v: Option<(f32, f32, f32)>, what: &str) -> PyResult<Option<Vec3>> {
     }
 }
 
-fn named<T: Copy>(value: &str, what: &str, names: &[(&str, T)]) -> PyResult<T> {
-    names
-        .iter()
-        .find(|(n, _)| *n == value)
-        .map(|(_, t)| *t)
-        .ok_or_else(|| {
-            let all: Vec<&str> = names.iter().map(|(n, _)| *n).collect();
-            PyValueError::new_err(format!(
-                "{what}: {value:?} is not one of {}",
-                all.join(", ")
-            ))
-        })
+/// The value of `table` named `value`.
+fn named<T: Copy + 'static>(value: &str, what: &str, table: &[(&'static str, T)]) -> PyResult<T> {
+    by_name(value, what, table, |(n, _)| n).map(|(_, t)| t)
 }
 
 const SIDES: [(&str, Side); 6] = [

@@ -11,6 +11,7 @@ mod display;
 mod errors;
 mod gaussians;
 mod geometry;
+mod names;
 mod renderer;
 mod scene;
 mod show;

@@ -17,6 +17,7 @@ use crate::camera::PyCamera;
 use crate::context::context;
 use crate::display::PyDisplay;
 use crate::errors::to_py;
+use crate::names::by_name;
 use crate::scene::PyScene;
 
 /// A renderer for one display and size; it keeps its prepared state between frames.
@@ -29,31 +30,16 @@ pub struct PyRenderer {
 }
 
 pub fn method(name: &str) -> PyResult<Method> {
-    Method::ALL
-        .iter()
-        .copied()
-        .find(|m| m.name() == name)
-        .ok_or_else(|| {
-            let names: Vec<&str> = Method::ALL.iter().map(|m| m.name()).collect();
-            PyValueError::new_err(format!(
-                "unknown method {name:?} (methods: {})",
-                names.join(", ")
-            ))
-        })
+    by_name(name, "method", &Method::ALL, Method::name)
 }
 
 fn stereo_format(name: &str) -> PyResult<StereoFormat> {
-    StereoFormat::ALL
-        .iter()
-        .copied()
-        .find(|f| f.name() == name)
-        .ok_or_else(|| {
-            let names: Vec<&str> = StereoFormat::ALL.iter().map(|f| f.name()).collect();
-            PyValueError::new_err(format!(
-                "unknown stereo format {name:?} (formats: {})",
-                names.join(", ")
-            ))
-        })
+    by_name(
+        name,
+        "stereo format",
+        &StereoFormat::ALL,
+        StereoFormat::name,
+    )
 }
 
 /// The box the camera frames for `data`: a volume's visible voxels (the CLI's `--fit visible`),

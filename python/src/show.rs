@@ -15,6 +15,7 @@ use pyo3::prelude::*;
 
 use crate::camera::PyCamera;
 use crate::display::PyDisplay;
+use crate::names::by_name;
 use crate::scene::PyScene;
 
 type Outcome = Result<Report, String>;
@@ -59,13 +60,7 @@ fn preview(name: &str) -> PyResult<Preview> {
         Preview::SideBySide,
         Preview::Quilt,
     ];
-    ALL.into_iter().find(|p| p.name() == name).ok_or_else(|| {
-        let names: Vec<&str> = ALL.iter().map(|p| p.name()).collect();
-        PyValueError::new_err(format!(
-            "unknown preview {name:?} (previews: {})",
-            names.join(", ")
-        ))
-    })
+    by_name(name, "preview", &ALL, Preview::name)
 }
 
 /// An open (or closed) viewer window.
@@ -176,10 +171,11 @@ pub fn show(
     }
     options.fullscreen = match fullscreen {
         None => None,
-        Some(f) if f.extract::<bool>().is_ok() => f
-            .extract::<bool>()?
-            .then_some(autostereo_viewer::Monitor::Panel),
-        Some(f) => Some(autostereo_viewer::Monitor::Index(f.extract()?)),
+        // A bool first: Python's True is also the int 1.
+        Some(f) => match f.extract::<bool>() {
+            Ok(panel) => panel.then_some(autostereo_viewer::Monitor::Panel),
+            Err(_) => Some(autostereo_viewer::Monitor::Index(f.extract()?)),
+        },
     };
     options.quit_after_frames = frames;
     options.screenshot = screenshot;
