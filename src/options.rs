@@ -78,6 +78,7 @@ impl RendererOptions {
                 .visibility
                 .unwrap_or_else(|| Visibility::best_exact(device)),
             bounds: self.mesh.bounds,
+            clusters: self.mesh.clusters,
         }
     }
 

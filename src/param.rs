@@ -127,6 +127,8 @@ pub enum Param {
     ViewCone,
     /// The size of per-view images.
     ViewImageSize,
+    /// The single pass's view clusters.
+    ViewClusters,
     /// A camera's view matrix.
     ViewMatrix,
     /// The per-view image scale.
@@ -151,7 +153,7 @@ pub enum Param {
 
 impl Param {
     /// Every parameter.
-    pub const ALL: [Param; 71] = [
+    pub const ALL: [Param; 72] = [
         Param::Aspect,
         Param::Bands,
         Param::Camera,
@@ -213,6 +215,7 @@ impl Param {
         Param::View,
         Param::ViewCone,
         Param::ViewImageSize,
+        Param::ViewClusters,
         Param::ViewMatrix,
         Param::ViewScale,
         Param::Views,
@@ -289,6 +292,7 @@ impl Param {
             Param::View => "view",
             Param::ViewCone => "view cone",
             Param::ViewImageSize => "view image size",
+            Param::ViewClusters => "view clusters",
             Param::ViewMatrix => "view matrix",
             Param::ViewScale => "view scale",
             Param::Views => "views",

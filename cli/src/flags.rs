@@ -32,6 +32,7 @@ pub fn flag_of(param: Param) -> Option<&'static str> {
         Param::Up => "--up",
         Param::FocalDistance => "--focal/--focal-scale",
         Param::Views => "--views",
+        Param::ViewClusters => "--clusters",
         Param::Groups => "--groups",
         Param::FieldOfView => "--fov",
         Param::QuiltSize => "--quilt-size",

@@ -3,7 +3,7 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result};
-use autostereo::mesh::{CoverBounds, TileClip, Visibility};
+use autostereo::mesh::{CoverBounds, TileClip, ViewClusters, Visibility};
 use autostereo::mesh::{Mesh, MeshBuffers};
 use autostereo::render::Method;
 use autostereo::{MeshOptions, RendererOptions};
@@ -41,6 +41,12 @@ pub struct MeshFlags {
     /// Tiled method: how each view's copy is kept inside its tile.
     #[arg(long, value_enum, default_value = "auto")]
     tile_clip: TileClip,
+    /// Single pass, compute visibility: clusters of adjacent views each triangle is tested in
+    /// (docs/DESIGN.md §3): 1 = every view at once (the fastest measured on lavapipe); C up to
+    /// the view count; auto = chosen per triangle by the cost model. The image is the same for
+    /// every value.
+    #[arg(long, default_value = "1", value_parser = crate::parse::view_clusters)]
+    clusters: ViewClusters,
     /// Reorder triangles along a Morton curve before rendering (locality; every method).
     #[arg(long)]
     sort_triangles: bool,
@@ -52,6 +58,7 @@ impl MeshFlags {
         let single_pass_only = [
             ("--visibility", self.visibility.0.is_some()),
             ("--bounds", self.bounds != CoverBounds::Exact),
+            ("--clusters", self.clusters != ViewClusters::default()),
         ];
         for (flag, set) in single_pass_only {
             if set && method != Method::SinglePass {
@@ -97,6 +104,7 @@ impl MeshFlags {
             visibility: self.visibility.0,
             bounds: self.bounds,
             tile_clip: self.tile_clip,
+            clusters: self.clusters,
         }
     }
 }

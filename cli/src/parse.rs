@@ -121,6 +121,20 @@ impl<T: clap::ValueEnum + Clone + Send + Sync + 'static> OrAuto<T> {
     }
 }
 
+/// `--clusters auto|C`: view clusters of the single pass's compute rasteriser (C ≥ 1).
+pub fn view_clusters(text: &str) -> Result<autostereo::mesh::ViewClusters, String> {
+    use autostereo::mesh::ViewClusters;
+    if text == "auto" {
+        return Ok(ViewClusters::PerTriangle);
+    }
+    match text.parse::<u32>() {
+        Ok(c) if c >= 1 => Ok(ViewClusters::Fixed(c)),
+        _ => Err(format!(
+            "'{text}': expected auto or a cluster count of at least 1"
+        )),
+    }
+}
+
 /// `--method NAME`: one of the library's [`Method`] names.
 pub fn method_parser() -> impl clap::builder::TypedValueParser<Value = Method> {
     clap::builder::PossibleValuesParser::new(Method::ALL.map(|m| m.name()))

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The benchmarks that mean something only on a real GPU, in one short run: the quick bench
 # (every primitive and method at 256², N = 2, 8, 64) and the volume table (`autostereo-bench --volumes`:
-# the head and brainsmall at 512², N = 8 and 64, every method, the approximations' curves), on
+# the head and brainsmall at 512², N = 8 and 64, every method, the approximations' curves) and
+# the mesh view clusters against the quilt pipeline at 3840×2160, 49 views, on
 # whatever adapter wgpu picks (WGPU_BACKEND / WGPU_ADAPTER_NAME choose another). About 3–8
 # minutes on a discrete GPU; on lavapipe ≈ 20 minutes.
 #
@@ -42,6 +43,21 @@ echo "${adapter:-adapter: unknown (the probe render failed; see below)}"
 start=$(date +%s)
 "$bench" --quick --report "$out/quick"
 "$bench" --volumes --frames 10 --report "$out/volumes"
+# View clusters of the compute single pass against the quilt pipeline, 16" Spatial Display
+# calibration, 3840×2160, 49 views (docs/MESHES.md "View clusters").
+mesh=data/fetched/bunny.obj
+[ -f "$mesh" ] || mesh=""
+cal=lkg:data/lkg_sample_16in_landscape_gen3_visual.json
+ms() { "$bin" mesh $mesh --display "$cal" --size 3840x2160 "$@" --frames 10 --json 2>/dev/null |
+  grep -o '"ms": *[0-9.]*' | grep -o '[0-9.]*$' || echo failed; }
+{
+  echo "| ${mesh:-torus scene}, 16\" calibration, 3840×2160, 49 views | ms/frame |"
+  echo "|---|---:|"
+  for c in 1 2 7 49 auto; do
+    echo "| single pass, compute, --clusters $c | $(ms --visibility compute --clusters "$c") |"
+  done
+  echo "| tiled quilt 857×857 (--method tiled --view-size 857x857) | $(ms --method tiled --view-size 857x857) |"
+} > "$out/clusters.md"
 seconds=$(( $(date +%s) - start ))
 
 {
@@ -51,6 +67,10 @@ seconds=$(( $(date +%s) - start ))
   echo "${adapter:-adapter: unknown}; CPU: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')."
   echo
   echo "Absolute times mean something here, unlike on the software rasterisers of CI."
+  echo
+  echo "## View clusters (meshes, compute visibility)"
+  echo
+  cat "$out/clusters.md"
   echo
   echo "## Volumes (\`autostereo-bench --volumes --frames 10\`)"
   echo

@@ -9,7 +9,7 @@ mod scene;
 mod texture;
 pub(crate) mod texture_buffers;
 
-pub use options::{CoverBounds, MeshOptions, TileClip, Visibility};
+pub use options::{CoverBounds, MeshOptions, TileClip, ViewClusters, Visibility};
 pub use passes::{
     MeshLayered, MeshMrt, MeshNPass, MeshSinglePass, MeshSinglePassOptions, MeshTiled,
 };

@@ -12,6 +12,48 @@ pub struct MeshOptions {
     pub bounds: CoverBounds,
     /// Tiled method: how each view's copy is kept inside its tile.
     pub tile_clip: TileClip,
+    /// Single pass, compute visibility: how the views are grouped.
+    pub clusters: ViewClusters,
+}
+
+/// How the single pass's compute rasteriser groups the N views (docs/DESIGN.md §3): each
+/// triangle visits, per cluster of adjacent views, only the span its projections in those views
+/// cover and only the subpixels showing them. Every grouping tests every subpixel the triangle
+/// can cover, so the image is the same; only the time changes.
+/// The default is one cluster: on lavapipe every larger C measured slower (docs/MESHES.md).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ViewClusters {
+    /// Chosen per triangle from its width and the spread of its projections over the views
+    /// (the cost model of docs/DESIGN.md §3).
+    PerTriangle,
+    /// C clusters for every triangle: 1 = every view at once (the paper's covering quad), N (or
+    /// more, capped at N) = each subpixel tested against its own view's projection only.
+    Fixed(u32),
+}
+
+impl Default for ViewClusters {
+    fn default() -> Self {
+        ViewClusters::Fixed(1)
+    }
+}
+
+impl ViewClusters {
+    /// The `VIEW_CLUSTERS` override of wgsl/mesh/shared/cluster_cover.wgsl (0: per triangle).
+    pub fn override_value(self, views: u32) -> u32 {
+        match self {
+            ViewClusters::PerTriangle => 0,
+            ViewClusters::Fixed(c) => c.clamp(1, views.max(1)),
+        }
+    }
+}
+
+impl std::fmt::Display for ViewClusters {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ViewClusters::PerTriangle => f.write_str("per-triangle"),
+            ViewClusters::Fixed(c) => write!(f, "{c}"),
+        }
+    }
 }
 
 /// How per-subpixel visibility is resolved.

@@ -12,4 +12,5 @@ mod npass_mesh;
 mod single_pass_mesh;
 mod stability;
 mod stereo;
+mod view_clusters;
 mod whole_views;

@@ -15,15 +15,20 @@ use autostereo::render::{Method, Renderer};
 use autostereo::target::SpatialTarget;
 use glam::{Mat4, Vec3};
 
-const SIZE: [u32; 2] = [160, 128];
+pub(super) const SIZE: [u32; 2] = [160, 128];
 const EXACT: [Visibility; 3] = [Visibility::Exact, Visibility::Atomic, Visibility::Compute];
 
-fn display(spec: &str) -> Display {
+pub(super) fn display(spec: &str) -> Display {
     Display::parse(spec).unwrap()
 }
 
 /// Camera framing `mesh` with `views` views, focal distance scaled by `focal_scale`.
-fn framed(mesh: &Mesh, views: u32, separation_share: f32, focal_scale: f32) -> MultiViewCamera {
+pub(super) fn framed(
+    mesh: &Mesh,
+    views: u32,
+    separation_share: f32,
+    focal_scale: f32,
+) -> MultiViewCamera {
     let bounds = mesh.bounds().unwrap();
     let mut camera = MultiViewCamera::framing(
         bounds,
@@ -66,12 +71,13 @@ fn exact(visibility: Visibility) -> MeshSinglePassOptions {
     MeshSinglePassOptions {
         visibility,
         bounds: CoverBounds::Exact,
+        clusters: Default::default(),
     }
 }
 
 /// Single-pass vs N-pass for `frame`; returns the difference and saves images when it is off
 /// (`None` where the adapter lacks the mode, after checking its error).
-fn versus_npass(
+pub(super) fn versus_npass(
     name: &str,
     mesh: &Mesh,
     frame: &Frame,
@@ -158,6 +164,7 @@ fn far_geometry_needs_the_exact_bound() {
         MeshSinglePassOptions {
             visibility: best_exact(),
             bounds: CoverBounds::Paper,
+            clusters: Default::default(),
         },
     )
     .expect("the best exact mode runs");
@@ -227,6 +234,7 @@ fn fast_visibility_error_is_bounded() {
         MeshSinglePassOptions {
             visibility: Visibility::Fast,
             bounds: CoverBounds::Exact,
+            clusters: Default::default(),
         },
     )
     .expect("every test adapter has dual-source blending");
@@ -241,6 +249,7 @@ fn fast_visibility_error_is_bounded() {
         MeshSinglePassOptions {
             visibility: Visibility::Fast,
             bounds: CoverBounds::Exact,
+            clusters: Default::default(),
         },
     )
     .expect("every test adapter has dual-source blending");
@@ -301,6 +310,7 @@ fn degenerate_triangles_add_nothing_and_nan_is_an_error() {
         let options = MeshSinglePassOptions {
             visibility,
             bounds: CoverBounds::Exact,
+            clusters: Default::default(),
         };
         let images = (
             render(&degenerate, &frame, Some(options)),

@@ -1,13 +1,19 @@
-// Single-pass meshes, `compute` visibility: the covering rectangles are rasterised in software,
-// one invocation per triangle looping over the pixel centres of its rectangle, testing the K
-// subpixel rays and keeping the nearest (depth, triangle) per subpixel with 64-bit atomics, as
+// Single-pass meshes, `compute` visibility: the triangles rasterised in software, one invocation
+// per triangle visiting the subpixels it may cover (mesh/shared/cluster_cover.wgsl), testing
+// their rays and keeping the nearest (depth, triangle) per subpixel with 64-bit atomics, as
 // mesh/single_pass_atomic.wgsl does per fragment. A software rasteriser pays per primitive for
 // the hardware path (setup of two triangles per rectangle); this loop pays per pixel only.
-// mesh/single_pass_atomic_resolve.wgsl then shades each subpixel once.
+// A triangle larger than one invocation's budget is handed on where it stopped: listed for
+// mesh/single_pass_compute_large.wgsl, which spreads the rest of its units over many
+// invocations (the dispatch's size is counted here). mesh/single_pass_atomic_resolve.wgsl then
+// shades each subpixel once.
 #import shared/frame.wgsl
 #import shared/multiview.wgsl
 #import mesh/shared/eye_triangle.wgsl
 #import mesh/shared/cover_bounds.wgsl
+#import shared/view_lattice.wgsl
+#import mesh/shared/cluster_cover.wgsl
+#import mesh/shared/large_triangles.wgsl
 
 // Bindings read by shared/frame.wgsl.
 @group(0) @binding(0) var<uniform> frame: Frame;
@@ -16,9 +22,16 @@
 @group(1) @binding(1) var<storage, read> mesh_indices: array<u32>;
 
 @group(1) @binding(2) var<storage, read_write> eye_triangles: array<EyeTriangle>;
+// The large triangles: [0] their count, then their entries (mesh/shared/large_triangles.wgsl).
+@group(1) @binding(3) var<storage, read_write> large: array<atomic<u32>>;
 @group(2) @binding(0) var<storage, read_write> nearest_keys: array<atomic<u64>>;
+// Workgroups of the large triangles' dispatch (x, y, z), counted up here.
+@group(2) @binding(1) var<storage, read_write> large_dispatch: array<atomic<u32>>;
 
 const WORKGROUP: u32 = 64u;
+// Loop iterations charged per row and per cluster before their units (crossings, span).
+const ROW_COST: u32 = 8u;
+const CLUSTER_COST: u32 = 8u;
 
 @compute @workgroup_size(64)
 fn cs_main(@builtin(workgroup_id) group: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>, @builtin(local_invocation_index) local: u32) {
@@ -28,40 +41,57 @@ fn cs_main(@builtin(workgroup_id) group: vec3<u32>, @builtin(num_workgroups) gro
     }
     let p = transform_triangle(tri);
     eye_triangles[tri] = eye_triangle(p);
-    let b = cover_bounds(p);
-    if (b.lo.x > b.hi.x) {
-        return; // behind the near plane
+    let t = triangle_cover(tri, p);
+    if (!t.visible) {
+        return;
     }
-    // Focal-plane bounds → the pixels whose centre (x + ½, y + ½) lies inside (y top-down).
-    let size = frame.camera.viewport;
-    let scale = size / frame.camera.focal_window;
-    let lo = b.lo - frame.camera.window_offset;
-    let hi = b.hi - frame.camera.window_offset;
-    let x_lo = (lo.x * scale.x + 0.5 * size.x) - 0.5;
-    let x_hi = (hi.x * scale.x + 0.5 * size.x) - 0.5;
-    let y_lo = (0.5 * size.y - hi.y * scale.y) - 0.5;
-    let y_hi = (0.5 * size.y - lo.y * scale.y) - 0.5;
-    if (x_hi < 0.0 || y_hi < 0.0 || x_lo > size.x - 1.0 || y_lo > size.y - 1.0) {
-        return; // outside the image
-    }
-    let x0 = u32(max(ceil(x_lo), 0.0));
-    let x1 = u32(min(floor(x_hi), size.x - 1.0));
-    let y0 = u32(max(ceil(y_lo), 0.0));
-    let y1 = u32(min(floor(y_hi), size.y - 1.0));
-    let width = u32(size.x);
-    for (var y = y0; y <= y1; y++) {
-        for (var x = x0; x <= x1; x++) {
-            let px = vec2<u32>(x, y);
-            let centre = vec2<f32>(f32(x) + 0.5, f32(y) + 0.5);
-            for (var c = 0u; c < VIEWS_PER_PIXEL; c++) {
-                let ray = view_ray(centre, ray_view(px, c));
-                let hit = ray_triangle(ray, p[0], p[1], p[2]);
-                if (hit.x >= 0.0) {
-                    let depth = hit.x * frame.camera.focal_distance;
-                    let key = (u64(bitcast<u32>(depth)) << 32u) | u64(tri);
-                    atomicMax(&nearest_keys[(y * width + x) * VIEWS_PER_PIXEL + c], ~key);
+    var spent = 0u;
+    let per_row = t.clusters * t.chunks;
+    for (var y = t.y0; y <= t.y1; y++) {
+        let row_unit = (y - t.y0) * per_row;
+        spent += ROW_COST;
+        if (spent > LANE_BUDGET) {
+            hand_on(t, row_unit);
+            return;
+        }
+        let row = cover_row(t, y);
+        for (var k = 0u; k < t.clusters; k++) {
+            spent += CLUSTER_COST;
+            if (spent > LANE_BUDGET) {
+                hand_on(t, row_unit + k * t.chunks);
+                return;
+            }
+            let span = cluster_span(t, row, k);
+            if (span.x > span.y) {
+                continue;
+            }
+            let first_chunk = (u32(span.x) - t.x0) / CHUNK_PX;
+            let last_chunk = (u32(span.y) - t.x0) / CHUNK_PX;
+            for (var chunk = first_chunk; chunk <= last_chunk; chunk++) {
+                let pixels = chunk_span(t, span, chunk);
+                let cost = unit_cost(u32(pixels.y - pixels.x + 1), t.clusters);
+                if (spent + cost > LANE_BUDGET) {
+                    hand_on(t, row_unit + k * t.chunks + chunk);
+                    return;
                 }
+                spent += cost;
+                cover_pixels(t, y, k, u32(pixels.x), u32(pixels.y));
             }
         }
     }
+}
+
+// List triangle t with its units from `unit` on, and grow the large triangles' dispatch to
+// cover them (workgroups: x·z of them, one per listed triangle; y per triangle's units).
+fn hand_on(t: TriangleCover, unit: u32) {
+    let index = atomicAdd(&large[0], 1u);
+    let entry = LARGE_LIST + LARGE_ENTRY * index;
+    let groups = large_groups(t, unit);
+    atomicStore(&large[entry], t.tri);
+    atomicStore(&large[entry + 1u], unit);
+    atomicStore(&large[entry + 2u], cover_units(t));
+    atomicStore(&large[entry + 3u], groups);
+    atomicMax(&large_dispatch[0], min(index + 1u, MAX_WORKGROUPS));
+    atomicMax(&large_dispatch[1], groups);
+    atomicMax(&large_dispatch[2], index / MAX_WORKGROUPS + 1u);
 }

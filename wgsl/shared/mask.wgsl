@@ -54,8 +54,9 @@ fn mask_mul_high(t: u32, n: u32) -> u32 {
     return (hi + lo) >> 16u;
 }
 
-// View of channel c (0 = R) of window pixel px (y top-down).
-fn mask_view(m: DisplayMask, px: vec2<u32>, c: u32) -> u32 {
+// Lens phase of channel c (0 = R) of window pixel px (y top-down), 0.32 fixed point: the view
+// before flipping is (phase · N) >> 32 (`mask_view`).
+fn mask_phase(m: DisplayMask, px: vec2<u32>, c: u32) -> u32 {
     let slot = select(c, 2u - c, (m.flags & MASK_BGR) != 0u);
     let x = px.x + m.origin_x;
     let row = px.y + m.origin_y;
@@ -65,9 +66,21 @@ fn mask_view(m: DisplayMask, px: vec2<u32>, c: u32) -> u32 {
         column = x;
         phase = mask_cell_phase(m, mask_cell(m.cell_pattern, x, m.panel_top - row), slot);
     }
-    let t = column * m.step_column + row * m.step_row + phase;
-    let v = mask_mul_high(t, m.views);
+    return column * m.step_column + row * m.step_row + phase;
+}
+
+// View of channel c (0 = R) of window pixel px (y top-down).
+fn mask_view(m: DisplayMask, px: vec2<u32>, c: u32) -> u32 {
+    let v = mask_mul_high(mask_phase(m, px, c), m.views);
     return select(v, m.views - 1u - v, (m.flags & MASK_FLIP) != 0u);
+}
+
+// Pixels between two along a row whose channel c has the same cell phase, so that its lens phase
+// steps by a constant (shared/view_lattice.wgsl): 2 where subpixel cells alternate with the
+// column's parity (cell patterns 1–3), else 1.
+fn mask_lattice_stride(m: DisplayMask) -> u32 {
+    let alternating = m.cell_pattern >= 1u && m.cell_pattern <= 3u;
+    return select(1u, 2u, (m.flags & MASK_CELLS) != 0u && alternating);
 }
 
 // Views of R, G, B of pixel px.

@@ -10,7 +10,7 @@ use common::{cli_out as run, cli_refused as refused};
 fn a_flag_the_method_or_path_would_ignore_is_refused_by_name() {
     let png = out("ignored.png");
     let png = png.to_str().unwrap();
-    let cases: [(&str, &[&str], &[&str]); 11] = [
+    let cases: [(&str, &[&str], &[&str]); 13] = [
         (
             "mesh",
             &["--visibility", "fast", "--method", "n-pass"],
@@ -62,6 +62,16 @@ fn a_flag_the_method_or_path_would_ignore_is_refused_by_name() {
             &["--sh-per-subpixel"],
         ),
         ("mesh", &["--eyes", "1,2"], &["--eyes", "--output"]),
+        (
+            "mesh",
+            &["--clusters", "7", "--method", "tiled"],
+            &["--clusters", "single"],
+        ),
+        (
+            "mesh",
+            &["--clusters", "7", "--visibility", "exact"],
+            &["--clusters", "only compute visibility groups views"],
+        ),
     ];
     for (command, flags, words) in cases {
         let mut args = with(command, flags);
@@ -75,6 +85,8 @@ fn a_flag_the_method_or_path_would_ignore_is_refused_by_name() {
         ("volume", &["--alpha", "paper", "--path", "slices"]),
         ("volume", &["--thin-alpha", "0.1", "--empty-stride", "4"]),
         ("mesh", &["--eyes", "1,2", "--output", "anaglyph"]),
+        // Every adapter: `auto` visibility is compute on Vulkan, exact (one cluster) on GL.
+        ("mesh", &["--clusters", "1"]),
     ] {
         let mut args = with(command, flags);
         args.extend(["--out", png]);
@@ -112,7 +124,7 @@ fn degenerate_and_unused_settings_are_refused_by_name() {
     let f = out("degenerate.png");
     let f = f.to_str().unwrap();
     let c = rgbd_pair("t5").0.to_str().unwrap().to_string();
-    let cases: [(Vec<&str>, &[&str]); 9] = [
+    let cases: [(Vec<&str>, &[&str]); 10] = [
         (
             with(
                 "volume",
@@ -153,6 +165,10 @@ fn degenerate_and_unused_settings_are_refused_by_name() {
         (
             vec!["volume", "--builtin-size", "0", "--out", f],
             &["--builtin-size"],
+        ),
+        (
+            with("mesh", &["--clusters", "0", "--out", f]),
+            &["--clusters", "at least 1"],
         ),
         (
             vec!["view", "--exercise-switch", "methods"],

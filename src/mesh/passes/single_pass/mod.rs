@@ -27,7 +27,7 @@ use crate::frame::{Frame, FrameBinding};
 use crate::gpu::dispatch::dispatch_2d;
 use crate::gpu::pipeline::{begin_pass, cleared, draw_fullscreen};
 use crate::gpu::storage_fence::StorageFence;
-use crate::mesh::options::{CoverBounds, Visibility};
+use crate::mesh::options::{CoverBounds, ViewClusters, Visibility};
 use crate::mesh::texture_buffers::TEXTURE_GROUP;
 use crate::mesh::MeshBuffers;
 use crate::render::pipeline_cache::PipelineCache;
@@ -44,6 +44,8 @@ pub struct MeshSinglePassOptions {
     pub visibility: Visibility,
     /// Covering-rectangle bounds.
     pub bounds: CoverBounds,
+    /// Compute visibility: view clusters (the other modes take one, the covering quad).
+    pub clusters: ViewClusters,
 }
 
 impl Default for MeshSinglePassOptions {
@@ -51,6 +53,7 @@ impl Default for MeshSinglePassOptions {
         Self {
             visibility: Visibility::Exact,
             bounds: CoverBounds::Exact,
+            clusters: ViewClusters::PerTriangle,
         }
     }
 }
@@ -73,6 +76,23 @@ pub struct MeshSinglePass {
 impl MeshSinglePass {
     /// Check that the device can run `options`; prepare the bind group layouts.
     pub fn new(device: &wgpu::Device, options: MeshSinglePassOptions) -> Result<Self> {
+        // The parameters first: they are wrong on every adapter.
+        if options.clusters == ViewClusters::Fixed(0) {
+            return Err(crate::error::Error::invalid(
+                crate::param::Param::ViewClusters,
+                "0: the views need at least one cluster (1 = all views at once)",
+            ));
+        }
+        if options.visibility != Visibility::Compute && options.clusters != ViewClusters::Fixed(1) {
+            return Err(crate::error::Error::invalid(
+                crate::param::Param::ViewClusters,
+                format!(
+                    "{}: only compute visibility groups views, and the visibility is {}",
+                    options.clusters,
+                    options.visibility.name()
+                ),
+            ));
+        }
         crate::gpu::require_features(
             device,
             options.visibility.required_features(),
@@ -167,6 +187,11 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
         if let Some(keys) = s.keys_buffer() {
             encoder.clear_buffer(keys.buffer(), 0, Some(keys.used()));
         }
+        if let Some(dispatch) = s.large_dispatch_buffer() {
+            // No large triangles yet: an empty list, a dispatch of no workgroups.
+            encoder.clear_buffer(dispatch.buffer(), 0, Some(scratch::LARGE_DISPATCH_BYTES));
+            encoder.clear_buffer(s.rects_buffer(), 0, Some(scratch::LARGE_HEADER_BYTES));
+        }
         self.fence.encode(device, encoder, s.cover_buffers());
         {
             let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
@@ -176,11 +201,28 @@ impl Renderer<MeshBuffers> for MeshSinglePass {
             pass.set_pipeline(&pipelines.compute);
             pass.set_bind_group(0, &self.frame.bind_group, &[]);
             pass.set_bind_group(1, &groups.cover_compute, &[]);
-            if let Some(keys) = &groups.keys_write {
+            if let Some(keys) = &groups.keys_dispatch {
                 pass.set_bind_group(2, keys, &[]);
             }
             let [x, y] = dispatch_2d(device, triangles.div_ceil(pipelines::COVER_WORKGROUP));
             pass.dispatch_workgroups(x, y, 1);
+        }
+        if let (Some(large), Some(list), Some(keys), Some(dispatch)) = (
+            &pipelines.large,
+            &groups.large,
+            &groups.keys_write,
+            s.large_dispatch_buffer(),
+        ) {
+            // What the per-triangle pass could not finish within its loop budget.
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: Some("mesh/single_pass_compute_large.wgsl"),
+                timestamp_writes: None,
+            });
+            pass.set_pipeline(large);
+            pass.set_bind_group(0, &self.frame.bind_group, &[]);
+            pass.set_bind_group(1, list, &[]);
+            pass.set_bind_group(2, keys, &[]);
+            pass.dispatch_workgroups_indirect(dispatch.buffer(), 0);
         }
         if let Some(geometry) = &pipelines.geometry {
             let (color, depth, label) = match self.options.visibility {

@@ -22,8 +22,12 @@ pub(super) struct Layouts {
     pub mesh: wgpu::BindGroupLayout,
     /// The same four, the last two writable (cover compute pass).
     pub cover_compute: wgpu::BindGroupLayout,
-    /// Nearest-hit keys, read-write (atomic geometry pass).
+    /// Nearest-hit keys, read-write (atomic geometry pass, the large triangles' pass).
     pub keys_write: wgpu::BindGroupLayout,
+    /// Nearest-hit keys and the large triangles' dispatch, read-write (compute visibility).
+    pub keys_dispatch: wgpu::BindGroupLayout,
+    /// The mesh, eye triangles and the large triangles' list, read-only (compute visibility's large pass).
+    pub large: wgpu::BindGroupLayout,
     /// Nearest-hit keys, read-only (atomic resolve).
     pub keys_read: wgpu::BindGroupLayout,
     /// Subpixel triangle ids (subpixel resolve).
@@ -62,6 +66,19 @@ impl Layouts {
                 "nearest keys (write)",
                 &[storage_entry(0, false, fs | wgpu::ShaderStages::COMPUTE)],
             ),
+            keys_dispatch: layout(
+                "nearest keys + large dispatch",
+                &[storage_entry(0, false, cs), storage_entry(1, false, cs)],
+            ),
+            large: layout(
+                "large triangles",
+                &[
+                    storage_entry(0, true, cs),
+                    storage_entry(1, true, cs),
+                    storage_entry(2, true, cs),
+                    storage_entry(3, true, cs),
+                ],
+            ),
             keys_read: layout("nearest keys (read)", &[storage_entry(0, true, fs)]),
             triangle_ids: layout(
                 "subpixel triangle ids",
@@ -86,6 +103,8 @@ pub(super) struct Pipelines {
     /// software rasterisation.
     pub compute: wgpu::ComputePipeline,
     pub compute_label: &'static str,
+    /// Compute visibility: the large triangles' pass.
+    pub large: Option<wgpu::ComputePipeline>,
     /// The hardware geometry pass (none for compute visibility).
     pub geometry: Option<wgpu::RenderPipeline>,
     pub resolve: Option<wgpu::RenderPipeline>,
@@ -142,7 +161,8 @@ pub(super) fn build(
     let subpixel_samples = options.visibility == Visibility::Exact && spec.views_per_pixel > 1;
     let padding = if subpixel_samples { 0.5 } else { 1.0 / 16.0 };
     let cover_constants = spec.constants(&[("PAPER_BOUNDS", paper), ("COVER_PADDING_PX", padding)]);
-    let compute_constants = spec.constants(&[("PAPER_BOUNDS", paper)]);
+    let clusters = options.clusters.override_value(spec.view_count) as f64;
+    let compute_constants = spec.constants(&[("PAPER_BOUNDS", paper), ("VIEW_CLUSTERS", clusters)]);
     let constants = spec.constants(&[]);
     // The stages that shade (fast geometry, resolves) declare TEXTURED; the others do not.
     let shading = spec.constants(&[("TEXTURED", textured as u32 as f64)]);
@@ -161,7 +181,8 @@ pub(super) fn build(
     };
     let keys_write = matches!(options.visibility, Visibility::Atomic | Visibility::Compute)
         .then_some(&layouts.keys_write);
-    let compute_keys = (options.visibility == Visibility::Compute).then_some(&layouts.keys_write);
+    let compute_keys =
+        (options.visibility == Visibility::Compute).then_some(&layouts.keys_dispatch);
     let compute = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
         label: Some(compute_stage),
         layout: Some(&layout_of(
@@ -181,6 +202,30 @@ pub(super) fn build(
         }),
         cache: None,
     });
+
+    let large = match options.visibility {
+        Visibility::Compute => {
+            let stage = "mesh/single_pass_compute_large.wgsl";
+            Some(
+                device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                    label: Some(stage),
+                    layout: Some(&layout_of(
+                        stage,
+                        &[
+                            Some(&layouts.frame),
+                            Some(&layouts.large),
+                            Some(&layouts.keys_write),
+                        ],
+                    )),
+                    module: &modules.get(device, stage)?,
+                    entry_point: Some("cs_main"),
+                    compilation_options: compilation(&compute_constants),
+                    cache: None,
+                }),
+            )
+        }
+        _ => None,
+    };
 
     let geometry = match geometry_stage(options.visibility) {
         None => None,
@@ -252,6 +297,7 @@ pub(super) fn build(
     Ok(Pipelines {
         compute,
         compute_label: compute_stage,
+        large,
         geometry,
         resolve,
     })

@@ -19,6 +19,12 @@ pub(crate) const EYE_TRIANGLE_BYTES: u64 = 48;
 const RECT_BYTES: u64 = 16;
 /// Bytes per subpixel of the atomic nearest-hit keys.
 const KEY_BYTES: u64 = 8;
+/// Compute visibility: the large triangles' list shares the rectangles' buffer (unused there):
+/// a 16-byte header, then 16 bytes per triangle (wgsl/mesh/shared/large_triangles.wgsl).
+pub(super) const LARGE_HEADER_BYTES: u64 = 16;
+const LARGE_ENTRY_BYTES: u64 = 16;
+/// The large triangles' indirect dispatch: x, y, z workgroups (and padding).
+pub(super) const LARGE_DISPATCH_BYTES: u64 = 16;
 
 pub(super) struct Scratch {
     eye_triangles: GpuBuffer,
@@ -27,16 +33,23 @@ pub(super) struct Scratch {
     triangle_ids: Option<Texture2d>,
     /// Atomic modes only (allocated on first use).
     keys: Option<GpuBuffer>,
+    /// Compute visibility only: the large triangles' indirect dispatch.
+    large_dispatch: Option<GpuBuffer>,
 }
 
 impl Scratch {
     pub fn new(device: &wgpu::Device) -> Self {
         Self {
             eye_triangles: GpuBuffer::new(device, "eye triangles", wgpu::BufferUsages::STORAGE),
-            rects: GpuBuffer::new(device, "cover rects", wgpu::BufferUsages::STORAGE),
+            rects: GpuBuffer::new(
+                device,
+                "cover rects",
+                wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+            ),
             depth: None,
             triangle_ids: None,
             keys: None,
+            large_dispatch: None,
         }
     }
 }
@@ -45,8 +58,12 @@ impl Scratch {
 pub(super) struct Groups {
     pub mesh: wgpu::BindGroup,
     pub cover_compute: wgpu::BindGroup,
-    /// Atomic mode: keys for the geometry pass.
+    /// Atomic mode: keys for the geometry pass (compute: for the large triangles' pass).
     pub keys_write: Option<wgpu::BindGroup>,
+    /// Compute visibility: keys and the large triangles' dispatch (the per-triangle pass).
+    pub keys_dispatch: Option<wgpu::BindGroup>,
+    /// Compute visibility: the mesh, eye triangles and the large triangles' list (their pass).
+    pub large: Option<wgpu::BindGroup>,
     /// Exact modes: what the resolve pass reads (triangle ids or keys).
     pub visible: Option<wgpu::BindGroup>,
 }
@@ -67,8 +84,10 @@ impl Scratch {
             what("per-triangle buffer"),
             triangles * EYE_TRIANGLE_BYTES,
         )?;
+        let rect_bytes =
+            (triangles * RECT_BYTES).max(LARGE_HEADER_BYTES + triangles * LARGE_ENTRY_BYTES);
         self.rects
-            .ensure(device, what("cover rectangle"), triangles * RECT_BYTES)?;
+            .ensure(device, what("cover rectangle"), rect_bytes)?;
         let k = frame.display.views_per_pixel();
         let [w, h] = frame.size;
         match visibility {
@@ -124,9 +143,32 @@ impl Scratch {
                         || format!("nearest-hit key bytes for {w}x{h}"),
                         bytes,
                     )?;
+                if visibility == Visibility::Compute {
+                    let usage = wgpu::BufferUsages::STORAGE
+                        | wgpu::BufferUsages::INDIRECT
+                        | wgpu::BufferUsages::COPY_DST;
+                    self.large_dispatch
+                        .get_or_insert_with(|| {
+                            GpuBuffer::new(device, "large triangles' dispatch", usage)
+                        })
+                        .ensure(
+                            device,
+                            || "the large triangles' dispatch".to_string(),
+                            LARGE_DISPATCH_BYTES,
+                        )?;
+                }
             }
         }
         Ok(())
+    }
+
+    /// The rectangles' buffer (compute visibility: the large triangles' list).
+    pub fn rects_buffer(&self) -> &wgpu::Buffer {
+        self.rects.buffer()
+    }
+
+    pub fn large_dispatch_buffer(&self) -> Option<&GpuBuffer> {
+        self.large_dispatch.as_ref()
     }
 
     pub fn depth_view(&self) -> Option<&wgpu::TextureView> {
@@ -201,7 +243,20 @@ impl Scratch {
                 Some(group("nearest keys", &layouts.keys_read, vec![keys()?])),
             ),
         };
+        let (keys_dispatch, large) = match (visibility, &self.large_dispatch) {
+            (Visibility::Compute, Some(dispatch)) => (
+                Some(group(
+                    "nearest keys + large dispatch",
+                    &layouts.keys_dispatch,
+                    vec![keys()?, dispatch.binding()],
+                )),
+                Some(group("large triangles", &layouts.large, mesh_resources())),
+            ),
+            _ => (None, None),
+        };
         Ok(Groups {
+            keys_dispatch,
+            large,
             mesh: group("mesh + cover data", &layouts.mesh, mesh_resources()),
             cover_compute: group(
                 "mesh cover compute",
