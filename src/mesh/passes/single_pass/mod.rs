@@ -53,7 +53,7 @@ impl Default for MeshSinglePassOptions {
         Self {
             visibility: Visibility::Exact,
             bounds: CoverBounds::Exact,
-            clusters: ViewClusters::PerTriangle,
+            clusters: ViewClusters::default(),
         }
     }
 }
