@@ -110,6 +110,11 @@ fn unit_cost(width: u32, clusters: u32) -> u32 {
     return 20u + VIEWS_PER_PIXEL * (2u * width + 5u * stride);
 }
 
+// Views [v0, v1) of cluster k.
+fn cluster_views(t: TriangleCover, k: u32) -> vec2<u32> {
+    return vec2<u32>(k * VIEW_COUNT / t.clusters, (k + 1u) * VIEW_COUNT / t.clusters);
+}
+
 // Columns [first, last] of row y that cluster k's views may see the triangle at (last < first:
 // none), clipped to the rectangle.
 fn cluster_span(t: TriangleCover, row: RowCrossings, k: u32) -> vec2<i32> {
@@ -119,9 +124,8 @@ fn cluster_span(t: TriangleCover, row: RowCrossings, k: u32) -> vec2<i32> {
     if (row.count == 0u) {
         return vec2<i32>(1, 0);
     }
-    let v0 = k * VIEW_COUNT / t.clusters;
-    let v1 = (k + 1u) * VIEW_COUNT / t.clusters;
-    let span = row_span(row, view_offset(v0), view_offset(v1 - 1u));
+    let views = cluster_views(t, k);
+    let span = row_span(row, view_offset(views.x), view_offset(views.y - 1u));
     let xl = max(ceil(span.x - SPAN_PAD_PX), f32(t.x0));
     let xr = min(floor(span.y + SPAN_PAD_PX), f32(t.x1));
     if (xl > xr) {
@@ -165,8 +169,9 @@ fn cover_pixels(t: TriangleCover, y: u32, k: u32, first: u32, last: u32) {
         }
         return;
     }
-    let v0 = k * VIEW_COUNT / t.clusters;
-    let v1 = (k + 1u) * VIEW_COUNT / t.clusters;
+    let views = cluster_views(t, k);
+    let v0 = views.x;
+    let v1 = views.y;
     let all_views = t.clusters == 1u;
     let stride = mask_lattice_stride(frame.mask);
     for (var parity = 0u; parity < stride && first + parity <= last; parity++) {

@@ -183,47 +183,47 @@ pub(super) fn build(
         .then_some(&layouts.keys_write);
     let compute_keys =
         (options.visibility == Visibility::Compute).then_some(&layouts.keys_dispatch);
-    let compute = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-        label: Some(compute_stage),
-        layout: Some(&layout_of(
-            compute_stage,
-            &[
-                Some(&layouts.frame),
-                Some(&layouts.cover_compute),
-                compute_keys,
-            ],
-        )),
-        module: &modules.get(device, compute_stage)?,
-        entry_point: Some("cs_main"),
-        compilation_options: compilation(if options.visibility == Visibility::Compute {
+    let compute_pipeline = |modules: &mut ShaderModules,
+                            stage: &'static str,
+                            groups: &[Option<&wgpu::BindGroupLayout>],
+                            constants: &[(&str, f64)]|
+     -> Result<wgpu::ComputePipeline> {
+        Ok(
+            device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                label: Some(stage),
+                layout: Some(&layout_of(stage, groups)),
+                module: &modules.get(device, stage)?,
+                entry_point: Some("cs_main"),
+                compilation_options: compilation(constants),
+                cache: None,
+            }),
+        )
+    };
+    let compute = compute_pipeline(
+        modules,
+        compute_stage,
+        &[
+            Some(&layouts.frame),
+            Some(&layouts.cover_compute),
+            compute_keys,
+        ],
+        if options.visibility == Visibility::Compute {
             &compute_constants
         } else {
             &cover_constants
-        }),
-        cache: None,
-    });
-
+        },
+    )?;
     let large = match options.visibility {
-        Visibility::Compute => {
-            let stage = "mesh/single_pass_compute_large.wgsl";
-            Some(
-                device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-                    label: Some(stage),
-                    layout: Some(&layout_of(
-                        stage,
-                        &[
-                            Some(&layouts.frame),
-                            Some(&layouts.large),
-                            Some(&layouts.keys_write),
-                        ],
-                    )),
-                    module: &modules.get(device, stage)?,
-                    entry_point: Some("cs_main"),
-                    compilation_options: compilation(&compute_constants),
-                    cache: None,
-                }),
-            )
-        }
+        Visibility::Compute => Some(compute_pipeline(
+            modules,
+            "mesh/single_pass_compute_large.wgsl",
+            &[
+                Some(&layouts.frame),
+                Some(&layouts.large),
+                Some(&layouts.keys_write),
+            ],
+            &compute_constants,
+        )?),
         _ => None,
     };
 
