@@ -53,6 +53,8 @@ pub enum Param {
     Mesh,
     /// A rendering method.
     Method,
+    /// The PSNR floor of `Method` auto.
+    MinPsnr,
     /// The near clipping distance.
     Near,
     /// A slanted lens's phase.
@@ -153,7 +155,7 @@ pub enum Param {
 
 impl Param {
     /// Every parameter.
-    pub const ALL: [Param; 72] = [
+    pub const ALL: [Param; 73] = [
         Param::Aspect,
         Param::Bands,
         Param::Camera,
@@ -178,6 +180,7 @@ impl Param {
         Param::LookingGlassCalibration,
         Param::Mesh,
         Param::Method,
+        Param::MinPsnr,
         Param::Near,
         Param::Phase,
         Param::Pitch,
@@ -255,6 +258,7 @@ impl Param {
             Param::LookingGlassCalibration => "Looking Glass calibration",
             Param::Mesh => "mesh",
             Param::Method => "method",
+            Param::MinPsnr => "PSNR floor",
             Param::Near => "near",
             Param::Phase => "phase",
             Param::Pitch => "pitch",

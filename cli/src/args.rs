@@ -7,7 +7,8 @@ use autostereo::render::Method;
 use autostereo::display::Display;
 
 pub use crate::camera_args::CameraArgs;
-use crate::parse::{frames_parser, method_parser, parse_point, parse_size, parse_view_scale};
+use crate::method_arg::{MethodArg, MethodParser};
+use crate::parse::{frames_parser, parse_point, parse_size, parse_view_scale};
 
 /// Display selection flags.
 #[derive(clap::Args, Clone, Debug)]
@@ -204,8 +205,13 @@ pub struct RenderArgs {
     #[arg(long, value_parser = parse_size, help_heading = "Display")]
     pub size: Option<[u32; 2]>,
     /// Rendering method (each command offers its primitive's: cli/src/method_arg.rs).
-    #[arg(long, value_parser = method_parser(), default_value = "single-pass", help_heading = "Method")]
-    pub method: Method,
+    #[arg(long, value_parser = MethodParser::new("scenes", &Method::ALL), default_value = "auto", help_heading = "Method")]
+    pub method: MethodArg,
+    /// With --method auto: also choose approximations whose PSNR against the N-pass, as
+    /// measured in docs/quilt_pipeline.md, is at least DB (the quilt pipeline: 44 dB for
+    /// meshes, 38 for points, 56.9 for volumes); without it auto chooses exact methods only.
+    #[arg(long, value_name = "DB", help_heading = "Method")]
+    pub min_psnr: Option<f32>,
     /// Per-view resolution: the n-pass, tiled, layered and mrt methods render their view
     /// images at S × --size (each side rounded up) and up-sample them bilinearly when
     /// compositing; 1 = full size. In (0, 1].

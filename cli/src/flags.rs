@@ -26,6 +26,7 @@ pub fn flag_of(param: Param) -> Option<&'static str> {
         Param::Separation => "--separation",
         Param::DownsampleFactor => "--downsample",
         Param::Method => "--method",
+        Param::MinPsnr => "--min-psnr",
         Param::CameraModel => "--camera",
         Param::LookFrom => "--look-from",
         Param::LookAt => "--look-at",

@@ -95,7 +95,7 @@ pub fn run(args: GaussiansArgs) -> Result<()> {
         autostereo::DataKind::Gaussians,
         crate::warp_cmd::WarpArgs::default(),
     )?;
-    args.gaussians.check(plan.method)?;
+    plan.check_flags(&autostereo::gaussians::METHODS, |m| args.gaussians.check(m))?;
     let start = Instant::now();
     let gaussians = args.gaussians.load(args.file.as_deref(), args.crop)?;
     let load_ms = start.elapsed().as_secs_f64() * 1e3;
@@ -103,7 +103,13 @@ pub fn run(args: GaussiansArgs) -> Result<()> {
     let bounds = gaussians
         .bounds()
         .expect("validate() refuses empty and non-finite Gaussians");
-    let frame = plan.frame(bounds)?;
+    let frame = plan.decide(
+        plan.frame(bounds)?,
+        bounds,
+        autostereo::render::auto::Workload::Gaussians,
+        &autostereo::gaussians::METHODS,
+        |m| args.gaussians.check(m),
+    )?;
     let ctx = gpu()?;
     let device = &ctx.device;
     let options = RendererOptions {

@@ -113,10 +113,18 @@ pub fn run(args: MeshArgs) -> Result<()> {
     let mut plan = args
         .common
         .plan(args.file.as_deref(), autostereo::DataKind::Mesh, args.warp)?;
-    args.mesh.check(plan.method)?;
+    plan.check_flags(&autostereo::mesh::METHODS, |m| args.mesh.check(m))?;
     let mesh = args.mesh.load(args.file.as_deref())?;
     let bounds = mesh.bounds().context("the mesh has no vertices")?;
     let frame = plan.frame(bounds)?;
+    let census = autostereo::render::auto::MeshCensus::of(&mesh, &frame);
+    let frame = plan.decide(
+        frame,
+        bounds,
+        autostereo::render::auto::Workload::Mesh(census),
+        &autostereo::mesh::METHODS,
+        |m| args.mesh.check(m),
+    )?;
     let ctx = gpu()?;
     let device = &ctx.device;
     let buffers = MeshBuffers::new(device, &mesh)?;

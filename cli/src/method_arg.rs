@@ -1,6 +1,7 @@
-//! `--method`: one flag in every render command, offering only the methods of that command's
-//! primitive (the library's `METHODS` of each), so `--help` lists what works and a method of
-//! another primitive is refused by the parser, naming what this one takes.
+//! `--method`: one flag in every render command, offering `auto` (the default: the library
+//! chooses, `autostereo::render::auto`) and the methods of that command's primitive (the
+//! library's `METHODS` of each), so `--help` lists what works and a method of another
+//! primitive is refused by the parser, naming what this one takes.
 
 use std::ffi::OsStr;
 
@@ -8,7 +9,16 @@ use autostereo::render::Method;
 use clap::builder::{PossibleValue, TypedValueParser};
 use clap::error::ErrorKind;
 
-/// Parses a [`Method`] name among `methods`, those of `primitive` (plural, as a user says it:
+/// `--method`'s value: `auto` or a method.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MethodArg {
+    /// The fastest method that meets `--min-psnr` (exact ones only without it).
+    Auto,
+    /// The method named.
+    Named(Method),
+}
+
+/// Parses `auto` or a [`Method`] name among `methods`, those of `primitive` (plural, as a user says it:
 /// "points", "volumes").
 #[derive(Clone)]
 pub struct MethodParser {
@@ -29,17 +39,21 @@ impl MethodParser {
 }
 
 impl TypedValueParser for MethodParser {
-    type Value = Method;
+    type Value = MethodArg;
 
     fn parse_ref(
         &self,
         cmd: &clap::Command,
         arg: Option<&clap::Arg>,
         value: &OsStr,
-    ) -> Result<Method, clap::Error> {
-        let names: Vec<&str> = self.methods.iter().map(|m| m.name()).collect();
+    ) -> Result<MethodArg, clap::Error> {
+        let mut names: Vec<&str> = vec!["auto"];
+        names.extend(self.methods.iter().map(|m| m.name()));
+        if value == "auto" {
+            return Ok(MethodArg::Auto);
+        }
         match value.to_str().and_then(|s| s.parse::<Method>().ok()) {
-            Some(method) if self.methods.contains(&method) => Ok(method),
+            Some(method) if self.methods.contains(&method) => Ok(MethodArg::Named(method)),
             Some(method) => Err(cmd.clone().error(
                 ErrorKind::InvalidValue,
                 format!(
@@ -53,15 +67,17 @@ impl TypedValueParser for MethodParser {
                 .parse_ref(cmd, arg, value)
                 .and_then(|name| {
                     name.parse::<Method>()
+                        .map(MethodArg::Named)
                         .map_err(|e| cmd.clone().error(ErrorKind::InvalidValue, e))
                 }),
         }
     }
 
     fn possible_values(&self) -> Option<Box<dyn Iterator<Item = PossibleValue> + '_>> {
-        Some(Box::new(
+        let auto = PossibleValue::new("auto");
+        Some(Box::new(std::iter::once(auto).chain(
             self.methods.iter().map(|m| PossibleValue::new(m.name())),
-        ))
+        )))
     }
 }
 
@@ -92,7 +108,8 @@ pub fn method_arg(
     }
     notes.push("docs/USAGE.md compares them".into());
     let help = format!(
-        "Rendering method: {} ({})",
+        "Rendering method: auto | {} (auto, the default: the fastest exact one by the cost \
+         model of docs/DESIGN.md §10, or of those --min-psnr admits; {})",
         parser.listed(" | "),
         notes.join("; ")
     );
@@ -107,14 +124,18 @@ mod tests {
     #[derive(Parser)]
     #[command(mut_arg("method", |a| method_arg(a, "points", &autostereo::points::METHODS)))]
     struct Points {
-        #[arg(long, value_parser = crate::parse::method_parser(), default_value = "single-pass")]
-        method: Method,
+        #[arg(long, value_parser = MethodParser::new("scenes", &Method::ALL), default_value = "auto")]
+        method: MethodArg,
     }
 
     #[test]
     fn only_the_primitives_methods_parse_and_show() {
         let parse = |m: &str| Points::try_parse_from(["points", "--method", m]);
-        assert_eq!(parse("tiled").unwrap().method, Method::Tiled);
+        assert_eq!(
+            parse("tiled").unwrap().method,
+            MethodArg::Named(Method::Tiled)
+        );
+        assert_eq!(parse("auto").unwrap().method, MethodArg::Auto);
         let refused = parse("mrt").err().unwrap().to_string();
         assert!(
             refused.contains("--method mrt: points do not render by mrt")

@@ -10,11 +10,13 @@ use anyhow::{bail, Result};
 use autostereo::camera::{Bounds, CameraSettings};
 use autostereo::display::Display;
 use autostereo::frame::Frame;
+use autostereo::render::auto::{Accuracy, Choice, Workload};
 use autostereo::render::Method;
 use autostereo::RendererOptions;
 
 use crate::args::{image_size, DisplayArgs, FramesArgs, RenderArgs};
 use crate::claims::Claims;
+use crate::method_arg::MethodArg;
 use crate::output::flags::{Axis, OutputArg, OutputArgs};
 use crate::warp_cmd::WarpArgs;
 
@@ -27,7 +29,17 @@ enum ViewSizing {
 
 /// A checked render run.
 pub struct RunPlan {
+    /// The method: the one named, or with `--method auto` the single pass until
+    /// [`RunPlan::decide`] has chosen.
     pub method: Method,
+    /// `--method auto`'s floor, while the method is still to be chosen or was chosen.
+    auto: Option<Accuracy>,
+    /// The first warp flag given, which leaves auto only the warp.
+    warp_flag: Option<&'static str>,
+    /// What auto chose and weighed.
+    pub choice: Option<Choice>,
+    /// Auto's line where the flags left it one method (no model needed).
+    auto_note: Option<String>,
     /// The renderer options the shared flags say (method, warp); each command adds its
     /// primitive's.
     pub options: RendererOptions,
@@ -77,23 +89,51 @@ impl RenderArgs {
             Some([w, h]) => Some(format!("--view-size {w}x{h}")),
             None => (self.view_scale != 1.0).then(|| format!("--view-scale {}", self.view_scale)),
         };
-        if let Some(flag) = flag.filter(|_| !scaled.contains(&self.method)) {
-            bail!(
-                "{flag}: the {} method renders no view images to scale (only n-pass, tiled, \
-                 layered and mrt do)",
-                self.method
-            );
-        }
-        warp.check(self.method)?;
+        let (method, auto) = match self.method {
+            MethodArg::Named(method) => {
+                if let Some(db) = self.min_psnr {
+                    bail!(
+                        "--min-psnr {db}: only --method auto chooses by a PSNR floor (the method \
+                         is {method}); drop it or use --method auto"
+                    );
+                }
+                if let Some(flag) = flag.filter(|_| !scaled.contains(&method)) {
+                    bail!(
+                        "{flag}: the {method} method renders no view images to scale (only \
+                         n-pass, tiled, layered and mrt do)"
+                    );
+                }
+                warp.check(method)?;
+                (method, None)
+            }
+            MethodArg::Auto => {
+                if let Some(flag) = flag {
+                    bail!(
+                        "{flag}: sizes the view images of a method that renders them (n-pass, \
+                         tiled, layered, mrt); --method auto chooses the method and its view \
+                         size together: name the method, e.g. --method tiled {flag}"
+                    );
+                }
+                if warp.given().is_some() {
+                    warp.check(Method::Warp)?;
+                }
+                let accuracy = Accuracy::new(self.min_psnr)?;
+                (Method::SinglePass, Some(accuracy))
+            }
+        };
         if self.output.format != OutputArg::Spatial {
             self.display
                 .check_spatial_only(&self.output.format.name())?;
         }
         self.turntable.check(self.output.out.as_deref())?;
         Ok(RunPlan {
-            method: self.method,
+            method,
+            auto,
+            warp_flag: warp.given(),
+            choice: None,
+            auto_note: None,
             options: RendererOptions {
-                method: self.method,
+                method,
                 warp: warp.options(),
                 ..Default::default()
             },
@@ -120,6 +160,73 @@ impl RenderArgs {
 }
 
 impl RunPlan {
+    /// Refuse flags the method would ignore before anything is loaded (`fits`: the command's
+    /// check of its flags against one method); with auto, only flags that no method of the
+    /// primitive's `methods` takes.
+    pub fn check_flags(
+        &self,
+        methods: &[Method],
+        fits: impl Fn(Method) -> Result<()>,
+    ) -> Result<()> {
+        match self.auto {
+            None => fits(self.method),
+            Some(_) if methods.iter().any(|&m| fits(m).is_ok()) => Ok(()),
+            Some(_) => fits(Method::SinglePass),
+        }
+    }
+
+    /// With `--method auto`: choose the method for `frame` (the scene within `bounds`,
+    /// `workload` counted in it) among the primitive's `methods` that the flags fit, and give
+    /// the frame the view size it renders at. A named method keeps the frame as it is.
+    pub fn decide(
+        &mut self,
+        mut frame: Frame,
+        bounds: Bounds,
+        workload: Workload,
+        methods: &[Method],
+        fits: impl Fn(Method) -> Result<()>,
+    ) -> Result<Frame> {
+        let Some(accuracy) = self.auto else {
+            return Ok(frame);
+        };
+        let offered: Vec<Method> = methods
+            .iter()
+            .copied()
+            .filter(|&m| fits(m).is_ok())
+            .filter(|&m| self.warp_flag.is_none() || m == Method::Warp)
+            .collect();
+        let method = match offered.as_slice() {
+            [only] => {
+                let why = self.warp_flag.unwrap_or("the other flags");
+                self.auto_note = Some(format!("auto → {only} (the only method {why} fits)"));
+                *only
+            }
+            _ => {
+                let choice =
+                    autostereo::render::auto::choose(&frame, bounds, workload, accuracy, &offered)?;
+                let chosen = choice.chosen();
+                if chosen.view_size != frame.size {
+                    frame.scale_views_to(chosen.view_size)?;
+                    frame.validate()?;
+                }
+                let method = chosen.method;
+                self.choice = Some(choice);
+                method
+            }
+        };
+        self.method = method;
+        self.options.method = method;
+        Ok(frame)
+    }
+
+    /// What auto chose, in a line for the summary; `None` for a named method.
+    pub fn auto_line(&self) -> Option<String> {
+        match &self.choice {
+            Some(choice) => Some(choice.summary()),
+            None => self.auto_note.clone(),
+        }
+    }
+
     /// The frame for a scene within `bounds`: display, camera framing, size, view images.
     pub fn frame(&self, bounds: Bounds) -> Result<Frame> {
         let display = self.display.clone();

@@ -131,7 +131,7 @@ pub fn run(args: PointsArgs) -> Result<()> {
         autostereo::DataKind::Points,
         args.warp,
     )?;
-    args.points.check(plan.method)?;
+    plan.check_flags(&autostereo::points::METHODS, |m| args.points.check(m))?;
     let start = Instant::now();
     let cloud = PointFlags::cloud(args.file.as_deref())?;
     let load_ms = start.elapsed().as_secs_f64() * 1e3;
@@ -140,7 +140,13 @@ pub fn run(args: PointsArgs) -> Result<()> {
     } = args.points.complete(&cloud, args.crop)?;
     drop(cloud);
     let bounds = splats.bounds().expect("complete() rejects empty clouds");
-    let frame = plan.frame(bounds)?;
+    let frame = plan.decide(
+        plan.frame(bounds)?,
+        bounds,
+        autostereo::render::auto::Workload::Points,
+        &autostereo::points::METHODS,
+        |m| args.points.check(m),
+    )?;
     let ctx = gpu()?;
     let device = &ctx.device;
     let scene = args.points.scene(device, &splats)?;

@@ -125,6 +125,11 @@ pub fn run_fields(
         "rendered": run.how,
     });
     merge(&mut fields, plan.timing.fields());
+    if let Some(choice) = &plan.choice {
+        fields["auto"] = choice.fields();
+    } else if let Some(line) = plan.auto_line() {
+        fields["auto"] = serde_json::json!({ "chosen": plan.method.name(), "note": line });
+    }
     merge(&mut fields, extra);
     fields
 }
@@ -195,8 +200,17 @@ pub fn run_summary(
         .as_deref()
         .filter(|how| how.contains("bands"))
         .map_or(String::new(), |how| format!(" ({how})"));
+    let fitted_here = ctx.info().device_type == wgpu::DeviceType::Cpu;
+    let auto = plan
+        .auto_line()
+        .map_or(String::new(), |line| match fitted_here {
+            true => format!("\n{line}"),
+            false => {
+                format!("\n{line}; the cost model's constants are llvmpipe's, not this adapter's")
+            }
+        });
     format!(
-        "{} views, {}x{}{bands}, GPU memory {:.1} MiB, {:.2} ms/frame ({}, {:?}) on {}",
+        "{} views, {}x{}{bands}, GPU memory {:.1} MiB, {:.2} ms/frame ({}, {:?}) on {}{auto}",
         frame.camera.views,
         frame.size[0],
         frame.size[1],
@@ -235,7 +249,8 @@ pub fn render_and_save<S: ?Sized>(
     bounds: autostereo::camera::Bounds,
     mut extra: serde_json::Value,
 ) -> Result<Rendered> {
-    if plan.compare && *options == oracle && frame.view_size() == frame.size {
+    let is_oracle = *options == oracle && frame.view_size() == frame.size;
+    if plan.compare && is_oracle && plan.choice.is_none() {
         anyhow::bail!(
             "--compare: this run is the N-pass oracle itself (same settings, full-size views), \
              so it would be compared with itself; smaller views (--view-scale < 1, a smaller \
@@ -257,15 +272,17 @@ pub fn render_and_save<S: ?Sized>(
         timed(ctx, renderer, scene, frame, &plan.timing)
     })?;
     let mut saved = save_all(ctx, renderer, scene, frame, bounds, plan, &run.image)?;
-    let diff = match plan.compare {
-        true => Some(compare_with(
+    let diff = match (plan.compare, is_oracle) {
+        // Auto chose the N-pass: the run is the oracle, identical to it without a second render.
+        (true, true) => Some(compare(&run.image, &run.image)?),
+        (true, false) => Some(compare_with(
             ctx,
             build(&oracle)?.as_mut(),
             scene,
             frame,
             &run.image,
         )?),
-        false => None,
+        (false, _) => None,
     };
     if plan.method == autostereo::render::Method::Warp {
         let holes = hole_report(ctx, plan, options, &build, scene, frame, &mut saved)?;

@@ -299,7 +299,7 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         autostereo::DataKind::Volume,
         args.warp,
     )?;
-    args.render.check(plan.method)?;
+    plan.check_flags(&autostereo::volume::METHODS, |m| args.render.check(m))?;
     let data = args.data.load(args.file.as_deref())?;
     let bounds = args.render.framed(&data)?;
     let VolumeData {
@@ -310,7 +310,13 @@ pub fn run(args: VolumeArgs) -> Result<()> {
         ..
     } = data;
     let step = args.render.step(&volume);
-    let frame = plan.frame(bounds)?;
+    let frame = plan.decide(
+        plan.frame(bounds)?,
+        bounds,
+        autostereo::render::auto::Workload::Volume,
+        &autostereo::volume::METHODS,
+        |m| args.render.check(m),
+    )?;
     let ctx = gpu()?;
     let mut scene = VolumeScene::new(&ctx.device, &ctx.queue, &volume, transfer, model)?;
     scene.clip = clip;

@@ -2,7 +2,8 @@
 # The benchmarks that mean something only on a real GPU, in one short run: the quick bench
 # (every primitive and method at 256², N = 2, 8, 64) and the volume table (`autostereo-bench --volumes`:
 # the head and brainsmall at 512², N = 8 and 64, every method, the approximations' curves) and
-# the mesh view clusters against the quilt pipeline at 3840×2160, 49 views, on
+# the mesh view clusters against the quilt pipeline at 3840×2160, 49 views, and the cases of
+# `--method auto`'s cost model (docs/AUTO.md), on
 # whatever adapter wgpu picks (WGPU_BACKEND / WGPU_ADAPTER_NAME choose another). About 3–8
 # minutes on a discrete GPU; on lavapipe ≈ 20 minutes.
 #
@@ -58,6 +59,15 @@ ms() { "$bin" mesh $mesh --display "$cal" --size 3840x2160 "$@" --frames 10 --js
   done
   echo "| tiled quilt 857×857 (--method tiled --view-size 857x857) | $(ms --method tiled --view-size 857x857) |"
 } > "$out/clusters.md"
+# `--method auto`'s cost model: every candidate timed on the cases of docs/AUTO.md, the model's
+# choices against them and the constants refitted for this adapter.
+if [ -d data/fetched ]; then
+  docs/tools/auto_measure.sh "$bin" "$out/auto_measurements.json"
+  python3 docs/tools/auto_fit.py --measurements "$out/auto_measurements.json" > "$out/auto.md" ||
+    echo "(auto_fit.py needs numpy)" > "$out/auto.md"
+else
+  echo "(no data/fetched/: the auto cases need the fetched data)" > "$out/auto.md"
+fi
 seconds=$(( $(date +%s) - start ))
 
 {
@@ -71,6 +81,10 @@ seconds=$(( $(date +%s) - start ))
   echo "## View clusters (meshes, compute visibility)"
   echo
   cat "$out/clusters.md"
+  echo
+  echo "## \`--method auto\`: the cost model's choices (docs/AUTO.md's cases)"
+  echo
+  cat "$out/auto.md"
   echo
   echo "## Volumes (\`autostereo-bench --volumes --frames 10\`)"
   echo

@@ -74,6 +74,13 @@ impl std::fmt::Display for Method {
     }
 }
 
+/// As its name (`"single-pass"`), in reports.
+impl serde::Serialize for Method {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        s.serialize_str(self.name())
+    }
+}
+
 impl std::str::FromStr for Method {
     type Err = Error;
 

@@ -22,6 +22,7 @@
 
 pub(crate) mod accumulation;
 pub mod atlas;
+pub mod auto;
 mod bands;
 pub mod batches;
 pub(crate) mod camera_crop;

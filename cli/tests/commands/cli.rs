@@ -42,7 +42,10 @@ fn mesh_json_reports_the_contract_fields_and_compares_with_npass() {
         png.to_str().unwrap(),
     ]);
     let json: serde_json::Value = serde_json::from_str(stdout.trim()).unwrap();
-    assert_eq!(json["method"], "single-pass");
+    // The default, auto, chooses an exact method; --compare measures it (the N-pass: itself).
+    assert_eq!(json["auto"]["chosen"], json["method"], "{json}");
+    assert_eq!(json["auto"]["accuracy"], "exact", "{json}");
+    assert!(["single-pass", "n-pass"].contains(&json["method"].as_str().unwrap()));
     assert_eq!(json["views"], 8);
     assert_eq!(json["size"], serde_json::json!([96, 64]));
     assert!(json["adapter"].as_str().unwrap().len() > 3);

@@ -23,7 +23,7 @@ fn a_flag_the_method_or_path_would_ignore_is_refused_by_name() {
         ),
         (
             "mesh",
-            &["--tile-clip", "discard"],
+            &["--tile-clip", "discard", "--method", "single-pass"],
             &["--tile-clip", "--method tiled"],
         ),
         (
