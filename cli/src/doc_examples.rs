@@ -21,6 +21,8 @@ const OTHER_TOOLS: &[(&str, &str)] = &[
     ("--suffix", "mktemp's"),
     ("--bin-dir", "docs/tools/peer_vtk.py's"),
     ("--no-build", "docs/tools/peer_vtk.py's"),
+    ("--write", "docs/tools/auto_fit.py's"),
+    ("--measurements", "docs/tools/auto_fit.py's"),
 ];
 
 /// Shell words that end a command (`a | b`, `a && b`, `a > file`).
