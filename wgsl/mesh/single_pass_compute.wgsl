@@ -41,10 +41,29 @@ fn cs_main(@builtin(workgroup_id) group: vec3<u32>, @builtin(num_workgroups) gro
     }
     let p = transform_triangle(tri);
     eye_triangles[tri] = eye_triangle(p);
-    let t = triangle_cover(tri, p);
-    if (!t.visible) {
+    let r = cover_rect(p);
+    if (r.x > r.y) {
         return;
     }
+    if (rect_mode()) {
+        // One cluster (the default, VIEW_CLUSTERS = 1: the code below is compiled out, which
+        // keeps this loop as fast as before the units) or toe-in: a rectangle within one lane's
+        // budget is visited whole, a larger one handed on whole.
+        if (rect_cost(r) > LANE_BUDGET) {
+            hand_on(triangle_cover(tri, p, r), 0u);
+            return;
+        }
+        let width = u32(frame.camera.viewport.x);
+        for (var y = r.z; y <= r.w; y++) {
+            for (var x = r.x; x <= r.y; x++) {
+                for (var c = 0u; c < VIEWS_PER_PIXEL; c++) {
+                    test_subpixel(vec2<u32>(x, y), c, ray_view(vec2<u32>(x, y), c), tri, p, width);
+                }
+            }
+        }
+        return;
+    }
+    let t = triangle_cover(tri, p, r);
     var spent = 0u;
     let per_row = t.clusters * t.chunks;
     for (var y = t.y0; y <= t.y1; y++) {
@@ -79,6 +98,18 @@ fn cs_main(@builtin(workgroup_id) group: vec3<u32>, @builtin(num_workgroups) gro
             }
         }
     }
+}
+
+// Loop iterations of visiting rectangle r (cover_rect) whole: its rows, and per pixel its
+// channels.
+fn rect_cost(r: vec4<u32>) -> u32 {
+    let rows = r.w - r.z + 1u;
+    let width = r.y - r.x + 1u;
+    // Bounded before multiplying: a rectangle wider or taller than the budget is never whole.
+    if (rows > LANE_BUDGET || width > LANE_BUDGET) {
+        return LANE_BUDGET + 1u;
+    }
+    return rows * (ROW_COST + (VIEWS_PER_PIXEL + 1u) * width);
 }
 
 // List triangle t with its units from `unit` on, and grow the large triangles' dispatch to

@@ -40,7 +40,8 @@ fn cs_main(@builtin(workgroup_id) group: vec3<u32>, @builtin(local_invocation_in
         return;
     }
     let e = eye_triangles[tri];
-    let t = triangle_cover(tri, array<vec3<f32>, 3>(e.p0.xyz, e.p1.xyz, e.p2.xyz));
+    let p = array<vec3<f32>, 3>(e.p0.xyz, e.p1.xyz, e.p2.xyz);
+    let t = triangle_cover(tri, p, cover_rect(p));
     for (var u = start; u < units; u += invocations) {
         cover_unit(t, u);
     }

@@ -51,15 +51,13 @@ struct TriangleCover {
     visible: bool,
 }
 
-// The cover of triangle `tri` with eye-space vertices p.
-fn triangle_cover(tri: u32, p: array<vec3<f32>, 3>) -> TriangleCover {
-    var out: TriangleCover;
-    out.p = p;
-    out.tri = tri;
-    out.visible = false;
+// The covering rectangle of eye-space triangle p in pixels (inclusive, clipped to the image):
+// (x0, x1, y0, y1); x0 > x1 where nothing of it is visible.
+fn cover_rect(p: array<vec3<f32>, 3>) -> vec4<u32> {
+    let none = vec4<u32>(1u, 0u, 1u, 0u);
     let b = cover_bounds(p);
     if (b.lo.x > b.hi.x) {
-        return out; // behind the near plane
+        return none; // behind the near plane
     }
     // Focal-plane bounds → the pixels whose centre (x + ½, y + ½) lies inside (y top-down).
     let size = frame.camera.viewport;
@@ -71,17 +69,41 @@ fn triangle_cover(tri: u32, p: array<vec3<f32>, 3>) -> TriangleCover {
     let y_lo = (0.5 * size.y - hi.y * scale.y) - 0.5;
     let y_hi = (0.5 * size.y - lo.y * scale.y) - 0.5;
     if (x_hi < 0.0 || y_hi < 0.0 || x_lo > size.x - 1.0 || y_lo > size.y - 1.0) {
-        return out; // outside the image
+        return none; // outside the image
     }
-    out.x0 = u32(max(ceil(x_lo), 0.0));
-    out.x1 = u32(min(floor(x_hi), size.x - 1.0));
-    out.y0 = u32(max(ceil(y_lo), 0.0));
-    out.y1 = u32(min(floor(y_hi), size.y - 1.0));
-    if (out.x0 > out.x1 || out.y0 > out.y1) {
+    let r = vec4<u32>(
+        u32(max(ceil(x_lo), 0.0)),
+        u32(min(floor(x_hi), size.x - 1.0)),
+        u32(max(ceil(y_lo), 0.0)),
+        u32(min(floor(y_hi), size.y - 1.0)),
+    );
+    if (r.x > r.y || r.z > r.w) {
+        return none;
+    }
+    return r;
+}
+
+// Whether every row visits the whole rectangle with every view: one cluster (the paper's
+// covering quad), or toe-in cameras, whose projections are not linear in the view offset.
+fn rect_mode() -> bool {
+    return frame.camera.model == CAMERA_TOE_IN || VIEW_CLUSTERS == 1u;
+}
+
+// The cover of triangle `tri` with eye-space vertices p, within rectangle r (cover_rect).
+fn triangle_cover(tri: u32, p: array<vec3<f32>, 3>, r: vec4<u32>) -> TriangleCover {
+    var out: TriangleCover;
+    out.p = p;
+    out.tri = tri;
+    out.visible = r.x <= r.y;
+    if (!out.visible) {
         return out;
     }
+    out.x0 = r.x;
+    out.x1 = r.y;
+    out.y0 = r.z;
+    out.y1 = r.w;
     out.chunks = (out.x1 - out.x0) / CHUNK_PX + 1u;
-    out.rect = frame.camera.model == CAMERA_TOE_IN || VIEW_CLUSTERS == 1u;
+    out.rect = rect_mode();
     if (out.rect) {
         out.clusters = 1u;
     } else {
@@ -92,7 +114,6 @@ fn triangle_cover(tri: u32, p: array<vec3<f32>, 3>) -> TriangleCover {
             out.clusters = VIEW_CLUSTERS;
         }
     }
-    out.visible = true;
     return out;
 }
 
