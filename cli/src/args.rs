@@ -208,8 +208,9 @@ pub struct RenderArgs {
     #[arg(long, value_parser = MethodParser::new("scenes", &Method::ALL), default_value = "auto", help_heading = "Method")]
     pub method: MethodArg,
     /// With --method auto: also choose approximations whose PSNR against the N-pass, as
-    /// measured in docs/quilt_pipeline.md, is at least DB (the quilt pipeline: 44 dB for
-    /// meshes, 38 for points, 56.9 for volumes); without it auto chooses exact methods only.
+    /// measured in docs/quilt_pipeline.md, is at least DB (the quilt pipeline, the lower of two
+    /// panels: 41.8 dB for meshes, 36 for points, 47.6 for volumes); without it auto chooses
+    /// exact methods only.
     #[arg(long, value_name = "DB", help_heading = "Method")]
     pub min_psnr: Option<f32>,
     /// Per-view resolution: the n-pass, tiled, layered and mrt methods render their view

@@ -16,7 +16,9 @@
 # rows, not machines. Writes docs/quilt_pipeline.md and its plots.
 #
 # Usage: docs/tools/quilt_pipeline.sh   (release build; data/fetched/ where present; numpy for
-#        the Gaussians' file; ≈ 40 min on lavapipe, most of it the full-resolution N-pass oracles)
+#        the Gaussians' file; ≈ 60 min on lavapipe, most of it the full-resolution N-pass oracles)
+#        CALS="16in_landscape go", KINDS="mesh points volume gaussians", CLUSTERS=1 choose what
+#        runs; ROWS=FILE keeps the rows (appended) and the report reads them all.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 bin="${AUTOSTEREO_BIN:-target/release/autostereo}"
@@ -31,7 +33,7 @@ declare -A input=([mesh]="" [points]="" [volume]="" [gaussians]="")
 [ -f data/fetched/brainsmall.den ] && input[volume]=data/fetched/brainsmall.den
 python3 docs/tools/gaussians_ply.py 131072 "$out/gaussians_131k.ply" && input[gaussians]="$out/gaussians_131k.ply"
 
-rows="$out/rows.jsonl"
+rows="${ROWS:-$out/rows.jsonl}"
 record() { # record CAL KIND PIPELINE ARGS…: one row of the table
   local cal=$1 kind=$2 pipeline=$3
   shift 3
@@ -49,14 +51,14 @@ d['input'] = '${file:-built-in}'.split('/')[-1]
 print(json.dumps(d))" >>"$rows"
 }
 
-for cal in 16in_landscape go; do
+for cal in ${CALS:-16in_landscape go}; do
   display=(--display "lkg:data/lkg_sample_${cal}_gen3_visual.json")
   # The family's tile, from auto's candidates (it depends on the display only).
   tile=$("$bin" mesh "${display[@]}" --min-psnr 1 --json 2>/dev/null | python3 -c '
 import json, sys
 c = [c for c in json.load(sys.stdin)["auto"]["candidates"] if c["method"] == "tiled"][0]
 print(c["label"].split("tiles of ")[1].split(",")[0])')
-  for kind in mesh points volume gaussians; do
+  for kind in ${KINDS:-mesh points volume gaussians}; do
     file="${input[$kind]}"
     base=("$kind")
     [ -n "$file" ] && base+=("$file")
@@ -71,7 +73,7 @@ print(c["label"].split("tiles of ")[1].split(",")[0])')
 done
 # Time against view clusters: the mesh single pass on the 16" (exact at every C).
 file="${input[mesh]}"
-for c in 1 2 4 7 13 25 49; do
+[ "${CLUSTERS:-1}" = 1 ] && for c in 1 2 4 7 13 25 49; do
   record 16in_landscape mesh "C=$c" mesh $file --display lkg:data/lkg_sample_16in_landscape_gen3_visual.json \
     --method single-pass --visibility compute --clusters "$c" --frames 2
 done
