@@ -29,7 +29,10 @@ fn auto_weighs_exact_methods_and_admits_the_quilt_only_above_a_floor() {
         .collect();
     assert_eq!(names, ["single-pass", "n-pass", "tiled"], "{exact}");
     let quilt = &candidates[2];
-    assert!((quilt["psnr_db"].as_f64().unwrap() - 41.8).abs() < 1e-4, "{exact}");
+    assert!(
+        (quilt["psnr_db"].as_f64().unwrap() - 41.8).abs() < 1e-4,
+        "{exact}"
+    );
     assert_eq!(quilt["admitted"], false, "exact by default: {exact}");
     assert_ne!(exact["method"], "tiled");
     // The family's 7x7 quilt, its 857x857 tiles no larger than the image.
