@@ -106,7 +106,7 @@ pub fn run(args: GaussiansArgs) -> Result<()> {
     let frame = plan.decide(
         plan.frame(bounds)?,
         bounds,
-        autostereo::render::auto::Workload::Gaussians,
+        |_| autostereo::render::auto::Workload::Gaussians,
         &autostereo::gaussians::METHODS,
         |m| args.gaussians.check(m),
     )?;

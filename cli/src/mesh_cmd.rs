@@ -117,11 +117,14 @@ pub fn run(args: MeshArgs) -> Result<()> {
     let mesh = args.mesh.load(args.file.as_deref())?;
     let bounds = mesh.bounds().context("the mesh has no vertices")?;
     let frame = plan.frame(bounds)?;
-    let census = autostereo::render::auto::MeshCensus::of(&mesh, &frame);
     let frame = plan.decide(
         frame,
         bounds,
-        autostereo::render::auto::Workload::Mesh(census),
+        |f| {
+            autostereo::render::auto::Workload::Mesh(autostereo::render::auto::MeshCensus::of(
+                &mesh, f,
+            ))
+        },
         &autostereo::mesh::METHODS,
         |m| args.mesh.check(m),
     )?;

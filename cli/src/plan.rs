@@ -176,13 +176,13 @@ impl RunPlan {
     }
 
     /// With `--method auto`: choose the method for `frame` (the scene within `bounds`,
-    /// `workload` counted in it) among the primitive's `methods` that the flags fit, and give
+    /// `workload` counting it, called only for auto) among the primitive's `methods` that the flags fit, and give
     /// the frame the view size it renders at. A named method keeps the frame as it is.
     pub fn decide(
         &mut self,
         mut frame: Frame,
         bounds: Bounds,
-        workload: Workload,
+        workload: impl FnOnce(&Frame) -> Workload,
         methods: &[Method],
         fits: impl Fn(Method) -> Result<()>,
     ) -> Result<Frame> {
@@ -202,8 +202,13 @@ impl RunPlan {
                 *only
             }
             _ => {
-                let choice =
-                    autostereo::render::auto::choose(&frame, bounds, workload, accuracy, &offered)?;
+                let choice = autostereo::render::auto::choose(
+                    &frame,
+                    bounds,
+                    workload(&frame),
+                    accuracy,
+                    &offered,
+                )?;
                 let chosen = choice.chosen();
                 if chosen.view_size != frame.size {
                     frame.scale_views_to(chosen.view_size)?;

@@ -143,7 +143,7 @@ pub fn run(args: PointsArgs) -> Result<()> {
     let frame = plan.decide(
         plan.frame(bounds)?,
         bounds,
-        autostereo::render::auto::Workload::Points,
+        |_| autostereo::render::auto::Workload::Points,
         &autostereo::points::METHODS,
         |m| args.points.check(m),
     )?;

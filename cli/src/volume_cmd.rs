@@ -313,7 +313,7 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     let frame = plan.decide(
         plan.frame(bounds)?,
         bounds,
-        autostereo::render::auto::Workload::Volume,
+        |_| autostereo::render::auto::Workload::Volume,
         &autostereo::volume::METHODS,
         |m| args.render.check(m),
     )?;
